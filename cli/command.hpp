@@ -1,0 +1,41 @@
+#pragma once
+// The fourbar subcommand table. Each subcommand lives in its own file and is
+// listed once in commands.cpp; main.cpp dispatches and maps errors to exit
+// codes (see common/error.hpp).
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <boost/program_options.hpp>
+
+namespace fourbar::cli {
+
+/// Arguments after the subcommand name, plus the whole command line for provenance.
+struct Invocation {
+  std::vector<std::string> args;
+  std::string command_line;
+};
+
+struct Command {
+  std::string_view name;
+  std::string_view summary;
+  int (*run)(const Invocation&);
+};
+
+std::span<const Command> commands();
+
+/// Parses `inv.args` against `options` (+ positionals). Returns false when
+/// --help was given (help already printed to stdout). Bad arguments throw
+/// InputError that names the subcommand and points to its --help.
+bool parse_arguments(std::string_view command, std::string_view usage, std::string_view details,
+                     boost::program_options::options_description& options,
+                     const boost::program_options::positional_options_description& positionals,
+                     const Invocation& inv, boost::program_options::variables_map& vm);
+
+// Subcommands (one file each).
+int run_sim(const Invocation& inv);
+int run_rig(const Invocation& inv);
+
+}  // namespace fourbar::cli

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs everything fourbar needs to build, test and benchmark, from Debian
+# packages only. Run as root on a fresh Debian 12 machine; safe to run again.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config ninja-build
+  libfftw3-dev            # FFT filtering and spectra (analyze)
+  libeigen3-dev           # small dense linear algebra (sim, analyze)
+  libsndfile1-dev         # WAV/W64/RF64/FLAC/CAF/AIFF recordings (acquire)
+  libboost-dev            # Boost.Odeint integrators (header-only)
+  libboost-program-options-dev  # the fourbar command line
+  libtomlplusplus-dev     # rig, scene and manifest files
+  nlohmann-json3-dev      # JSON summaries
+  libsundials-dev         # CVODE with root finding (sim events)
+  libgtest-dev libgmock-dev     # unit tests
+  libbenchmark-dev        # bench/ programs
+)
+
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then exec sudo "$0" "$@"; fi
+  echo "install-deps: apt-get needs root; run this script as root" >&2
+  exit 1
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi

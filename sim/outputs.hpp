@@ -1,0 +1,34 @@
+#pragma once
+// The per-sample quantities a scene may request, with the work each needs,
+// so that a run computes only what was asked for.
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace fourbar {
+
+/// What has to be evaluated before a quantity can be read.
+enum class Needs { crank, kinematics, loads, energy };
+
+/// Every quantity the nominal model can write.
+enum class Quantity {
+  time, theta2, omega2, theta3, theta4, omega3, omega4, alpha3, alpha4, transmission,
+  crank_torque, bearing_fx, bearing_fy, crankpin_fx, crankpin_fy, crank_pivot_fx, crank_pivot_fy,
+  rocker_pivot_fx, rocker_pivot_fy, kinetic_energy, potential_energy
+};
+
+struct OutputSpec {
+  Quantity quantity;
+  std::string_view name;         ///< column name, with its unit
+  Needs needs;
+  std::string_view description;  ///< one line for --help and the README
+};
+
+/// Every nominal-model output, in a stable order.
+std::span<const OutputSpec> nominal_outputs();
+
+/// The spec of `name`, or nullptr.
+const OutputSpec* find_output(std::string_view name);
+
+}  // namespace fourbar

@@ -1,0 +1,162 @@
+#include "sim/rig.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "common/toml_section.hpp"
+#include "common/units.hpp"
+
+namespace fourbar {
+
+const char* to_string(Assembly a) { return a == Assembly::open ? "open" : "crossed"; }
+
+const char* to_string(GrashofClass c) {
+  switch (c) {
+    case GrashofClass::crank_rocker: return "crank-rocker";
+    case GrashofClass::double_crank: return "double-crank";
+    case GrashofClass::double_rocker: return "double-rocker";
+    case GrashofClass::rocker_crank: return "rocker-crank";
+    case GrashofClass::change_point: return "change-point";
+    case GrashofClass::non_grashof: return "non-Grashof (triple rocker)";
+  }
+  return "?";
+}
+
+GrashofClass grashof_class(const Rig& rig) {
+  const std::array<double, 4> l{rig.ground_length_m, rig.crank.length_m, rig.coupler.length_m, rig.rocker.length_m};
+  const auto [mn, mx] = std::minmax_element(l.begin(), l.end());
+  const double s = *mn, big = *mx;
+  const double sum = l[0] + l[1] + l[2] + l[3];
+  const double lhs = s + big, rhs = sum - lhs;
+  const double tol = 1e-12 * sum;
+  if (std::abs(lhs - rhs) <= tol) return GrashofClass::change_point;
+  if (lhs > rhs) return GrashofClass::non_grashof;
+  switch (mn - l.begin()) {
+    case 0: return GrashofClass::double_crank;
+    case 1: return GrashofClass::crank_rocker;
+    case 2: return GrashofClass::double_rocker;
+    default: return GrashofClass::rocker_crank;
+  }
+}
+
+namespace {
+
+std::string where(const Rig& rig) { return rig.source.empty() ? std::string("rig") : rig.source.string(); }
+
+std::string mm(double m) {
+  std::ostringstream os;
+  os.precision(6);
+  os << units::m_to_mm(m) << " mm";
+  return os.str();
+}
+
+void require_positive(const Rig& rig, const char* key, double v) {
+  if (!(v > 0) || !std::isfinite(v)) {
+    std::ostringstream os;
+    os << where(rig) << ": key '" << key << "' = " << v << " must be a positive number";
+    throw InputError(os.str());
+  }
+}
+
+}  // namespace
+
+void validate_rig(const Rig& rig) {
+  require_positive(rig, "ground.length_mm", rig.ground_length_m);
+  const std::pair<const char*, const Link*> links[] = {
+      {"crank", &rig.crank}, {"coupler", &rig.coupler}, {"rocker", &rig.rocker}};
+  for (const auto& [name, link] : links) {
+    const std::string n(name);
+    require_positive(rig, (n + ".length_mm").c_str(), link->length_m);
+    require_positive(rig, (n + ".mass_kg").c_str(), link->mass_kg);
+    require_positive(rig, (n + ".inertia_kg_mm2").c_str(), link->inertia_cg_kg_m2);
+    if (!std::isfinite(link->mass_centre_m) || link->mass_centre_m < 0 || link->mass_centre_m > link->length_m) {
+      std::ostringstream os;
+      os << where(rig) << ": key '" << n << ".mass_centre_mm' = " << mm(link->mass_centre_m)
+         << " must lie on the link, between 0 and its length " << mm(link->length_m);
+      throw InputError(os.str());
+    }
+  }
+  if (!(rig.gravity_m_s2 >= 0) || !std::isfinite(rig.gravity_m_s2))
+    throw InputError(where(rig) + ": key 'gravity_m_s2' must be a number >= 0");
+  if (!(rig.radial_clearance_m >= 0) || !std::isfinite(rig.radial_clearance_m))
+    throw InputError(where(rig) + ": key 'clearance.radial_mm' must be a number >= 0");
+
+  // The crank turns fully iff the distance r from crank pin A to rocker pivot
+  // O4, which sweeps [|l1 − l2|, l1 + l2], stays strictly inside the reach of
+  // coupler and rocker, (|l3 − l4|, l3 + l4). Touching the bound is a toggle.
+  const double l1 = rig.ground_length_m, l2 = rig.crank.length_m;
+  const double l3 = rig.coupler.length_m, l4 = rig.rocker.length_m;
+  const double r_min = std::abs(l1 - l2), r_max = l1 + l2;
+  const double reach_min = std::abs(l3 - l4), reach_max = l3 + l4;
+  if (r_max >= reach_max || r_min <= reach_min) {
+    std::ostringstream os;
+    os << where(rig) << ": the links cannot close over a full crank turn (" << to_string(grashof_class(rig))
+       << " linkage): the crank pin comes " << mm(r_min) << " to " << mm(r_max)
+       << " from the rocker pivot, but coupler and rocker only reach between " << mm(reach_min) << " and "
+       << mm(reach_max) << " (exclusive); check ground/crank/coupler/rocker length_mm";
+    throw InputError(os.str());
+  }
+}
+
+namespace {
+
+Link read_link(TomlSection& root, const char* name) {
+  TomlSection s = root.section(name);
+  Link link;
+  link.length_m = units::mm_to_m(s.positive("length_mm"));
+  link.mass_centre_m = units::mm_to_m(s.non_negative("mass_centre_mm"));
+  link.mass_kg = s.positive("mass_kg");
+  link.inertia_cg_kg_m2 = units::kg_mm2_to_kg_m2(s.positive("inertia_kg_mm2"));
+  if (link.mass_centre_m > link.length_m)
+    s.fail("mass_centre_mm", "= " + std::to_string(units::m_to_mm(link.mass_centre_m)) +
+                                 " lies beyond the link (length_mm = " +
+                                 std::to_string(units::m_to_mm(link.length_m)) + ")");
+  s.finish();
+  return link;
+}
+
+}  // namespace
+
+Rig load_rig(const std::filesystem::path& file) {
+  const toml::table doc = parse_toml_file(file);
+  TomlSection root(doc, file);
+  Rig rig;
+  rig.source = file;
+  rig.name = root.optional_string("name").value_or(file.stem().string());
+  rig.gravity_m_s2 = root.in_range("gravity_m_s2", 0.0, 1000.0, 9.80665);
+  rig.assembly = root.choice("assembly", {"open", "crossed"}, "open") == "open" ? Assembly::open : Assembly::crossed;
+  {
+    TomlSection ground = root.section("ground");
+    rig.ground_length_m = units::mm_to_m(ground.positive("length_mm"));
+    ground.finish();
+  }
+  rig.crank = read_link(root, "crank");
+  rig.coupler = read_link(root, "coupler");
+  rig.rocker = read_link(root, "rocker");
+  if (auto c = root.optional_section("clearance")) {
+    rig.radial_clearance_m = units::mm_to_m(c->non_negative("radial_mm"));
+    c->finish();
+  }
+  root.optional_string("notes");
+  root.finish();
+  validate_rig(rig);
+  return rig;
+}
+
+Rig thesis_rig() {
+  Rig rig;
+  rig.name = "thesis rig (Table 6.1/7.1)";
+  rig.ground_length_m = 0.387;
+  rig.crank = {0.064, 0.009, 0.6095, 2645.0e-6};
+  rig.coupler = {0.309, 0.185, 0.2439, 2950.0e-6};
+  rig.rocker = {0.312, 0.134, 0.2334, 3176.0e-6};
+  rig.gravity_m_s2 = 9.8145;
+  rig.assembly = Assembly::open;
+  rig.radial_clearance_m = 0.254e-3;
+  return rig;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,61 @@
+#include "sim/scene.hpp"
+
+#include <algorithm>
+
+#include "common/error.hpp"
+#include "common/toml_section.hpp"
+#include "common/units.hpp"
+#include "sim/outputs.hpp"
+
+namespace fourbar {
+
+Scene load_scene(const std::filesystem::path& file) {
+  const toml::table doc = parse_toml_file(file);
+  TomlSection root(doc, file);
+  Scene scene;
+  scene.source = file;
+
+  const std::filesystem::path rig_file = root.path("rig");
+  try {
+    scene.rig = std::make_shared<const Rig>(load_rig(rig_file));
+  } catch (const InputError& e) {
+    throw InputError(root.where("rig") + ": " + e.what());
+  }
+
+  const std::string model = root.choice("model", {"nominal", "clearance"}, "nominal");
+  scene.model = model == "nominal" ? Model::nominal : Model::clearance;
+  if (scene.model == Model::clearance)
+    root.fail("model", "= \"clearance\" is not available yet in this version; use \"nominal\"");
+
+  const double rpm = root.in_range("crank_speed_rpm", -1e5, 1e5);
+  if (rpm == 0) root.fail("crank_speed_rpm", "= 0: the crank must turn; give a speed (negative turns clockwise)");
+  scene.crank_speed_rad_s = units::rpm_to_rad_s(rpm);
+  scene.start_angle_rad = units::deg_to_rad(root.in_range("start_angle_deg", -360.0, 360.0, 0.0));
+  scene.revolutions = static_cast<int>(root.integer("revolutions", 1, 1'000'000, 1));
+  scene.samples_per_revolution = static_cast<int>(root.integer("samples_per_revolution", 4, 10'000'000, 360));
+
+  // Requested outputs: each must be known, none twice.
+  scene.outputs = root.strings("outputs");
+  if (scene.outputs.empty()) root.fail("outputs", "is empty; name at least one output (see 'fourbar sim --help')");
+  std::vector<std::string> known;
+  for (const auto& o : nominal_outputs()) known.emplace_back(o.name);
+  for (std::size_t i = 0; i < scene.outputs.size(); ++i) {
+    const std::string& name = scene.outputs[i];
+    if (name == "crank_deg")
+      root.fail("outputs", "names 'crank_deg', which is always the first column; remove it");
+    if (!find_output(name)) {
+      std::string hint;
+      if (auto m = closest_match(name, known)) hint = " (did you mean '" + *m + "'?)";
+      root.fail("outputs", "names unknown output '" + name + "'" + hint +
+                               "; 'fourbar sim --help' lists the outputs");
+    }
+    if (std::find(scene.outputs.begin(), scene.outputs.begin() + i, name) != scene.outputs.begin() + i)
+      root.fail("outputs", "names '" + name + "' twice");
+  }
+
+  root.optional_string("notes");
+  root.finish();
+  return scene;
+}
+
+}  // namespace fourbar

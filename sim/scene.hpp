@@ -1,0 +1,30 @@
+#pragma once
+// A scene: what to compute for which rig. Immutable once loaded.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/rig.hpp"
+
+namespace fourbar {
+
+enum class Model { nominal, clearance };
+
+struct Scene {
+  std::shared_ptr<const Rig> rig;
+  std::filesystem::path source;       ///< the scene file (may be empty)
+  Model model = Model::nominal;
+  double crank_speed_rad_s = 0;       ///< ω2, constant
+  double start_angle_rad = 0;         ///< θ2 at t = 0
+  int revolutions = 1;
+  int samples_per_revolution = 360;   ///< output sampling (rows per turn)
+  std::vector<std::string> outputs;   ///< requested per-sample columns, in order
+};
+
+/// Reads a scene file (keys in README "Scene file"), loads its rig, and
+/// validates every value; InputError naming file, key and value otherwise.
+Scene load_scene(const std::filesystem::path& file);
+
+}  // namespace fourbar
