@@ -53,6 +53,7 @@ Scene load_scene(const std::filesystem::path& file) {
       root.fail("outputs", "names '" + name + "' twice");
   }
 
+  if (auto rec = root.optional_section("recording")) scene.recording = *doc["recording"].as_table();
   root.optional_string("notes");
   root.finish();
   return scene;

@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include <toml++/toml.h>
+
 #include "sim/rig.hpp"
 
 namespace fourbar {
@@ -21,6 +25,9 @@ struct Scene {
   int revolutions = 1;
   int samples_per_revolution = 360;   ///< output sampling (rows per turn)
   std::vector<std::string> outputs;   ///< requested per-sample columns, in order
+  /// The scene's `[recording]` table, kept unparsed: the virtual rig reads and
+  /// validates it (sensors, noise, file format); `sim` ignores it.
+  std::optional<toml::table> recording;
 };
 
 /// Reads a scene file (keys in README "Scene file"), loads its rig, and
