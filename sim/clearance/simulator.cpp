@@ -507,6 +507,7 @@ struct ClearanceSimulator::Impl {
     speed_scale = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
     delta_scale = model.clearance_m() / model.rig().coupler.length_m;
     energy_scale = model.energy_scale_J(c.speed_rad_s);
+    if (!(energy_scale > 0)) energy_scale = 1.0;  // a rig at rest without gravity
     force_guard = 1e-9 * model.force_scale_N(c.speed_rad_s);
     arm_depth = 1e-11 * model.clearance_m();
     rev_dir = c.speed_rad_s < 0 ? -1 : 1;
