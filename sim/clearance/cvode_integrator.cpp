@@ -26,7 +26,7 @@ void silent_handler(int, const char*, const char*, char*, void*) {}
 
 class CvodeIntegrator final : public DenseIntegrator {
  public:
-  explicit CvodeIntegrator(double tol) : tol_(tol) {
+  explicit CvodeIntegrator(double tol) {
     check(SUNContext_Create(nullptr, &ctx_), "context");
     y_ = N_VNew_Serial(kOdeSize, ctx_);
     dky_ = N_VNew_Serial(kOdeSize, ctx_);
@@ -49,47 +49,34 @@ class CvodeIntegrator final : public DenseIntegrator {
     SUNContext_Free(&ctx_);
   }
 
-  void reset(OdeSystem& system, double t0, const OdeState& y0) override {
-    system_ = &system;
+  const char* name() const override { return "cvode"; }
+
+ protected:
+  void do_reset(double t0, const OdeState& y0) override {
     double* y = N_VGetArrayPointer(y_);
     for (std::size_t i = 0; i < kOdeSize; ++i) y[i] = y0[i];
     check(CVodeReInit(mem_, t0, y_), "reinit");
-    t_ = t_prev_ = t0;
-    y0_ = y0;
-    stepped_ = false;
+    t_cvode_ = t0;
   }
 
-  double step(double t_stop) override {
+  std::pair<double, double> do_step(double t_stop) override {
     check(CVodeSetStopTime(mem_, t_stop), "stop time");
-    double t = t_;
+    double t = t_cvode_;
     const int flag = CVode(mem_, t_stop, y_, &t, CV_ONE_STEP);
     if (flag < 0)
-      throw RunError("CVODE could not advance past t = " + std::to_string(t_) + " s (flag " +
+      throw RunError("CVODE could not advance past t = " + std::to_string(t_cvode_) + " s (flag " +
                      std::to_string(flag) + "); try a looser [clearance] tolerance");
     double h = 0;
     CVodeGetLastStep(mem_, &h);
-    t_prev_ = t - h;
-    t_ = t;
-    ++steps_;
-    stepped_ = true;
-    return t_;
+    t_cvode_ = t;
+    return {t - h, t};
   }
 
-  double previous_time() const override { return t_prev_; }
-  double current_time() const override { return t_; }
-
-  void interpolate(double t, OdeState& y) override {
-    if (!stepped_) {  // before the first step only the start point is known
-      y = y0_;
-      return;
-    }
+  void do_interpolate(double t, OdeState& y) override {
     check(CVodeGetDky(mem_, t, 0, dky_), "dense output");
     const double* d = N_VGetArrayPointer(dky_);
     for (std::size_t i = 0; i < kOdeSize; ++i) y[i] = d[i];
   }
-
-  std::size_t steps() const override { return steps_; }
-  const char* name() const override { return "cvode"; }
 
  private:
   static int f(double t, N_Vector y, N_Vector ydot, void* user) {
@@ -98,21 +85,16 @@ class CvodeIntegrator final : public DenseIntegrator {
     double* dd = N_VGetArrayPointer(ydot);
     OdeState in, out;
     for (std::size_t i = 0; i < kOdeSize; ++i) in[i] = yy[i];
-    self->system_->rhs(t, in, out);
+    self->system().rhs(t, in, out);
     for (std::size_t i = 0; i < kOdeSize; ++i) dd[i] = out[i];
     return 0;
   }
 
-  double tol_;
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr, dky_ = nullptr;
   void* mem_ = nullptr;
   SUNNonlinearSolver nls_ = nullptr;
-  OdeSystem* system_ = nullptr;
-  double t_ = 0, t_prev_ = 0;
-  std::size_t steps_ = 0;
-  OdeState y0_{};
-  bool stepped_ = false;
+  double t_cvode_ = 0;
 };
 
 }  // namespace

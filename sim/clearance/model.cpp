@@ -46,7 +46,11 @@ BearingState ClearanceModel::bearing(const CrankState& crank, const LinkMotion& 
 
 void ClearanceModel::free_accelerations(const CrankState& crank, const LinkMotion& m, double& alpha3,
                                         double& alpha4) const {
-  const Vec2 u2 = unit(crank.angle_rad);
+  free_accelerations(crank, unit(crank.angle_rad), m, alpha3, alpha4);
+}
+
+void ClearanceModel::free_accelerations(const CrankState& crank, Vec2 u2, const LinkMotion& m, double& alpha3,
+                                        double& alpha4) const {
   const double sin_b = cross(m.u3, u2), cos_b = dot(m.u3, u2);  // β = θ2 − θ3
   const double w2 = crank.speed_rad_s;
   // thesis eq. 4.1-20 (with I_A3, errata) extended by α2; eq. 4.2-1.
@@ -56,7 +60,11 @@ void ClearanceModel::free_accelerations(const CrankState& crank, const LinkMotio
 
 double ClearanceModel::crank_torque_Nm(const CrankState& crank, const LinkMotion& m, double alpha3,
                                        Vec2 pin_force_N) const {
-  const Vec2 u2 = unit(crank.angle_rad);
+  return crank_torque_Nm(crank, unit(crank.angle_rad), m, alpha3, pin_force_N);
+}
+
+double ClearanceModel::crank_torque_Nm(const CrankState& crank, Vec2 u2, const LinkMotion& m, double alpha3,
+                                       Vec2 pin_force_N) const {
   const double sin_b = cross(m.u3, u2), cos_b = dot(m.u3, u2);
   const double w3 = m.omega3_rad_s;
   // Lagrange's equation for θ2 (thesis eq. 3.3-1 with α2, corrected):
@@ -82,8 +90,10 @@ struct LoopSolve {
 }  // namespace
 
 LinkMotion ClearanceModel::following_links(const CrankState& crank, double eta, double eta_rate) const {
-  const Vec2 u2 = unit(crank.angle_rad);
-  const Vec2 n = unit(eta);
+  return following_links(crank, unit(crank.angle_rad), unit(eta), eta_rate);
+}
+
+LinkMotion ClearanceModel::following_links(const CrankState& crank, Vec2 u2, Vec2 n, double eta_rate) const {
   // Loop A + l3·u3 = O4' + l4·u4 with the shifted pivot O4' = O4 + ξ·n:
   // B on the circles of radius l3 about A and l4 about O4'.
   const Vec2 v{(l1_ - l2_ * u2.x) + xi_ * n.x, -l2_ * u2.y + xi_ * n.y};  // O4' − A
@@ -103,10 +113,10 @@ LinkMotion ClearanceModel::following_links(const CrankState& crank, double eta, 
 
 FollowingMotion ClearanceModel::following(const CrankState& crank, double eta, double eta_rate) const {
   FollowingMotion f;
-  f.links = following_links(crank, eta, eta_rate);
-  const LinkMotion& m = f.links;
   const Vec2 u2 = unit(crank.angle_rad);
   const Vec2 n = unit(eta);
+  f.links = following_links(crank, u2, n, eta_rate);
+  const LinkMotion& m = f.links;
   f.normal = n;
   const LoopSolve ls{l3_, l4_, cross(m.u3, m.u4), m.u3.perp(), m.u4.perp()};
   // Rates are affine in η̇ and accelerations affine in η̈:
@@ -121,7 +131,7 @@ FollowingMotion ClearanceModel::following(const CrankState& crank, double eta, d
   ls.solve(r2, k3, k4);
   // Applied generalised forces (gravity, crank-driven inertia), thesis 3.3-2/3.3-4.
   double fa3, fa4;
-  free_accelerations(crank, m, fa3, fa4);
+  free_accelerations(crank, u2, m, fa3, fa4);
   const double f3 = I3_ * fa3, f4 = I4_ * fa4;
   // Lagrange on the manifold: Gᵀ·(M·(G·η̈ + k) − f) = 0 (the normal force does no virtual work).
   f.eta_accel_rad_s2 = (G3 * (f3 - I3_ * k3) + G4 * (f4 - I4_ * k4)) / (I3_ * G3 * G3 + I4_ * G4 * G4);
@@ -131,7 +141,7 @@ FollowingMotion ClearanceModel::following(const CrankState& crank, double eta, d
   const double q3 = I3_ * f.alpha3_rad_s2 - f3, q4 = I4_ * f.alpha4_rad_s2 - f4;
   const double c3 = -l3_ * dot(m.u3.perp(), n), c4 = l4_ * dot(m.u4.perp(), n);
   f.normal_force_N = (q3 * c3 + q4 * c4) / (c3 * c3 + c4 * c4);
-  f.crank_torque_Nm = crank_torque_Nm(crank, m, f.alpha3_rad_s2, -f.normal_force_N * n);
+  f.crank_torque_Nm = crank_torque_Nm(crank, u2, m, f.alpha3_rad_s2, -f.normal_force_N * n);
   return f;
 }
 

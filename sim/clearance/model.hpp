@@ -62,10 +62,13 @@ class ClearanceModel {
 
   /// Free-flight angular accelerations (no contact force).
   void free_accelerations(const CrankState& crank, const LinkMotion& m, double& alpha3, double& alpha4) const;
+  /// The same with the crank direction u2 = (cos θ2, sin θ2) already known.
+  void free_accelerations(const CrankState& crank, Vec2 u2, const LinkMotion& m, double& alpha3, double& alpha4) const;
 
   /// Motor torque that holds the prescribed crank motion, given the coupler
   /// acceleration and the contact force `pin_force_N` on the pin (zero in free flight).
   double crank_torque_Nm(const CrankState& crank, const LinkMotion& m, double alpha3, Vec2 pin_force_N) const;
+  double crank_torque_Nm(const CrankState& crank, Vec2 u2, const LinkMotion& m, double alpha3, Vec2 pin_force_N) const;
 
   /// Following mode in its minimal coordinate: the clearance-link angle η
   /// (e = ξ·(cos η, sin η)). Positions solve the loop A + l3·u3 = O4 + ξ·n + l4·u4
@@ -87,6 +90,8 @@ class ClearanceModel {
   double energy_scale_J(double crank_speed_rad_s) const;
 
  private:
+  LinkMotion following_links(const CrankState& crank, Vec2 u2, Vec2 n, double eta_rate) const;
+
   Rig rig_;
   double xi_;
   double l1_, l2_, l3_, l4_;

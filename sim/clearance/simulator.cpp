@@ -150,13 +150,13 @@ struct ClearanceSimulator::Impl {
       NominalMotion nm;
       const LinkMotion m = s->free_links(time, y, &nm);
       double a3, a4;
-      s->model.free_accelerations(c, m, a3, a4);
+      s->model.free_accelerations(c, nm.pose.u2, m, a3, a4);
       const double rate_scale = s->delta_scale * s->speed_scale;
       dy[0] = y[2] * s->speed_scale;
       dy[1] = y[3] * s->speed_scale;
       dy[2] = (a3 - nm.alpha3_rad_s2) / rate_scale;
       dy[3] = (a4 - nm.alpha4_rad_s2) / rate_scale;
-      dy[4] = s->model.crank_torque_Nm(c, m, a3, {}) * c.speed_rad_s / s->energy_scale;
+      dy[4] = s->model.crank_torque_Nm(c, nm.pose.u2, m, a3, {}) * c.speed_rad_s / s->energy_scale;
     }
   } free_ode;
 

@@ -27,6 +27,17 @@ RandomState random_state(std::mt19937& rng, double alpha2_max = 0.0) {
 
 double rel(double a, double b, double scale) { return std::abs(a - b) / scale; }
 
+/// Link motion a time dt later along the trajectory with the model's η̈ (and the crank's α2).
+LinkMotion along(const ClearanceModel& model, const RandomState& s, const FollowingMotion& f, double dt,
+                 CrankState* crank_out = nullptr) {
+  CrankState c = s.crank;
+  c.angle_rad += c.speed_rad_s * dt + 0.5 * c.accel_rad_s2 * dt * dt;
+  c.speed_rad_s += c.accel_rad_s2 * dt;
+  if (crank_out) *crank_out = c;
+  const double eta = s.eta + s.eta_rate * dt + 0.5 * f.eta_accel_rad_s2 * dt * dt;
+  return model.following_links(c, eta, s.eta_rate + f.eta_accel_rad_s2 * dt);
+}
+
 TEST(ClearanceModel, FollowingPoseLiesOnTheContactCircle) {
   const Rig rig = thesis_rig();
   const ClearanceModel model(rig, 0.254e-3);
@@ -52,13 +63,7 @@ TEST(ClearanceModel, FollowingRatesAreDerivativesOfPositions) {
     const FollowingMotion f = model.following(s.crank, s.eta, s.eta_rate);
     // Move along a trajectory with η̈ from the model; difference the link angles.
     const double h = 1e-5;
-    auto at = [&](double dt) {
-      CrankState c = s.crank;
-      c.angle_rad += c.speed_rad_s * dt + 0.5 * c.accel_rad_s2 * dt * dt;
-      c.speed_rad_s += c.accel_rad_s2 * dt;
-      const double eta = s.eta + s.eta_rate * dt + 0.5 * f.eta_accel_rad_s2 * dt * dt;
-      return model.following_links(c, eta, s.eta_rate + f.eta_accel_rad_s2 * dt);
-    };
+    auto at = [&](double dt) { return along(model, s, f, dt); };
     const LinkMotion p = at(h), m = at(-h), p2 = at(2 * h), m2 = at(-2 * h);
     auto ang = [&](Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); };
     const double w3 = (8 * ang(m.u3, p.u3) - ang(m2.u3, p2.u3)) / (12 * h);
@@ -136,11 +141,8 @@ TEST(ClearanceModel, CrankTorqueBalancesPowerInFollowingMode) {
     const RandomState s = random_state(rng, 40.0);
     const FollowingMotion f = model.following(s.crank, s.eta, s.eta_rate);
     auto energy = [&](double dt) {
-      CrankState c = s.crank;
-      c.angle_rad += c.speed_rad_s * dt + 0.5 * c.accel_rad_s2 * dt * dt;
-      c.speed_rad_s += c.accel_rad_s2 * dt;
-      const double eta = s.eta + s.eta_rate * dt + 0.5 * f.eta_accel_rad_s2 * dt * dt;
-      const LinkMotion m = model.following_links(c, eta, s.eta_rate + f.eta_accel_rad_s2 * dt);
+      CrankState c;
+      const LinkMotion m = along(model, s, f, dt, &c);
       return model.kinetic_energy_J(c, m) + model.potential_energy_J(c, m);
     };
     const double h = 1e-6;
