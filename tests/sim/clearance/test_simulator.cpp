@@ -10,6 +10,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include "common/units.hpp"
+#include "sim/clearance/run.hpp"
 #include "sim/clearance/simulator.hpp"
 
 namespace fourbar {
@@ -212,6 +213,50 @@ TEST(ClearanceSimulator, SmallClearanceConvergesToNominal) {
     previous_theta = dth;
     previous_omega = dw;
   }
+}
+
+}  // namespace
+}  // namespace fourbar
+
+namespace fourbar {
+namespace {
+
+Scene clearance_scene(double e, bool steady, int max_revolutions) {
+  Scene s;
+  s.rig = std::make_shared<const Rig>(thesis_rig());
+  s.model = Model::clearance;
+  s.crank_speed_rad_s = units::rpm_to_rad_s(350);
+  s.revolutions = 1;
+  s.samples_per_revolution = 36;
+  s.outputs = {"alpha3_rad_s2", "mode"};
+  s.clearance.restitution = e;
+  s.clearance.steady_state = steady;
+  s.clearance.max_revolutions = max_revolutions;
+  s.clearance.tolerance = 1e-8;
+  return s;
+}
+
+TEST(ClearanceRun, SteadyStateSearchIsBoundedAndReported) {
+  // The model's following mode is undamped, so a strict period-k repeat is
+  // not expected here: the search must stop at max_revolutions and say so,
+  // and the output turn must be the one after it.
+  const ClearanceRun r = run_clearance(clearance_scene(0.5, true, 6));
+  EXPECT_FALSE(r.steady_state_reached);
+  EXPECT_EQ(r.first_output_revolution, 6);
+  EXPECT_EQ(r.revolutions_simulated, 7);
+  EXPECT_GT(r.steady_difference, 1e-6);
+  ASSERT_EQ(r.series.rows(), 37u);
+  EXPECT_NEAR(r.series.columns[0].front(), 6 * 360.0, 1e-9);
+  EXPECT_NEAR(r.series.columns[0].back(), 7 * 360.0, 1e-9);
+  EXPECT_EQ(r.revolutions.size(), 7u);
+  // Per-turn books add up to the run's counts.
+  std::size_t n = 0;
+  for (const auto& rev : r.revolutions) {
+    n += rev.impacts;
+    EXPECT_NEAR(rev.following_time_s + rev.free_time_s, rev.end_time_s - rev.start_time_s, 1e-12);
+  }
+  EXPECT_EQ(n, r.impacts.size());
+  EXPECT_EQ(n, r.diagnostics.impacts);
 }
 
 }  // namespace
