@@ -35,7 +35,7 @@ std::string outputs_help() {
   s += help_line("contact", "\"smooth\" (default), \"rough\" (no slip) or \"stick-slip\" (Coulomb)");
   s += help_line("friction_coefficient", "Coulomb μ >= 0, required with and only with stick-slip");
   s += help_line("tolerance", "relative integration tolerance (default 1e-10)");
-  s += help_line("integrator", "\"cvode\" (SUNDIALS Adams, default) or \"odeint\" (Dormand-Prince 5)");
+  s += help_line("integrator", "\"odeint\" (Dormand-Prince 5, default) or \"cvode\" (SUNDIALS Adams)");
   s += help_line("settle_speed_mm_s", "normal speed below which contact is resting (default 0.001)");
   s += help_line("steady_state", "true: run turns until the state repeats, then output (default false)");
   s += help_line("max_revolutions", "bound on the turns run to reach steady state (default 200)");

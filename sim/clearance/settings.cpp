@@ -42,7 +42,7 @@ ClearanceSettings read_clearance_settings(TomlSection& s, double rig_clearance_m
     s.fail("friction_coefficient", "is required with contact = \"stick-slip\" (Coulomb coefficient μ >= 0)");
   }
   c.tolerance = s.in_range("tolerance", 1e-14, 1e-3, 1e-10);
-  c.integrator = s.choice("integrator", {"cvode", "odeint"}, "cvode") == "cvode" ? IntegratorKind::cvode
+  c.integrator = s.choice("integrator", {"cvode", "odeint"}, "odeint") == "cvode" ? IntegratorKind::cvode
                                                                                : IntegratorKind::odeint;
   c.settle_speed_m_s = s.in_range("settle_speed_mm_s", 1e-9, 1e3, 1e-3) * 1e-3;
   c.steady_state = s.boolean("steady_state", false);

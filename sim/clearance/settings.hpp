@@ -30,7 +30,7 @@ struct ClearanceSettings {
   ContactLaw contact = ContactLaw::smooth;
   double friction_coefficient = 0.0;         ///< Coulomb μ (stick-slip only)
   double tolerance = 1e-10;                  ///< relative integration tolerance
-  IntegratorKind integrator = IntegratorKind::cvode;
+  IntegratorKind integrator = IntegratorKind::odeint;  // measured 2–3× faster here (bench_clearance)
   /// Normal speeds below this count as resting contact: a rebound slower than
   /// this ends a chattering sequence in the following mode (the Zeno rule).
   double settle_speed_m_s = 1e-6;
