@@ -37,5 +37,6 @@ bool parse_arguments(std::string_view command, std::string_view usage, std::stri
 // Subcommands (one file each).
 int run_sim(const Invocation& inv);
 int run_rig(const Invocation& inv);
+int run_sweep(const Invocation& inv);
 
 }  // namespace fourbar::cli

@@ -6,8 +6,9 @@ namespace fourbar::cli {
 
 std::span<const Command> commands() {
   static constexpr std::array table{
-      Command{"sim", "simulate a scene (nominal mechanism) and write CSV + JSON", run_sim},
+      Command{"sim", "simulate a scene (nominal or clearance model) and write CSV + JSON", run_sim},
       Command{"rig", "check a rig file and report its class, assembly and transmission angles", run_rig},
+      Command{"sweep", "run the clearance model over a clearance x rpm x e x mu grid, one table", run_sweep},
   };
   return table;
 }

@@ -8,6 +8,7 @@
 #include "common/csv_writer.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
+#include "sim/clearance/run.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/outputs.hpp"
 #include "sim/rig_report.hpp"
@@ -18,12 +19,29 @@ namespace fourbar::cli {
 
 namespace {
 
+std::string help_line(std::string_view name, std::string_view description) {
+  return "  " + std::string(name) + std::string(20 - std::min<std::size_t>(19, name.size()), ' ') +
+         std::string(description) + "\n";
+}
+
 std::string outputs_help() {
   std::string s = "Outputs a scene may request (column names; crank_deg is always first):\n";
-  for (const auto& o : nominal_outputs()) {
-    s += "  " + std::string(o.name) + std::string(20 - std::min<std::size_t>(19, o.name.size()), ' ') +
-         std::string(o.description) + "\n";
-  }
+  for (const auto& o : nominal_outputs()) s += help_line(o.name, o.description);
+  s += "\nWith model = \"clearance\" (three-mode clearance model) the outputs are:\n";
+  for (const auto& o : clearance_outputs()) s += help_line(o.name, o.description);
+  s += "\n[clearance] table (model = \"clearance\"):\n";
+  s += help_line("radial_mm", "radial clearance ξ in mm, > 0 (default: the rig's [clearance] radial_mm)");
+  s += help_line("restitution", "Newton coefficient of restitution e in [0, 1] (required)");
+  s += help_line("contact", "\"smooth\" (default), \"rough\" (no slip) or \"stick-slip\" (Coulomb)");
+  s += help_line("friction_coefficient", "Coulomb μ >= 0, required with and only with stick-slip");
+  s += help_line("tolerance", "relative integration tolerance (default 1e-10)");
+  s += help_line("integrator", "\"odeint\" (Dormand-Prince 5, default) or \"cvode\" (SUNDIALS Adams)");
+  s += help_line("settle_speed_mm_s", "normal speed below which contact is resting (default 0.001)");
+  s += help_line("steady_state", "true: run turns until the state repeats, then output (default false)");
+  s += help_line("max_revolutions", "bound on the turns run to reach steady state (default 200)");
+  s += help_line("steady_tolerance", "repeat tolerance of the scaled turn-start state (default 1e-6)");
+  s += help_line("max_period", "longest period in turns looked for (default 8)");
+  s += help_line("tables", "extra CSV files: [\"impacts\", \"revolutions\"] (default none)");
   return s;
 }
 
@@ -36,6 +54,123 @@ nlohmann::json column_stats(const SeriesTable& t) {
     cols[t.names[c]] = {{"min", mn}, {"max", mx}, {"rms", std::sqrt(sq / v.size())}};
   }
   return cols;
+}
+
+void write_series(const std::filesystem::path& csv_path, const Provenance& prov, const SeriesTable& table) {
+  CsvWriter csv(csv_path, prov.comment_lines(), table.names);
+  std::vector<double> row(table.names.size());
+  for (std::size_t i = 0; i < table.rows(); ++i) {
+    for (std::size_t c = 0; c < row.size(); ++c) row[c] = table.columns[c][i];
+    csv.row(row);
+  }
+  csv.commit();
+}
+
+void write_impacts(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run) {
+  CsvWriter csv(path, prov.comment_lines(),
+                {"crank_deg", "time_s", "revolution", "normal_impulse_Ns", "tangential_impulse_Ns", "eta_deg",
+                 "approach_speed_m_s", "rebound_speed_m_s", "slip_speed_before_m_s", "slip_speed_after_m_s",
+                 "stuck", "energy_loss_J", "motor_impulse_Nms", "mode_after"});
+  for (const ImpactRecord& r : run.impacts) {
+    const ImpactResult& x = r.result;
+    const double row[] = {units::rad_to_deg(r.crank_angle_rad), r.time_s, static_cast<double>(r.revolution),
+                          x.normal_impulse_Ns, x.tangential_impulse_Ns, units::rad_to_deg(r.eta_rad),
+                          x.normal_speed_before_m_s, -x.normal_speed_after_m_s, x.tangential_speed_before_m_s,
+                          x.tangential_speed_after_m_s, x.stuck ? 1.0 : 0.0, x.energy_loss_J, x.motor_impulse_Nms,
+                          r.mode_after == ContactMode::following ? 1.0 : 0.0};
+    csv.row(row);
+  }
+  csv.commit();
+}
+
+void write_revolutions(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run,
+                       double start_angle_rad, double direction) {
+  CsvWriter csv(path, prov.comment_lines(),
+                {"crank_deg", "revolution", "impacts", "sum_normal_impulse_Ns", "impact_index_Ns", "contact_losses",
+                 "following_share", "free_flight_share"});
+  for (const RevolutionRecord& r : run.revolutions) {
+    const double span = r.end_time_s - r.start_time_s;
+    const double row[] = {units::rad_to_deg(start_angle_rad + direction * units::kTwoPi * r.index),
+                          static_cast<double>(r.index), static_cast<double>(r.impacts), r.sum_normal_impulse_Ns,
+                          r.impacts ? r.sum_normal_impulse_Ns / r.impacts : 0.0, static_cast<double>(r.contact_losses),
+                          r.following_time_s / span, r.free_time_s / span};
+    csv.row(row);
+  }
+  csv.commit();
+}
+
+nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
+  const ClearanceSettings& c = scene.clearance;
+  const ClearanceDiagnostics& d = run.diagnostics;
+  nlohmann::json j;
+  j["settings"] = {{"radial_mm", units::m_to_mm(run.clearance_m)},
+                   {"restitution", c.restitution},
+                   {"contact", to_string(c.contact)},
+                   {"friction_coefficient", c.friction_coefficient},
+                   {"tolerance", c.tolerance},
+                   {"integrator", to_string(c.integrator)},
+                   {"settle_speed_mm_s", c.settle_speed_m_s * 1e3},
+                   {"steady_state", c.steady_state},
+                   {"max_revolutions", c.max_revolutions}};
+  j["steady_state"] = {{"requested", c.steady_state},
+                       {"reached", run.steady_state_reached},
+                       {"period_revolutions", run.steady_period},
+                       {"last_difference", c.steady_state ? run.steady_difference : 0.0},
+                       {"first_output_revolution", run.first_output_revolution},
+                       {"revolutions_simulated", run.revolutions_simulated}};
+  j["events"] = {{"impacts", d.impacts},
+                 {"touches_below_settle_speed", d.touches},
+                 {"contact_losses", d.contact_losses},
+                 {"settles_into_following", d.settles},
+                 {"impacts_without_solution_of_law", d.degenerate_impacts},
+                 {"impacts_gaining_energy", d.energy_gaining_impacts},
+                 {"integrator_steps", d.steps}};
+  j["time_share"] = {{"following", d.time_following_s / (d.time_following_s + d.time_free_s)},
+                     {"free_flight", d.time_free_s / (d.time_following_s + d.time_free_s)}};
+  j["drift"] = {{"max_contact_circle_error_rel", d.max_contact_circle_error},
+                {"max_contact_normal_speed_m_s", d.max_contact_normal_speed_m_s},
+                {"max_penetration_rel", d.max_penetration}};
+  j["energy"] = {{"start_J", d.energy_start_J},
+                 {"end_J", d.energy_end_J},
+                 {"crank_work_J", d.crank_work_J},
+                 {"motor_impulse_work_J", d.motor_impulse_work_J},
+                 {"impact_loss_J", d.impact_loss_J},
+                 {"residual_J", d.energy_residual_J},
+                 {"max_residual_J", d.max_energy_residual_J},
+                 {"scale_J", d.energy_scale_J},
+                 {"residual_rel", std::abs(d.energy_residual_J) / d.energy_scale_J}};
+  return j;
+}
+
+int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::filesystem::path& dir,
+                        const Provenance& prov) {
+  const auto csv_path = dir / "series.csv";
+  write_series(csv_path, prov, run.series);
+  std::string extra;
+  if (scene.clearance.write_impacts) {
+    write_impacts(dir / "impacts.csv", prov, run);
+    extra += ", impacts.csv (" + std::to_string(run.impacts.size()) + " impacts)";
+  }
+  if (scene.clearance.write_revolutions) {
+    write_revolutions(dir / "revolutions.csv", prov, run, scene.start_angle_rad, scene.crank_speed_rad_s > 0 ? 1 : -1);
+    extra += ", revolutions.csv";
+  }
+  nlohmann::json summary;
+  summary["provenance"] = prov.to_json();
+  summary["rig"] = to_json(*scene.rig, report_rig(*scene.rig));
+  summary["scene"] = {{"file", scene.source.string()},
+                      {"model", "clearance"},
+                      {"crank_speed_rpm", units::rad_s_to_rpm(scene.crank_speed_rad_s)},
+                      {"start_angle_deg", units::rad_to_deg(scene.start_angle_rad)},
+                      {"revolutions", scene.revolutions},
+                      {"samples_per_revolution", scene.samples_per_revolution}};
+  summary["clearance"] = clearance_json(scene, run);
+  summary["series"] = {{"file", "series.csv"}, {"rows", run.series.rows()}, {"columns", column_stats(run.series)}};
+  const auto json_path = dir / "summary.json";
+  write_text_file(json_path, summary.dump(2) + "\n");
+  std::cout << "wrote " << csv_path.string() << " (" << run.series.rows() << " rows x " << run.series.names.size()
+            << " columns)" << extra << " and " << json_path.string() << "\n";
+  return 0;
 }
 
 }  // namespace
@@ -51,7 +186,10 @@ int run_sim(const Invocation& inv) {
   if (!parse_arguments("sim", "SCENE.toml [--out DIR]",
                        "Writes DIR/series.csv (crank_deg, then the scene's outputs, one row per\n"
                        "sample, revolutions*samples_per_revolution + 1 rows) and DIR/summary.json\n"
-                       "(rig class, scene, min/max/rms of every column, provenance).\n\n" +
+                       "(rig class, scene, min/max/rms of every column, provenance). With\n"
+                       "model = \"clearance\" also DIR/impacts.csv and DIR/revolutions.csv when the\n"
+                       "scene's [clearance] tables ask for them; summary.json then adds events,\n"
+                       "constraint drift, energy balance and steady-state results.\n\n" +
                            outputs_help(),
                        opts, pos, inv, vm))
     return 0;
@@ -60,19 +198,13 @@ int run_sim(const Invocation& inv) {
   if (out_dir.empty()) out_dir = (std::filesystem::path("out") / scene.source.stem()).string();
   ensure_output_dir(out_dir);
 
+  Provenance prov{inv.command_line, {scene.source, scene.rig->source}};
+  if (scene.model == Model::clearance) return write_clearance_run(scene, run_clearance(scene), out_dir, prov);
+
   const SeriesTable table = run_nominal(scene);
 
-  Provenance prov{inv.command_line, {scene.source, scene.rig->source}};
   const std::filesystem::path csv_path = std::filesystem::path(out_dir) / "series.csv";
-  {
-    CsvWriter csv(csv_path, prov.comment_lines(), table.names);
-    std::vector<double> row(table.names.size());
-    for (std::size_t i = 0; i < table.rows(); ++i) {
-      for (std::size_t c = 0; c < row.size(); ++c) row[c] = table.columns[c][i];
-      csv.row(row);
-    }
-    csv.commit();
-  }
+  write_series(csv_path, prov, table);
 
   nlohmann::json summary;
   summary["provenance"] = prov.to_json();

@@ -30,7 +30,36 @@ constexpr std::array kOutputs{
     OutputSpec{Quantity::potential_energy, "potential_energy_J", Needs::energy, "gravitational potential energy (zero at the ground line)"},
 };
 
+constexpr std::array kClearanceOutputs{
+    ClearanceOutputSpec{"time_s", Quantity::time, ClearanceExtra::none, "time since the start of the run"},
+    ClearanceOutputSpec{"theta2_rad", Quantity::theta2, ClearanceExtra::none, "crank angle θ2 (continuous)"},
+    ClearanceOutputSpec{"omega2_rad_s", Quantity::omega2, ClearanceExtra::none, "crank speed ω2"},
+    ClearanceOutputSpec{"theta3_rad", Quantity::theta3, ClearanceExtra::none, "coupler angle θ3 (continuous)"},
+    ClearanceOutputSpec{"theta4_rad", Quantity::theta4, ClearanceExtra::none, "rocker angle θ4 (continuous)"},
+    ClearanceOutputSpec{"omega3_rad_s", Quantity::omega3, ClearanceExtra::none, "coupler angular velocity ω3"},
+    ClearanceOutputSpec{"omega4_rad_s", Quantity::omega4, ClearanceExtra::none, "rocker angular velocity ω4"},
+    ClearanceOutputSpec{"alpha3_rad_s2", Quantity::alpha3, ClearanceExtra::none, "coupler angular acceleration α3"},
+    ClearanceOutputSpec{"alpha4_rad_s2", Quantity::alpha4, ClearanceExtra::none, "rocker angular acceleration α4"},
+    ClearanceOutputSpec{"transmission_deg", Quantity::transmission, ClearanceExtra::none, "angle between coupler and rocker"},
+    ClearanceOutputSpec{"crank_torque_Nm", Quantity::crank_torque, ClearanceExtra::none, "motor torque that holds the crank speed (also in free flight)"},
+    ClearanceOutputSpec{"bearing_fx_N", Quantity::bearing_fx, ClearanceExtra::none, "x force of the bushing on the pin (0 in free flight)"},
+    ClearanceOutputSpec{"bearing_fy_N", Quantity::bearing_fy, ClearanceExtra::none, "y force of the bushing on the pin (0 in free flight)"},
+    ClearanceOutputSpec{"kinetic_energy_J", Quantity::kinetic_energy, ClearanceExtra::none, "kinetic energy of crank, coupler and rocker"},
+    ClearanceOutputSpec{"potential_energy_J", Quantity::potential_energy, ClearanceExtra::none, "gravitational potential energy"},
+    ClearanceOutputSpec{"mode", Quantity::time, ClearanceExtra::mode, "1 = following (pin on the bushing wall), 0 = free flight"},
+    ClearanceOutputSpec{"gap_mm", Quantity::time, ClearanceExtra::gap, "clearance left between pin and bushing, ξ − |e| (0 in following)"},
+    ClearanceOutputSpec{"eta_deg", Quantity::time, ClearanceExtra::eta, "direction η of the eccentricity, bushing centre to pin (continuous)"},
+};
+
 }  // namespace
+
+std::span<const ClearanceOutputSpec> clearance_outputs() { return kClearanceOutputs; }
+
+const ClearanceOutputSpec* find_clearance_output(std::string_view name) {
+  for (const auto& o : kClearanceOutputs)
+    if (o.name == name) return &o;
+  return nullptr;
+}
 
 std::span<const OutputSpec> nominal_outputs() { return kOutputs; }
 

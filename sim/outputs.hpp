@@ -31,4 +31,18 @@ std::span<const OutputSpec> nominal_outputs();
 /// The spec of `name`, or nullptr.
 const OutputSpec* find_output(std::string_view name);
 
+/// Outputs of the clearance model: the nominal quantities it computes
+/// (`quantity`) and its own (`extra` ≠ none).
+enum class ClearanceExtra { none, mode, gap, eta };
+struct ClearanceOutputSpec {
+  std::string_view name;
+  Quantity quantity;     ///< meaningful when extra == none
+  ClearanceExtra extra;
+  std::string_view description;
+};
+
+/// Every clearance-model output, in a stable order.
+std::span<const ClearanceOutputSpec> clearance_outputs();
+const ClearanceOutputSpec* find_clearance_output(std::string_view name);
+
 }  // namespace fourbar

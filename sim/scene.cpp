@@ -24,8 +24,6 @@ Scene load_scene(const std::filesystem::path& file) {
 
   const std::string model = root.choice("model", {"nominal", "clearance"}, "nominal");
   scene.model = model == "nominal" ? Model::nominal : Model::clearance;
-  if (scene.model == Model::clearance)
-    root.fail("model", "= \"clearance\" is not available yet in this version; use \"nominal\"");
 
   const double rpm = root.in_range("crank_speed_rpm", -1e5, 1e5);
   if (rpm == 0) root.fail("crank_speed_rpm", "= 0: the crank must turn; give a speed (negative turns clockwise)");
@@ -37,13 +35,21 @@ Scene load_scene(const std::filesystem::path& file) {
   // Requested outputs: each must be known, none twice.
   scene.outputs = root.strings("outputs");
   if (scene.outputs.empty()) root.fail("outputs", "is empty; name at least one output (see 'fourbar sim --help')");
+  const bool clearance = scene.model == Model::clearance;
   std::vector<std::string> known;
-  for (const auto& o : nominal_outputs()) known.emplace_back(o.name);
+  if (clearance)
+    for (const auto& o : clearance_outputs()) known.emplace_back(o.name);
+  else
+    for (const auto& o : nominal_outputs()) known.emplace_back(o.name);
   for (std::size_t i = 0; i < scene.outputs.size(); ++i) {
     const std::string& name = scene.outputs[i];
     if (name == "crank_deg")
       root.fail("outputs", "names 'crank_deg', which is always the first column; remove it");
-    if (!find_output(name)) {
+    if (clearance && !find_clearance_output(name) && find_output(name))
+      root.fail("outputs", "names '" + name + "', which the clearance model does not compute; remove it");
+    if (!clearance && find_clearance_output(name) && !find_output(name))
+      root.fail("outputs", "names '" + name + "', which only model = \"clearance\" computes; remove it");
+    if (clearance ? !find_clearance_output(name) : !find_output(name)) {
       std::string hint;
       if (auto m = closest_match(name, known)) hint = " (did you mean '" + *m + "'?)";
       root.fail("outputs", "names unknown output '" + name + "'" + hint +
@@ -51,6 +57,14 @@ Scene load_scene(const std::filesystem::path& file) {
     }
     if (std::find(scene.outputs.begin(), scene.outputs.begin() + i, name) != scene.outputs.begin() + i)
       root.fail("outputs", "names '" + name + "' twice");
+  }
+
+  if (auto sec = root.optional_section("clearance")) {
+    if (!clearance) root.fail("clearance", "is only used with model = \"clearance\"; remove the table or change model");
+    scene.clearance = read_clearance_settings(*sec, scene.rig->radial_clearance_m);
+    sec->finish();
+  } else if (clearance) {
+    root.fail("clearance", "is missing: model = \"clearance\" needs a [clearance] table (at least restitution)");
   }
 
   if (auto rec = root.optional_section("recording")) scene.recording = *doc["recording"].as_table();

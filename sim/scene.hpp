@@ -10,6 +10,7 @@
 
 #include <toml++/toml.h>
 
+#include "sim/clearance/settings.hpp"
 #include "sim/rig.hpp"
 
 namespace fourbar {
@@ -25,6 +26,10 @@ struct Scene {
   int revolutions = 1;
   int samples_per_revolution = 360;   ///< output sampling (rows per turn)
   std::vector<std::string> outputs;   ///< requested per-sample columns, in order
+  /// `[clearance]` table (model = "clearance" only); the clearance used is
+  /// `clearance.radial_clearance_m` or else the rig's.
+  ClearanceSettings clearance;
+  double clearance_m() const { return clearance.radial_clearance_m.value_or(rig->radial_clearance_m); }
   /// The scene's `[recording]` table, kept unparsed: the virtual rig reads and
   /// validates it (sensors, noise, file format); `sim` ignores it.
   std::optional<toml::table> recording;

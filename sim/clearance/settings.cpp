@@ -1,0 +1,62 @@
+#include "sim/clearance/settings.hpp"
+
+#include <algorithm>
+
+#include "common/units.hpp"
+
+namespace fourbar {
+
+const char* to_string(ContactLaw c) {
+  switch (c) {
+    case ContactLaw::smooth: return "smooth";
+    case ContactLaw::rough: return "rough";
+    case ContactLaw::stick_slip: return "stick-slip";
+  }
+  return "?";
+}
+
+const char* to_string(IntegratorKind k) { return k == IntegratorKind::cvode ? "cvode" : "odeint"; }
+
+ClearanceSettings read_clearance_settings(TomlSection& s, double rig_clearance_m) {
+  ClearanceSettings c;
+  if (s.has("radial_mm")) {
+    const double mm = s.number("radial_mm");
+    if (!(mm > 0) || mm > 100)
+      s.fail("radial_mm", "must be > 0 and at most 100 mm (use model = \"nominal\" for no clearance)");
+    c.radial_clearance_m = units::mm_to_m(mm);
+  } else if (!(rig_clearance_m > 0)) {
+    s.fail("radial_mm", "is missing and the rig has no [clearance] radial_mm > 0; give the radial clearance in mm");
+  }
+  c.restitution = s.number("restitution");
+  if (!(c.restitution >= 0 && c.restitution <= 1))
+    s.fail("restitution", "must be in [0, 1] (1 = elastic, 0 = plastic)");
+  const std::string contact = s.choice("contact", {"smooth", "rough", "stick-slip"}, "smooth");
+  c.contact = contact == "smooth" ? ContactLaw::smooth : contact == "rough" ? ContactLaw::rough : ContactLaw::stick_slip;
+  if (s.has("friction_coefficient")) {
+    c.friction_coefficient = s.number("friction_coefficient");
+    if (!(c.friction_coefficient >= 0) || c.friction_coefficient > 100)
+      s.fail("friction_coefficient", "must be >= 0 (Coulomb coefficient μ)");
+    if (c.contact != ContactLaw::stick_slip)
+      s.fail("friction_coefficient", "is only used with contact = \"stick-slip\"; remove it or change contact");
+  } else if (c.contact == ContactLaw::stick_slip) {
+    s.fail("friction_coefficient", "is required with contact = \"stick-slip\" (Coulomb coefficient μ >= 0)");
+  }
+  c.tolerance = s.in_range("tolerance", 1e-14, 1e-3, 1e-10);
+  c.integrator = s.choice("integrator", {"cvode", "odeint"}, "odeint") == "cvode" ? IntegratorKind::cvode
+                                                                               : IntegratorKind::odeint;
+  c.settle_speed_m_s = s.in_range("settle_speed_mm_s", 1e-9, 1e3, 1e-3) * 1e-3;
+  c.steady_state = s.boolean("steady_state", false);
+  c.max_revolutions = static_cast<int>(s.integer("max_revolutions", 1, 1'000'000, 200));
+  c.steady_tolerance = s.in_range("steady_tolerance", 1e-14, 1.0, 1e-6);
+  c.max_period = static_cast<int>(s.integer("max_period", 1, 64, 8));
+  if (s.has("tables")) {
+    for (const auto& t : s.strings("tables")) {
+      if (t == "impacts") c.write_impacts = true;
+      else if (t == "revolutions") c.write_revolutions = true;
+      else s.fail("tables", "names unknown table '" + t + "'; use \"impacts\" and/or \"revolutions\"");
+    }
+  }
+  return c;
+}
+
+}  // namespace fourbar

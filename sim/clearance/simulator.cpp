@@ -1,0 +1,614 @@
+#include "sim/clearance/simulator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+
+#include "common/error.hpp"
+#include "common/units.hpp"
+#include "sim/nominal/kinetostatics.hpp"
+
+namespace fourbar {
+
+namespace {
+
+/// Subintervals per integrator step at which the event witnesses are sampled.
+constexpr int kScanPoints = 4;
+/// Events closer together than this, many times in a row, mean the run is stuck.
+constexpr double kZenoSpan_s = 1e-12;
+constexpr int kZenoLimit = 100000;
+
+Vec2 rotate(Vec2 u, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * u.x - s * u.y, s * u.x + c * u.y};
+}
+
+/// Angle of b relative to a, in (−π, π].
+double angle_between(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
+
+/// Root of f on [a, b] with f(a) and f(b) of opposite sign, to 1e-13 s:
+/// returns the end of the final bracket on the side of f(b).
+template <class F>
+double locate_root(F&& f, double a, double b, double fa, double fb) {
+  if (fb == 0) return b;
+  const double tol = std::max(1e-13, 8 * std::numeric_limits<double>::epsilon() * std::abs(b));
+  auto stop = [tol](double x, double y) { return std::abs(y - x) <= tol; };
+  std::uintmax_t iters = 200;
+  const auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb, stop, iters);
+  // Keep the side where f has the sign of f(b) (past the event).
+  const double fr = f(r.second);
+  return (fr == 0 || (fr > 0) == (fb > 0)) ? r.second : r.first;
+}
+
+}  // namespace
+
+struct ClearanceSimulator::Impl {
+  Impl(const ClearanceModel& m, const CrankMotion& c, const ClearanceSettings& s)
+      : model(m), crank(c), settings(s), integ(make_integrator(s.integrator, s.tolerance)) {}
+
+  const ClearanceModel& model;
+  const CrankMotion& crank;
+  ClearanceSettings settings;
+  std::unique_ptr<DenseIntegrator> integ;
+  ImpactLaw law{settings.restitution, settings.contact, settings.friction_coefficient};
+
+  // Scales of the integrated (scaled) state.
+  double speed_scale = 1;   // |ω2| at the start
+  double delta_scale = 1;   // ξ/l3
+  double energy_scale = 1;  // J
+  double force_guard = 0;   // N_guard
+  double arm_depth = 0;     // penetration below which a free flight from the wall counts as "inside"
+
+  // Current segment.
+  double t = 0;
+  ContactMode mode = ContactMode::following;
+  bool armed = true;         // free flight: the pin has left the wall since the segment start
+  double segment_start = 0;  // start time of the current smooth segment
+  int zeno_count = 0;
+  double last_event = -1e300;
+
+  // Witness samples carried across steps of one segment.
+  struct FreeSample { double t, pen, speed; };
+  struct FollowSample { double t, w; };
+  FreeSample free_prev{};
+  std::vector<FollowSample> follow_hist;
+
+  // Books.
+  std::vector<double> sample_times;
+  std::size_t next_sample = 0;
+  std::vector<ClearanceSample> samples;
+  std::vector<ImpactRecord> impacts;
+  std::vector<RevolutionRecord> revolutions;
+  bool revolutions_on = false;
+  double rev_origin = 0;
+  int rev_dir = 1;
+  ClearanceDiagnostics diag;
+  double work_impulse = 0, loss = 0;
+
+  // ---- state conversion -------------------------------------------------
+
+  struct FreeNominal {
+    CrankState crank;
+    NominalMotion nominal;
+  };
+
+  LinkMotion free_links(double time, const OdeState& y, NominalMotion* nominal_out = nullptr) const {
+    const NominalMotion nm = solve_motion(model.rig(), crank.at(time));
+    LinkMotion m;
+    m.u3 = rotate(nm.pose.u3, y[0] * delta_scale);
+    m.u4 = rotate(nm.pose.u4, y[1] * delta_scale);
+    m.omega3_rad_s = nm.omega3_rad_s + y[2] * delta_scale * speed_scale;
+    m.omega4_rad_s = nm.omega4_rad_s + y[3] * delta_scale * speed_scale;
+    if (nominal_out) *nominal_out = nm;
+    return m;
+  }
+
+  OdeState free_state(double time, const LinkMotion& m, double work) const {
+    const NominalMotion nm = solve_motion(model.rig(), crank.at(time));
+    OdeState y{};
+    y[0] = angle_between(nm.pose.u3, m.u3) / delta_scale;
+    y[1] = angle_between(nm.pose.u4, m.u4) / delta_scale;
+    y[2] = (m.omega3_rad_s - nm.omega3_rad_s) / (delta_scale * speed_scale);
+    y[3] = (m.omega4_rad_s - nm.omega4_rad_s) / (delta_scale * speed_scale);
+    y[4] = work / energy_scale;
+    return y;
+  }
+
+  // Following: y = (η, η̇/|ω2|, W/E, 0, 0).
+  double eta_of(const OdeState& y) const { return y[0]; }
+  double eta_rate_of(const OdeState& y) const { return y[1] * speed_scale; }
+  double work_of(const OdeState& y) const { return (mode == ContactMode::following ? y[2] : y[4]) * energy_scale; }
+
+  LinkMotion links_at(double time, const OdeState& y) const {
+    if (mode == ContactMode::following) return model.following_links(crank.at(time), eta_of(y), eta_rate_of(y));
+    return free_links(time, y);
+  }
+
+  // ---- the two ODE systems ---------------------------------------------
+
+  struct FollowingOde final : OdeSystem {
+    Impl* s;
+    void rhs(double time, const OdeState& y, OdeState& dy) override {
+      const CrankState c = s->crank.at(time);
+      const FollowingMotion f = s->model.following(c, s->eta_of(y), s->eta_rate_of(y));
+      dy[0] = s->eta_rate_of(y);
+      dy[1] = f.eta_accel_rad_s2 / s->speed_scale;
+      dy[2] = f.crank_torque_Nm * c.speed_rad_s / s->energy_scale;
+      dy[3] = dy[4] = 0;
+    }
+  } following_ode;
+
+  struct FreeOde final : OdeSystem {
+    Impl* s;
+    void rhs(double time, const OdeState& y, OdeState& dy) override {
+      const CrankState c = s->crank.at(time);
+      NominalMotion nm;
+      const LinkMotion m = s->free_links(time, y, &nm);
+      double a3, a4;
+      s->model.free_accelerations(c, nm.pose.u2, m, a3, a4);
+      const double rate_scale = s->delta_scale * s->speed_scale;
+      dy[0] = y[2] * s->speed_scale;
+      dy[1] = y[3] * s->speed_scale;
+      dy[2] = (a3 - nm.alpha3_rad_s2) / rate_scale;
+      dy[3] = (a4 - nm.alpha4_rad_s2) / rate_scale;
+      dy[4] = s->model.crank_torque_Nm(c, nm.pose.u2, m, a3, {}) * c.speed_rad_s / s->energy_scale;
+    }
+  } free_ode;
+
+  // ---- witnesses -----------------------------------------------------------
+
+  FreeSample free_witness(double time) {
+    OdeState y;
+    integ->interpolate(time, y);
+    const BearingState b = model.bearing(crank.at(time), free_links(time, y));
+    return {time, -b.gap_m, b.normal_speed_m_s};
+  }
+
+  FollowSample follow_witness(double time) {
+    OdeState y;
+    integ->interpolate(time, y);
+    const CrankState c = crank.at(time);
+    const FollowingMotion f = model.following(c, eta_of(y), eta_rate_of(y));
+    monitor(model.bearing(c, f.links));
+    return {time, f.normal_force_N + force_guard};
+  }
+
+  /// Scans the free-flight step [ta, tb] for the first impact; returns its time.
+  std::optional<double> scan_free(double ta, double tb) {
+    auto pen = [this](double x) { return free_witness(x).pen; };
+    auto spd = [this](double x) { return free_witness(x).speed; };
+    FreeSample prev = free_prev;
+    if (prev.t != ta) prev = free_witness(ta);
+    for (int i = 1; i <= kScanPoints; ++i) {
+      const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
+      const FreeSample cur = free_witness(ti);
+      if (!armed) {
+        if (cur.pen < -arm_depth) {
+          armed = true;
+        } else if (cur.speed > 0) {
+          // Past the deepest point of this flight: find it, then look ahead.
+          double tmin = prev.t, pmin = prev.pen;
+          if (prev.speed < 0) {
+            tmin = locate_root(spd, prev.t, cur.t, prev.speed, cur.speed);
+            pmin = pen(tmin);
+          }
+          armed = true;
+          if (cur.pen >= 0) {
+            if (pmin < 0) return locate_root(pen, tmin, cur.t, pmin, cur.pen);
+            return tmin;  // the pin never left the wall beyond round-off: a touch
+          }
+        }
+        prev = cur;
+        continue;
+      }
+      if (cur.pen >= 0) return locate_root(pen, prev.t, cur.t, prev.pen, cur.pen);
+      if (prev.speed > 0 && cur.speed < 0) {
+        // A local maximum of the penetration between samples: a grazing double root?
+        const double tmax = locate_root(spd, prev.t, cur.t, prev.speed, cur.speed);
+        const double pmax = pen(tmax);
+        if (pmax >= 0) return locate_root(pen, prev.t, tmax, prev.pen, pmax);
+      }
+      prev = cur;
+    }
+    free_prev = prev;
+    return std::nullopt;
+  }
+
+  /// Scans the following step [ta, tb] for contact loss; returns its time.
+  std::optional<double> scan_following(double ta, double tb) {
+    auto w = [this](double x) { return follow_witness(x).w; };
+    if (follow_hist.empty() || follow_hist.back().t != ta) {
+      follow_hist.clear();
+      follow_hist.push_back(follow_witness(ta));
+    }
+    for (int i = 1; i <= kScanPoints; ++i) {
+      const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
+      const FollowSample cur = follow_witness(ti);
+      const FollowSample prev = follow_hist.back();
+      if (cur.w <= 0) return locate_root(w, prev.t, cur.t, prev.w, cur.w);
+      if (follow_hist.size() >= 2) {
+        // Sampled local minimum: does a parabola through the three samples dip below zero?
+        const FollowSample a = follow_hist[follow_hist.size() - 2];
+        if (prev.w < a.w && prev.w < cur.w) {
+          const double h1 = prev.t - a.t, h2 = cur.t - prev.t;
+          const double d1 = (prev.w - a.w) / h1, d2 = (cur.w - prev.w) / h2;
+          const double curv = 2 * (d2 - d1) / (h1 + h2);
+          const double slope_mid = d1 + 0.5 * curv * h1;  // slope at prev
+          const double dip = prev.w - slope_mid * slope_mid / (2 * curv);
+          if (dip <= 0.5 * prev.w) {
+            const auto [tmin, wmin] = boost::math::tools::brent_find_minima(w, a.t, cur.t, 40);
+            if (wmin <= 0) return locate_root(w, a.t, tmin, a.w, wmin);
+          }
+        }
+      }
+      follow_hist.push_back(cur);
+      if (follow_hist.size() > 2) follow_hist.erase(follow_hist.begin());
+    }
+    return std::nullopt;
+  }
+
+  // ---- segment starts --------------------------------------------------------
+
+  void begin_following(double time, double eta, double eta_rate, double work) {
+    mode = ContactMode::following;
+    const OdeState y{eta, eta_rate / speed_scale, work / energy_scale, 0, 0};
+    integ->reset(following_ode, time, y);
+    t = segment_start = time;
+    follow_hist.clear();
+    FollowingMotion f = model.following(crank.at(time), eta, eta_rate);
+    follow_hist.push_back({time, f.normal_force_N + force_guard});
+  }
+
+  void begin_free(double time, const LinkMotion& links, double work) {
+    mode = ContactMode::free_flight;
+    const OdeState y = free_state(time, links, work);
+    integ->reset(free_ode, time, y);
+    t = segment_start = time;
+    const BearingState b = model.bearing(crank.at(time), links);
+    armed = -b.gap_m < -arm_depth;
+    free_prev = {time, -b.gap_m, b.normal_speed_m_s};
+  }
+
+  /// The following-mode coordinates of a link motion on the contact circle.
+  void to_following(double time, const LinkMotion& m, double& eta, double& eta_rate) const {
+    const CrankState c = crank.at(time);
+    const BearingState b = model.bearing(c, m);
+    const Rig& rig = model.rig();
+    const Vec2 u2 = unit(c.angle_rad);
+    const Vec2 e_dot = rig.crank.length_m * c.speed_rad_s * u2.perp() + rig.coupler.length_m * m.omega3_rad_s * m.u3.perp() -
+                       rig.rocker.length_m * m.omega4_rad_s * m.u4.perp();
+    eta = std::atan2(b.normal.y, b.normal.x);
+    eta_rate = dot(e_dot, b.normal.perp()) / model.clearance_m();
+  }
+
+  /// Pin on the wall after an impact: free flight, or settle into following.
+  ContactMode after_contact(double time, const LinkMotion& links, double work) {
+    const CrankState c = crank.at(time);
+    const BearingState b = model.bearing(c, links);
+    if (b.normal_speed_m_s < -settings.settle_speed_m_s) {
+      begin_free(time, links, work);
+      return mode;
+    }
+    // Remove the remaining normal speed with a plastic impulse (projection
+    // onto φ̇ = 0 in the kinetic metric), then ask the following mode.
+    const ImpactResult settle = resolve_settle(c, links);
+    ++diag.settles;
+    work_impulse += c.speed_rad_s * settle.motor_impulse_Nms;
+    loss += settle.energy_loss_J;
+    double eta, eta_rate;
+    to_following(time, settle.after, eta, eta_rate);
+    const FollowingMotion f = model.following(c, eta, eta_rate);
+    if (f.normal_force_N > -force_guard) {
+      begin_following(time, eta, eta_rate, work);
+    } else {
+      begin_free(time, f.links, work);
+      armed = false;
+    }
+    return mode;
+  }
+
+  ImpactResult resolve_settle(const CrankState& c, const LinkMotion& links) const {
+    const BearingState b = model.bearing(c, links);
+    // Normal impulse F that zeroes the normal speed: F = v_n / K_nn.
+    const ImpactResult probe = apply_impulse(model, c, links, 1.0, 0.0);
+    const double knn = probe.normal_speed_before_m_s - probe.normal_speed_after_m_s;
+    return apply_impulse(model, c, links, b.normal_speed_m_s / knn, 0.0);
+  }
+
+  // ---- books -------------------------------------------------------------------
+
+  double energy(double time, const LinkMotion& m) const {
+    const CrankState c = crank.at(time);
+    return model.kinetic_energy_J(c, m) + model.potential_energy_J(c, m);
+  }
+
+  int revolution_of(double time) const {
+    const double turns = (crank.at(time).angle_rad - rev_origin) * rev_dir / units::kTwoPi;
+    return static_cast<int>(std::floor(turns + 1e-12));
+  }
+
+  double revolution_start(int k) const { return crank.time_at_angle(rev_origin + rev_dir * units::kTwoPi * k); }
+
+  RevolutionRecord& revolution(int k) {
+    while (static_cast<int>(revolutions.size()) <= k) {
+      RevolutionRecord r;
+      r.index = static_cast<int>(revolutions.size());
+      r.start_time_s = revolution_start(r.index);
+      r.end_time_s = revolution_start(r.index + 1);
+      revolutions.push_back(r);
+    }
+    return revolutions[k];
+  }
+
+  /// Mode time and revolution boundaries over [ta, tb] of the current segment.
+  void book_interval(double ta, double tb) {
+    (mode == ContactMode::following ? diag.time_following_s : diag.time_free_s) += tb - ta;
+    if (!revolutions_on) return;
+    int k = std::max(0, revolution_of(ta));
+    double a = ta;
+    for (;;) {
+      RevolutionRecord& r = revolution(k);
+      const double b = std::min(tb, r.end_time_s);
+      if (b > a) (mode == ContactMode::following ? r.following_time_s : r.free_time_s) += b - a;
+      const double end = r.end_time_s;
+      if (end > tb) break;
+      // Reached the start of turn k + 1: record its state once.
+      RevolutionRecord& next = revolution(k + 1);
+      if (!next.has_start_state) record_start_state(next);
+      a = end;
+      ++k;
+      if (a >= tb) break;
+    }
+  }
+
+  void record_start_state(RevolutionRecord& r) {
+    OdeState y;
+    integ->interpolate(r.start_time_s, y);
+    const LinkMotion m = links_at(r.start_time_s, y);
+    const OdeState f = free_state(r.start_time_s, m, 0);
+    r.start_state = {f[0], f[1], f[2], f[3]};
+    r.start_mode = mode;
+    r.has_start_state = true;
+  }
+
+  void emit_samples(double up_to) {
+    while (next_sample < sample_times.size() && sample_times[next_sample] <= up_to) {
+      samples.push_back(sample(sample_times[next_sample]));
+      ++next_sample;
+    }
+  }
+
+  ClearanceSample sample(double time) {
+    OdeState y;
+    integ->interpolate(time, y);
+    ClearanceSample s;
+    s.time_s = time;
+    s.crank = crank.at(time);
+    s.mode = mode;
+    if (mode == ContactMode::following) {
+      const FollowingMotion f = model.following(s.crank, eta_of(y), eta_rate_of(y));
+      s.links = f.links;
+      s.alpha3_rad_s2 = f.alpha3_rad_s2;
+      s.alpha4_rad_s2 = f.alpha4_rad_s2;
+      s.bearing_force_N = -f.normal_force_N * f.normal;
+      s.crank_torque_Nm = f.crank_torque_Nm;
+    } else {
+      s.links = free_links(time, y);
+      model.free_accelerations(s.crank, s.links, s.alpha3_rad_s2, s.alpha4_rad_s2);
+      s.crank_torque_Nm = model.crank_torque_Nm(s.crank, s.links, s.alpha3_rad_s2, {});
+    }
+    const BearingState b = model.bearing(s.crank, s.links);
+    s.gap_m = b.gap_m;
+    s.eta_rad = std::atan2(b.normal.y, b.normal.x);
+    s.kinetic_energy_J = model.kinetic_energy_J(s.crank, s.links);
+    s.potential_energy_J = model.potential_energy_J(s.crank, s.links);
+    monitor(b);
+    return s;
+  }
+
+  void monitor(const BearingState& b) {
+    const double xi = model.clearance_m();
+    if (mode == ContactMode::following) {
+      diag.max_contact_circle_error = std::max(diag.max_contact_circle_error, std::abs(b.gap_m) / xi);
+      diag.max_contact_normal_speed_m_s = std::max(diag.max_contact_normal_speed_m_s, std::abs(b.normal_speed_m_s));
+    } else {
+      diag.max_penetration = std::max(diag.max_penetration, -b.gap_m / xi);
+    }
+  }
+
+  void check_energy(double time, const LinkMotion& m, double work) {
+    const double r = energy(time, m) - diag.energy_start_J - work - work_impulse + loss;
+    diag.max_energy_residual_J = std::max(diag.max_energy_residual_J, std::abs(r));
+  }
+
+  void zeno_guard(double time) {
+    zeno_count = time - last_event < kZenoSpan_s ? zeno_count + 1 : 0;
+    last_event = time;
+    if (zeno_count > kZenoLimit)
+      throw RunError("clearance model: events pile up at t = " + std::to_string(time) +
+                     " s without progress; raise [clearance] settle_speed_mm_s");
+  }
+
+  // ---- events --------------------------------------------------------------------
+
+  void handle_impact(double time) {
+    OdeState y;
+    integ->interpolate(time, y);
+    const double work = work_of(y);
+    const LinkMotion before = free_links(time, y);
+    const CrankState c = crank.at(time);
+    const BearingState b = model.bearing(c, before);
+    monitor(b);
+    check_energy(time, before, work);
+    ImpactRecord rec;
+    rec.time_s = time;
+    rec.crank_angle_rad = c.angle_rad;
+    rec.eta_rad = std::atan2(b.normal.y, b.normal.x);
+    rec.result = resolve_impact(model, c, before, law);
+    rec.revolution = revolutions_on ? revolution_of(time) : 0;
+    const bool counted = b.normal_speed_m_s > settings.settle_speed_m_s;
+    (counted ? diag.impacts : diag.touches) += 1;
+    if (rec.result.degenerate) ++diag.degenerate_impacts;
+    if (rec.result.energy_loss_J < -1e-15 * energy_scale) ++diag.energy_gaining_impacts;
+    work_impulse += c.speed_rad_s * rec.result.motor_impulse_Nms;
+    loss += rec.result.energy_loss_J;
+    if (revolutions_on && counted && rec.revolution >= 0) {
+      RevolutionRecord& r = revolution(rec.revolution);
+      ++r.impacts;
+      r.sum_normal_impulse_Ns += rec.result.normal_impulse_Ns;
+    }
+    rec.mode_after = after_contact(time, rec.result.after, work);
+    if (counted) impacts.push_back(rec);
+  }
+
+  void handle_loss(double time) {
+    OdeState y;
+    integ->interpolate(time, y);
+    const double work = work_of(y);
+    const LinkMotion m = model.following_links(crank.at(time), eta_of(y), eta_rate_of(y));
+    check_energy(time, m, work);
+    ++diag.contact_losses;
+    if (revolutions_on) {
+      const int k = revolution_of(time);
+      if (k >= 0) ++revolution(k).contact_losses;
+    }
+    begin_free(time, m, work);
+    armed = false;
+  }
+
+  // ---- the main loop -----------------------------------------------------------------
+
+  void advance_to(double t_end) {
+    while (t < t_end) {
+      double tb = integ->current_time();
+      if (tb <= t) tb = integ->step(t_end);  // else: the rest of an earlier step is still unused
+      const double ta = t;
+      tb = std::min(tb, t_end);
+      ++diag.steps;
+      const std::optional<double> ev = mode == ContactMode::following ? scan_following(ta, tb) : scan_free(ta, tb);
+      const double t_stop = ev ? *ev : tb;
+      emit_samples(t_stop);
+      book_interval(ta, t_stop);
+      t = t_stop;
+      if (!ev) continue;
+      zeno_guard(t_stop);
+      if (mode == ContactMode::following) handle_loss(t_stop);
+      else handle_impact(t_stop);
+    }
+  }
+
+  void prepare(double t0) {
+    const CrankState c = crank.at(t0);
+    speed_scale = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
+    delta_scale = model.clearance_m() / model.rig().coupler.length_m;
+    energy_scale = model.energy_scale_J(c.speed_rad_s);
+    if (!(energy_scale > 0)) energy_scale = 1.0;  // a rig at rest without gravity
+    force_guard = 1e-9 * model.force_scale_N(c.speed_rad_s);
+    arm_depth = 1e-11 * model.clearance_m();
+    rev_dir = c.speed_rad_s < 0 ? -1 : 1;
+    following_ode.s = this;
+    free_ode.s = this;
+    diag.energy_scale_J = energy_scale;
+  }
+
+  void after_start(double t0) {
+    OdeState y;
+    integ->interpolate(t0, y);
+    diag.energy_start_J = energy(t0, links_at(t0, y));
+    if (revolutions_on) record_start_state(revolution(std::max(0, revolution_of(t0))));
+  }
+};
+
+ClearanceSimulator::ClearanceSimulator(const ClearanceModel& model, const CrankMotion& crank,
+                                       const ClearanceSettings& settings)
+    : impl_(std::make_unique<Impl>(model, crank, settings)) {}
+
+ClearanceSimulator::~ClearanceSimulator() = default;
+
+void ClearanceSimulator::set_sample_times(std::vector<double> times) {
+  impl_->sample_times = std::move(times);
+  impl_->next_sample = 0;
+}
+
+void ClearanceSimulator::set_revolution_origin(double crank_angle_rad) {
+  impl_->revolutions_on = true;
+  impl_->rev_origin = crank_angle_rad;
+}
+
+void ClearanceSimulator::start_nominal(double t0) {
+  Impl& s = *impl_;
+  s.prepare(t0);
+  const Rig& rig = s.model.rig();
+  // Clearance link along the nominal bearing force (thesis sec. 3.4): the
+  // bushing pushes the pin along −n, so n = −F_nominal/|F_nominal|.
+  auto direction = [&](double time) {
+    const NominalMotion nm = solve_motion(rig, s.crank.at(time));
+    const Vec2 f = solve_loads(rig, nm).bearing_N;
+    return std::atan2(-f.y, -f.x);
+  };
+  const double eta0 = direction(t0);
+  // Its rate by a 4th-order central difference of the nominal force angle.
+  const double h = 1e-4 / s.speed_scale;
+  auto rel = [&](double time) { return eta0 + std::remainder(direction(time) - eta0, units::kTwoPi); };
+  const double rate = (rel(t0 - 2 * h) - 8 * rel(t0 - h) + 8 * rel(t0 + h) - rel(t0 + 2 * h)) / (12 * h);
+  const CrankState c = s.crank.at(t0);
+  const FollowingMotion f = s.model.following(c, eta0, rate);
+  if (f.normal_force_N > -s.force_guard) {
+    s.begin_following(t0, eta0, rate, 0.0);
+  } else {
+    s.begin_free(t0, f.links, 0.0);
+    s.armed = false;
+  }
+  s.after_start(t0);
+}
+
+void ClearanceSimulator::start_following(double t0, double eta_rad, double eta_rate_rad_s) {
+  impl_->prepare(t0);
+  impl_->begin_following(t0, eta_rad, eta_rate_rad_s, 0.0);
+  impl_->after_start(t0);
+}
+
+void ClearanceSimulator::start_free(double t0, const LinkMotion& links) {
+  impl_->prepare(t0);
+  impl_->begin_free(t0, links, 0.0);
+  impl_->after_start(t0);
+}
+
+void ClearanceSimulator::advance_to(double t_end) { impl_->advance_to(t_end); }
+
+double ClearanceSimulator::time() const { return impl_->t; }
+ContactMode ClearanceSimulator::mode() const { return impl_->mode; }
+
+LinkMotion ClearanceSimulator::current_links() {
+  OdeState y;
+  impl_->integ->interpolate(impl_->t, y);
+  return impl_->links_at(impl_->t, y);
+}
+
+const std::vector<ClearanceSample>& ClearanceSimulator::samples() const { return impl_->samples; }
+const std::vector<ImpactRecord>& ClearanceSimulator::impacts() const { return impl_->impacts; }
+const std::vector<RevolutionRecord>& ClearanceSimulator::revolutions() const { return impl_->revolutions; }
+
+ClearanceDiagnostics ClearanceSimulator::diagnostics() {
+  Impl& s = *impl_;
+  OdeState y;
+  s.integ->interpolate(s.t, y);
+  const LinkMotion m = s.links_at(s.t, y);
+  const double work = s.work_of(y);
+  s.check_energy(s.t, m, work);
+  ClearanceDiagnostics d = s.diag;
+  d.crank_work_J = work;
+  d.motor_impulse_work_J = s.work_impulse;
+  d.impact_loss_J = s.loss;
+  d.energy_end_J = s.energy(s.t, m);
+  d.energy_residual_J = d.energy_end_J - d.energy_start_J - work - s.work_impulse + s.loss;
+  d.steps = s.integ->steps();
+  return d;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,129 @@
+#include "sim/clearance/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "common/error.hpp"
+#include "common/csv_writer.hpp"
+#include "common/toml_section.hpp"
+#include "common/units.hpp"
+#include "sim/clearance/simulator.hpp"
+
+namespace fourbar {
+
+SweepGrid load_sweep(const std::filesystem::path& file, Scene& base) {
+  const toml::table doc = parse_toml_file(file);
+  // Arrays of numbers are read from `doc` directly (errors through `full`);
+  // everything else through `root`, which then rejects unknown keys.
+  const TomlSection full(doc, file);
+  toml::table rest = doc;
+  for (const char* key : {"radial_mm", "crank_speed_rpm", "restitution", "friction_coefficient"}) rest.erase(key);
+  TomlSection root(rest, file);
+  const std::filesystem::path scene_file = root.path("scene");
+  try {
+    base = load_scene(scene_file);
+  } catch (const InputError& e) {
+    throw InputError(root.where("scene") + ": " + e.what());
+  }
+  if (base.model != Model::clearance) root.fail("scene", "must be a scene with model = \"clearance\"");
+  SweepGrid g;
+  auto array = [&](std::string_view key, double lo, double hi, double fallback, double to_si) {
+    std::vector<double> out;
+    if (!doc.contains(key)) return std::vector<double>{fallback};
+    const toml::array* arr = doc[key].as_array();
+    if (!arr || arr->empty()) full.fail(key, "must be a non-empty array of numbers, e.g. [0.1, 0.2]");
+    for (const auto& el : *arr) {
+      std::optional<double> v;
+      if (el.is_floating_point()) v = el.as_floating_point()->get();
+      if (el.is_integer()) v = static_cast<double>(el.as_integer()->get());
+      if (!v || !std::isfinite(*v) || *v < lo || *v > hi)
+        full.fail(key, "must hold numbers in [" + format_double(lo) + ", " + format_double(hi) + "]");
+      out.push_back(*v * to_si);
+    }
+    return out;
+  };
+  g.radial_clearance_m = array("radial_mm", 1e-9, 100, units::m_to_mm(base.clearance_m()), 1e-3);
+  g.crank_speed_rad_s = array("crank_speed_rpm", -1e5, 1e5, units::rad_s_to_rpm(base.crank_speed_rad_s),
+                              units::kTwoPi / 60.0);
+  for (double w : g.crank_speed_rad_s)
+    if (w == 0) full.fail("crank_speed_rpm", "holds 0: the crank must turn");
+  g.restitution = array("restitution", 0, 1, base.clearance.restitution, 1.0);
+  g.friction_coefficient = array("friction_coefficient", 0, 100, base.clearance.friction_coefficient, 1.0);
+  if (doc.contains("friction_coefficient") && base.clearance.contact != ContactLaw::stick_slip)
+    full.fail("friction_coefficient", "needs a base scene with contact = \"stick-slip\"");
+  g.revolutions = static_cast<int>(root.integer("revolutions", 1, 100000, 10));
+  g.skip_revolutions = static_cast<int>(root.integer("skip_revolutions", 0, 100000, 2));
+  root.optional_string("notes");
+  root.finish();
+  return g;
+}
+
+std::vector<SweepPoint> run_sweep(const Scene& base, const SweepGrid& g, unsigned jobs) {
+  std::vector<SweepPoint> points;
+  for (double xi : g.radial_clearance_m)
+    for (double w : g.crank_speed_rad_s)
+      for (double e : g.restitution)
+        for (double mu : g.friction_coefficient) {
+          SweepPoint p;
+          p.radial_clearance_m = xi;
+          p.crank_speed_rad_s = w;
+          p.restitution = e;
+          p.friction_coefficient = mu;
+          points.push_back(p);
+        }
+
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto worker = [&]() {
+    for (std::size_t i = next++; i < points.size(); i = next++) {
+      try {
+        SweepPoint& p = points[i];
+        ClearanceSettings s = base.clearance;
+        s.restitution = p.restitution;
+        s.friction_coefficient = p.friction_coefficient;
+        const ClearanceModel model(*base.rig, p.radial_clearance_m);
+        const ConstantSpeedCrank crank(base.start_angle_rad, p.crank_speed_rad_s);
+        ClearanceSimulator sim(model, crank, s);
+        sim.set_revolution_origin(base.start_angle_rad);
+        sim.start_nominal(0.0);
+        const int total = g.skip_revolutions + g.revolutions;
+        sim.advance_to(crank.time_at_angle(base.start_angle_rad + (p.crank_speed_rad_s > 0 ? 1 : -1) *
+                                                                      units::kTwoPi * total));
+        double n = 0, sumF = 0, losses = 0, follow = 0, span = 0;
+        const auto& revs = sim.revolutions();
+        for (int k = g.skip_revolutions; k < total && k < static_cast<int>(revs.size()); ++k) {
+          n += revs[k].impacts;
+          sumF += revs[k].sum_normal_impulse_Ns;
+          losses += revs[k].contact_losses;
+          follow += revs[k].following_time_s;
+          span += revs[k].end_time_s - revs[k].start_time_s;
+        }
+        p.impacts_per_rev = n / g.revolutions;
+        p.sum_normal_impulse_per_rev_Ns = sumF / g.revolutions;
+        p.impact_index_Ns = n > 0 ? sumF / n : 0.0;
+        p.contact_losses_per_rev = losses / g.revolutions;
+        p.following_share = span > 0 ? follow / span : 0.0;
+        const ClearanceDiagnostics d = sim.diagnostics();
+        p.energy_residual_rel = std::abs(d.energy_residual_J) / d.energy_scale_J;
+        p.max_penetration_rel = d.max_penetration;
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  jobs = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(points.size())));
+  std::vector<std::thread> threads;
+  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return points;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,60 @@
+// `fourbar sim` with model = "clearance": the thesis scenes write series,
+// impact and revolution tables and a summary; bad [clearance] values fail
+// with one line, exit status 2, and nothing written.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_command.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::run_fourbar;
+using testing::TempDir;
+
+TEST(SimClearanceCommand, ThesisSceneWritesAllTables) {
+  TempDir dir;
+  const auto r = run_fourbar("sim " FOURBAR_SOURCE_DIR "/data/scenes/thesis_clearance_350rpm_e05.toml --out " +
+                             dir.path().string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"series.csv", "impacts.csv", "revolutions.csv", "summary.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / f)) << f;
+  const std::string series = testing::read_file(dir.path() / "series.csv");
+  EXPECT_NE(series.find("crank_deg,time_s,mode,gap_mm,theta3_rad"), std::string::npos);
+  EXPECT_EQ(testing::count_lines(series), 3 + 1 + 3601);  // provenance, header, rows
+  std::ifstream in(dir.path() / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const auto& c = j.at("clearance");
+  EXPECT_EQ(c.at("settings").at("restitution"), 0.5);
+  EXPECT_LT(c.at("energy").at("residual_rel").get<double>(), 1e-8);
+  EXPECT_LT(c.at("drift").at("max_contact_circle_error_rel").get<double>(), 1e-9);
+  EXPECT_LT(c.at("drift").at("max_penetration_rel").get<double>(), 1e-9);
+}
+
+TEST(SimClearanceCommand, BadValuesExitTwoAndWriteNothing) {
+  const std::string base = testing::read_file(FOURBAR_SOURCE_DIR "/data/scenes/thesis_clearance_350rpm_e05.toml");
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"restitution = 0.5", "restitution = 2"},
+           {"radial_mm = 0.254", "radial_mm = -0.254"},
+           {"contact = \"smooth\"", "contact = \"stick-slip\"\nfriction_coefficient = -1"},
+           {"tolerance = 1e-10", "tolerance = 0"}}) {
+    TempDir dir;
+    std::string text = base;
+    text.replace(text.find(from), from.size(), to);
+    text.replace(text.find("../rigs/"), 8, FOURBAR_SOURCE_DIR "/data/rigs/");
+    const auto scene = dir.write("s.toml", text);
+    const auto out = dir.path() / "out";
+    const auto r = run_fourbar("sim " + scene.string() + " --out " + out.string());
+    EXPECT_EQ(r.status, 2) << to;
+    EXPECT_EQ(testing::count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("s.toml"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out / "series.csv")) << to;
+  }
+}
+
+}  // namespace
+}  // namespace fourbar

@@ -1,0 +1,79 @@
+// Scene [clearance] table: defaults, overrides and rejected values.
+
+#include <gtest/gtest.h>
+
+#include "common/error.hpp"
+#include "sim/scene.hpp"
+#include "support/temp_dir.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::TempDir;
+
+const std::string kScene = R"(rig = "r.toml"
+model = "clearance"
+crank_speed_rpm = 350
+outputs = ["alpha3_rad_s2", "mode", "gap_mm"]
+
+[clearance]
+radial_mm = 0.1
+restitution = 0.5
+contact = "stick-slip"
+friction_coefficient = 0.2
+)";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto i = text.find(from);
+  EXPECT_NE(i, std::string::npos) << from;
+  return text.replace(i, from.size(), to);
+}
+
+std::string error_of(const std::string& text) {
+  TempDir dir;
+  dir.write("r.toml", testing::thesis_rig_toml());
+  try {
+    load_scene(dir.write("s.toml", text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted:\n" << text;
+  return {};
+}
+
+TEST(ClearanceScene, Loads) {
+  TempDir dir;
+  dir.write("r.toml", testing::thesis_rig_toml());
+  const Scene s = load_scene(dir.write("s.toml", kScene));
+  EXPECT_EQ(s.model, Model::clearance);
+  EXPECT_DOUBLE_EQ(s.clearance_m(), 0.1e-3);
+  EXPECT_EQ(s.clearance.restitution, 0.5);
+  EXPECT_EQ(s.clearance.contact, ContactLaw::stick_slip);
+  EXPECT_EQ(s.clearance.friction_coefficient, 0.2);
+  const Scene r = load_scene(dir.write("t.toml", replaced(kScene, "radial_mm = 0.1\n", "")));
+  EXPECT_DOUBLE_EQ(r.clearance_m(), 0.254e-3);  // the rig's
+}
+
+TEST(ClearanceScene, RejectsBadValues) {
+  auto has = [](const std::string& msg, const std::string& what) {
+    EXPECT_NE(msg.find(what), std::string::npos) << msg;
+  };
+  has(error_of(replaced(kScene, "restitution = 0.5", "restitution = 1.5")), "restitution");
+  has(error_of(replaced(kScene, "restitution = 0.5", "restitution = -0.1")), "[0, 1]");
+  has(error_of(replaced(kScene, "friction_coefficient = 0.2", "friction_coefficient = -0.2")), "friction_coefficient");
+  has(error_of(replaced(kScene, "radial_mm = 0.1", "radial_mm = -0.1")), "radial_mm");
+  has(error_of(replaced(kScene, "radial_mm = 0.1", "radial_mm = 0")), "radial_mm");
+  has(error_of(replaced(kScene, "contact = \"stick-slip\"", "contact = \"smooth\"")), "only used with contact");
+  has(error_of(replaced(kScene, "friction_coefficient = 0.2\n", "")), "is required");
+  has(error_of(replaced(kScene, "restitution = 0.5\n", "")), "restitution");
+  has(error_of(replaced(kScene, "contact = \"stick-slip\"", "contact = \"stickslip\"")), "did you mean 'stick-slip'");
+  has(error_of(kScene + "restitushun = 1\n"), "unknown key 'clearance.restitushun'");
+  has(error_of(replaced(kScene, "\"mode\"", "\"crank_pivot_fx_N\"")), "does not compute");
+  has(error_of(replaced(kScene, "[clearance]", "steady_state = true\n[clearance]")), "steady_state");
+  has(error_of(kScene + "steady_state = true\nmax_revolutions = 0\n"), "max_revolutions");
+  has(error_of(replaced(kScene, "model = \"clearance\"", "model = \"nominal\"")), "only model = \"clearance\"");
+  has(error_of(replaced(kScene, "= 350", "= 0")), "crank_speed_rpm");
+}
+
+}  // namespace
+}  // namespace fourbar
