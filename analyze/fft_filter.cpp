@@ -26,29 +26,30 @@ std::vector<double> kernel_response(const std::vector<double>& kernel, RealFft& 
 std::size_t transform_size(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary) {
   validate_filter(spec, fs);
   if (length == 0) throw InputError("filter: the record is empty");
+  const std::size_t period = boundary == Boundary::reflect ? 2 * length : length;
   if (spec.transition_hz == 0) {
     if (boundary == Boundary::zero)
       throw InputError(
           "filter: the ideal (bin-wise) filter acts on the record as one period; for zero boundaries give a "
           "transition width (transition_hz > 0)");
-    return length;
+    return period;
   }
   const std::size_t half = kernel_taps(spec, fs) / 2;
   if (boundary == Boundary::zero) return fast_fft_size(length + half);
-  if (2 * half + 1 > length) {
+  if (2 * half + 1 > period) {
     std::ostringstream os;
     os << "filter: the kernel (" << 2 * half + 1 << " taps for a " << spec.transition_hz
        << " Hz transition) is longer than the record (" << length
        << " samples); widen the transition or use zero boundaries / overlap-save";
     throw InputError(os.str());
   }
-  return length;
+  return period;
 }
 
 }  // namespace
 
 FftFilter::FftFilter(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary)
-    : length_(length), fft_(transform_size(spec, fs, length, boundary)) {
+    : length_(length), reflect_(boundary == Boundary::reflect), fft_(transform_size(spec, fs, length, boundary)) {
   const std::size_t n = fft_.size();
   if (spec.transition_hz == 0) {
     const std::vector<Band> bands = pass_bands(spec, fs);
@@ -64,7 +65,8 @@ void FftFilter::apply(std::span<const double> in, std::span<double> out) {
   const std::size_t n = fft_.size();
   auto t = fft_.time();
   std::copy(in.begin(), in.end(), t.begin());
-  std::fill(t.begin() + length_, t.end(), 0.0);
+  if (reflect_) std::reverse_copy(in.begin(), in.end(), t.begin() + length_);
+  else std::fill(t.begin() + length_, t.end(), 0.0);
   fft_.forward();
   auto s = fft_.spectrum();
   const double scale = 1.0 / n;

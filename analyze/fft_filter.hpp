@@ -7,7 +7,11 @@
 //    as one period (right for whole revolutions in steady state);
 //  - windowed kernel, Boundary::periodic: the kernel applied circularly;
 //  - windowed kernel, Boundary::zero: linear convolution, the record
-//    continued by zeros (no wrap-around), equal to OverlapSaveFilter.
+//    continued by zeros (no wrap-around), equal to OverlapSaveFilter;
+//  - Boundary::reflect (ideal or windowed): the record continued by its
+//    mirror image at both ends (period 2N, as a DCT), so a record that does
+//    not hold whole periods (mains hum, a drifting crank speed) has no jump
+//    at the ends and far less edge ringing than the periodic boundary.
 // OverlapSaveFilter streams a record of any length through the windowed
 // kernel in blocks, in memory bounded by the FFT block.
 
@@ -19,7 +23,7 @@
 
 namespace fourbar {
 
-enum class Boundary { periodic, zero };
+enum class Boundary { periodic, zero, reflect };
 
 class FftFilter {
  public:
@@ -28,7 +32,7 @@ class FftFilter {
   FftFilter(const FilterSpec& spec, double sample_rate_hz, std::size_t length, Boundary boundary = Boundary::periodic);
 
   std::size_t length() const { return length_; }
-  /// Transform length (the record length, or longer for Boundary::zero).
+  /// Transform length (the record length; longer for zero, 2N for reflect).
   std::size_t fft_size() const { return fft_.size(); }
   /// The real (zero-phase) response at bin k, frequency k·fs/fft_size().
   std::span<const double> response() const { return response_; }
@@ -38,6 +42,7 @@ class FftFilter {
 
  private:
   std::size_t length_;
+  bool reflect_;
   RealFft fft_;
   std::vector<double> response_;
 };

@@ -2,7 +2,27 @@
 
 #include "analyze/angle_resampler.hpp"
 
+#include <sstream>
+
+#include "common/error.hpp"
+
 namespace fourbar {
+
+namespace {
+
+// Average of the revolutions between the guard revolutions.
+AngleAverage guarded_average(const std::vector<double>& grid, std::size_t revolutions, std::size_t n,
+                             std::size_t guard) {
+  if (2 * guard >= revolutions) {
+    std::ostringstream os;
+    os << "averaging: " << guard << " guard revolutions at each end leave none of the " << revolutions
+       << " revolutions in the record; give fewer guard revolutions";
+    throw InputError(os.str());
+  }
+  return synchronous_average(std::span(grid).subspan(guard * n, (revolutions - 2 * guard) * n), n);
+}
+
+}  // namespace
 
 LinkAnalysis analyze_tangential_channel(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
                                         double fs, std::span<const double> reading, const LinkAnalysisOptions& opt) {
@@ -33,8 +53,26 @@ LinkAnalysis analyze_tangential_channel(const Rig& rig, const AccelerometerMount
                          std::span(out.crank_speed_grid).subspan(at, N), turns,
                          std::span(out.omega_grid).subspan(at, N));
   }
-  out.alpha = synchronous_average(out.alpha_grid, N);
-  out.omega = synchronous_average(out.omega_grid, N);
+  out.alpha = guarded_average(out.alpha_grid, out.revolutions, N, opt.guard_revolutions);
+  out.omega = guarded_average(out.omega_grid, out.revolutions, N, opt.guard_revolutions);
+  return out;
+}
+
+NormalChannelAnalysis analyze_normal_channel(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
+                                             double fs, std::span<const double> reading,
+                                             std::span<const double> link_alpha, const LinkAnalysisOptions& opt) {
+  const std::size_t n = reading.size();
+  std::vector<double> w2(n);
+  restore_dc_coupled_reading(rig, mount, crank, fs, reading, w2);
+  angular_speed_squared_from_normal(rig, mount, crank, w2, link_alpha, w2);
+  FftFilter filter(opt.filter, fs, n, opt.boundary);
+  filter.apply(w2, w2);
+  const RevolutionResampler grid(crank.angle_rad, opt.points_per_rev, opt.grid_start_rad);
+  NormalChannelAnalysis out;
+  out.points_per_rev = opt.points_per_rev;
+  out.revolutions = grid.revolutions();
+  out.omega_sq_grid = grid.resample(w2);
+  out.omega_sq = guarded_average(out.omega_sq_grid, out.revolutions, opt.points_per_rev, opt.guard_revolutions);
   return out;
 }
 

@@ -95,6 +95,27 @@ TEST(FftFilter, PeriodicKernelFilterEqualsDirectDft) {
   }
 }
 
+TEST(FftFilter, ReflectBoundaryFiltersTheMirroredRecord) {
+  const double fs = 1000;
+  const FilterSpec spec = bandpass_with_comb({WindowType::kaiser, 6.0}, 100.0);
+  const std::vector<double> kernel = design_kernel(spec, fs);
+  const long m = static_cast<long>(kernel.size() / 2);
+  const std::size_t n = 70;
+  const std::vector<double> x = random_signal(n, 8);
+  std::vector<double> mirrored(x);
+  mirrored.insert(mirrored.end(), x.rbegin(), x.rend());
+  const auto ref = dft_filter(mirrored, [&](std::size_t k) {
+    double h = 0;
+    for (long i = -m; i <= m; ++i) h += kernel[i + m] * std::cos(units::kTwoPi * double(k) * i / (2 * n));
+    return h;
+  });
+  std::vector<double> y(n);
+  FftFilter f(spec, fs, n, Boundary::reflect);
+  EXPECT_EQ(f.fft_size(), 2 * n);
+  f.apply(x, y);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(y[i], ref[i], 1e-12 * max_abs(ref)) << i;
+}
+
 // Linear convolution with the centred kernel, zeros beyond the record.
 std::vector<double> direct_convolution(const std::vector<double>& x, const std::vector<double>& h) {
   const long n = static_cast<long>(x.size()), m = static_cast<long>(h.size() / 2);
