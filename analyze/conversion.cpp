@@ -37,10 +37,9 @@ double sensor_reading(const Rig& rig, const ResolvedMount& mount, const LinkMoti
   return mount.sign * dot(f, mount.axis == SensorAxis::tangential ? n : u);
 }
 
-double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const CrankState& crank,
+double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const LinkMotion& k,
                                             double reading_m_s2) {
   assert(mount.axis == SensorAxis::tangential);
-  const LinkMotion k = nominal_link_motion(rig, mount.link, crank);
   const Vec2 n = k.u.perp();
   // α = (s·m − a_J·n + h·ω² − g·cos θ)/r, with cos θ = ŷ·n.
   return (mount.sign * reading_m_s2 - dot(k.joint_accel_m_s2, n) + mount.h_m * k.omega_rad_s * k.omega_rad_s -
@@ -48,25 +47,36 @@ double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount&
          mount.r_m;
 }
 
-double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const CrankState& crank,
+double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const LinkMotion& k,
                                          double reading_m_s2, double link_alpha_rad_s2) {
   assert(mount.axis == SensorAxis::normal);
-  const LinkMotion k = nominal_link_motion(rig, mount.link, crank);
   // ω² = (a_J·u − h·α + g·sin θ − s·m)/r, with sin θ = ŷ·u.
   return (dot(k.joint_accel_m_s2, k.u) - mount.h_m * link_alpha_rad_s2 + rig.gravity_m_s2 * k.u.y -
           mount.sign * reading_m_s2) /
          mount.r_m;
 }
 
+std::vector<LinkMotion> nominal_link_track(const Rig& rig, SensedLink link, const CrankTrack& crank) {
+  const std::size_t n = crank.size();
+  if (crank.speed_rad_s.size() != n || crank.accel_rad_s2.size() != n) {
+    std::ostringstream os;
+    os << "crank track: " << n << " angles, " << crank.speed_rad_s.size() << " speeds, " << crank.accel_rad_s2.size()
+       << " accelerations; give one crank state per sample";
+    throw InputError(os.str());
+  }
+  std::vector<LinkMotion> track(n);
+  for (std::size_t i = 0; i < n; ++i)
+    track[i] = nominal_link_motion(rig, link, {crank.angle_rad[i], crank.speed_rad_s[i], crank.accel_rad_s2[i]});
+  return track;
+}
+
 namespace {
 
-void check_lengths(const AccelerometerMount& mount, const CrankTrack& crank, std::size_t reading, std::size_t out) {
-  const std::size_t n = crank.size();
-  if (crank.speed_rad_s.size() != n || crank.accel_rad_s2.size() != n || reading != n || out != n) {
+void check_lengths(const AccelerometerMount& mount, std::size_t track, std::size_t reading, std::size_t out) {
+  if (reading != track || out != track) {
     std::ostringstream os;
-    os << "channel '" << mount.channel << "': " << reading << " samples but the crank track has " << n
-       << " angles, " << crank.speed_rad_s.size() << " speeds, " << crank.accel_rad_s2.size()
-       << " accelerations; every channel needs one crank state per sample";
+    os << "channel '" << mount.channel << "': " << reading << " samples but the crank track has " << track
+       << "; every channel needs one crank state per sample";
     throw InputError(os.str());
   }
 }
@@ -82,23 +92,22 @@ ResolvedMount resolve_axis(const Rig& rig, const AccelerometerMount& mount, Sens
   return r;
 }
 
-CrankState state_at(const CrankTrack& c, std::size_t i) { return {c.angle_rad[i], c.speed_rad_s[i], c.accel_rad_s2[i]}; }
-
 }  // namespace
 
-void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
-                                          std::span<const double> reading, std::span<double> alpha) {
+void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount,
+                                          std::span<const LinkMotion> nominal, std::span<const double> reading,
+                                          std::span<double> alpha) {
   const ResolvedMount r = resolve_axis(rig, mount, SensorAxis::tangential);
-  check_lengths(mount, crank, reading.size(), alpha.size());
+  check_lengths(mount, nominal.size(), reading.size(), alpha.size());
   for (std::size_t i = 0; i < reading.size(); ++i)
-    alpha[i] = angular_acceleration_from_tangential(rig, r, state_at(crank, i), reading[i]);
+    alpha[i] = angular_acceleration_from_tangential(rig, r, nominal[i], reading[i]);
 }
 
-void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
-                                       std::span<const double> reading, std::span<const double> link_alpha,
-                                       std::span<double> omega_sq) {
+void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount,
+                                       std::span<const LinkMotion> nominal, std::span<const double> reading,
+                                       std::span<const double> link_alpha, std::span<double> omega_sq) {
   const ResolvedMount r = resolve_axis(rig, mount, SensorAxis::normal);
-  check_lengths(mount, crank, reading.size(), omega_sq.size());
+  check_lengths(mount, nominal.size(), reading.size(), omega_sq.size());
   if (r.h_m != 0 && link_alpha.size() != reading.size()) {
     std::ostringstream os;
     os << "channel '" << mount.channel << "': the sensor is offset " << r.h_m * 1e3
@@ -106,14 +115,14 @@ void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount&
     throw InputError(os.str());
   }
   for (std::size_t i = 0; i < reading.size(); ++i)
-    omega_sq[i] = angular_speed_squared_from_normal(rig, r, state_at(crank, i), reading[i],
+    omega_sq[i] = angular_speed_squared_from_normal(rig, r, nominal[i], reading[i],
                                                     link_alpha.empty() ? 0.0 : link_alpha[i]);
 }
 
-void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
+void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, std::span<const LinkMotion> nominal,
                                 double sample_rate_hz, std::span<const double> reading, std::span<double> restored) {
   const ResolvedMount r = resolve_mount(rig, mount);
-  check_lengths(mount, crank, reading.size(), restored.size());
+  check_lengths(mount, nominal.size(), reading.size(), restored.size());
   if (reading.empty()) return;
   if (r.high_pass_corner_hz == 0) {
     std::copy(reading.begin(), reading.end(), restored.begin());
@@ -122,15 +131,15 @@ void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount,
   // Model mean of the reading: its known part at the nominal link motion with
   // α replaced by the record's mean α (periodic motion: ≈ 0).
   const std::size_t n = reading.size();
-  const LinkMotion first = nominal_link_motion(rig, r.link, state_at(crank, 0));
-  const LinkMotion last = nominal_link_motion(rig, r.link, state_at(crank, n - 1));
+  const LinkMotion& first = nominal.front();
+  const LinkMotion& last = nominal.back();
   // Sample mean of α: Σα_i = ∫α dt·fs + (α_0 + α_{n−1})/2 (trapezoid rule),
   // with ∫α dt = ω_end − ω_start.
   const double mean_alpha =
       ((last.omega_rad_s - first.omega_rad_s) * sample_rate_hz + 0.5 * (first.alpha_rad_s2 + last.alpha_rad_s2)) / n;
   double sum = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    LinkMotion k = nominal_link_motion(rig, r.link, state_at(crank, i));
+    LinkMotion k = nominal[i];
     if (r.axis == SensorAxis::tangential) k.alpha_rad_s2 = mean_alpha;
     sum += sensor_reading(rig, r, k);
   }

@@ -29,6 +29,7 @@
 // 209 rad/s² for the thesis rig at 350 rpm.
 
 #include <span>
+#include <vector>
 
 #include "analyze/sensor_mount.hpp"
 #include "sim/nominal/kinematics.hpp"
@@ -42,7 +43,7 @@ struct CrankTrack {
   std::size_t size() const { return angle_rad.size(); }
 };
 
-/// The nominal motion of the sensed link at one crank state.
+/// The motion of the sensed link at one instant.
 struct LinkMotion {
   Vec2 u;                 ///< link direction
   double omega_rad_s = 0;
@@ -50,34 +51,42 @@ struct LinkMotion {
   Vec2 joint_accel_m_s2;  ///< a_J of the link's first joint
 };
 
-/// The sensed link's nominal motion at one crank state (pose, ω, α, a_J).
+/// The nominal motion of the sensed link at one crank state.
 LinkMotion nominal_link_motion(const Rig& rig, SensedLink link, const CrankState& crank);
+
+/// The same for every sample of a crank track: computed once per record and
+/// link, shared by all channels on that link. Throws InputError when the
+/// track's spans differ in length.
+std::vector<LinkMotion> nominal_link_track(const Rig& rig, SensedLink link, const CrankTrack& crank);
 
 /// Forward model: the reading (m/s², DC-coupled) of the sensor for a link
 /// motion (any ω, α; e.g. the nominal one, or a measured/simulated one).
 double sensor_reading(const Rig& rig, const ResolvedMount& mount, const LinkMotion& motion);
 
-/// α of the sensed link from one tangential reading (DC-coupled, m/s²).
-double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const CrankState& crank,
+/// α of the sensed link from one tangential reading (DC-coupled, m/s²), the
+/// link's angle (and ω, for the offset term) taken from `nominal`.
+double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const LinkMotion& nominal,
                                             double reading_m_s2);
 
 /// ω² of the sensed link from one normal reading; `link_alpha_rad_s2` is only
 /// used when the sensor is offset from the link line (h ≠ 0).
-double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const CrankState& crank,
+double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const LinkMotion& nominal,
                                          double reading_m_s2, double link_alpha_rad_s2);
 
 /// Whole channel: α per sample from a tangential channel (DC-coupled or
-/// restored with `restore_dc_coupled_reading`). Throws InputError when the
-/// mount is bad, the mount is not tangential, or lengths differ.
-void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
-                                          std::span<const double> reading_m_s2, std::span<double> alpha_rad_s2);
+/// restored with `restore_dc_coupled_reading`), with the nominal track of the
+/// mount's link. Throws InputError when the mount is bad, the mount is not
+/// tangential, or lengths differ. `alpha_rad_s2` may alias `reading_m_s2`.
+void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount,
+                                          std::span<const LinkMotion> nominal, std::span<const double> reading_m_s2,
+                                          std::span<double> alpha_rad_s2);
 
 /// Whole channel: ω² per sample from a normal channel. `link_alpha_rad_s2`
 /// may be empty when the sensor is on the link line (h = 0). With an
 /// AC-coupled normal channel the mean of ω² is not observed (the sensor's
 /// high-pass removed it); only its variation is.
-void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
-                                       std::span<const double> reading_m_s2,
+void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount,
+                                       std::span<const LinkMotion> nominal, std::span<const double> reading_m_s2,
                                        std::span<const double> link_alpha_rad_s2, std::span<double> omega_sq_rad2_s2);
 
 /// For an AC-coupled (piezo) channel: undoes the sensor's first-order
@@ -85,8 +94,9 @@ void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount&
 /// from the model: the record mean of the reading's known part (a_J, gravity,
 /// offset terms at the nominal link motion) plus r·(mean α), the mean α
 /// following from ω_end − ω_start of the nominal mechanism at the measured
-/// end states (≈ 0 for whole revolutions). For a DC-coupled mount (corner 0) copies the reading.
-void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
+/// end states (≈ 0 for whole revolutions). For a DC-coupled mount (corner 0)
+/// copies the reading. `restored_m_s2` may alias `reading_m_s2`.
+void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, std::span<const LinkMotion> nominal,
                                 double sample_rate_hz, std::span<const double> reading_m_s2,
                                 std::span<double> restored_m_s2);
 

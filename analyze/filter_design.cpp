@@ -109,10 +109,10 @@ std::vector<double> design_kernel(const FilterSpec& s, double fs) {
   const std::vector<double> w = make_window(s.window, taps, WindowSymmetry::symmetric);
   const long m = static_cast<long>(taps / 2);
   std::vector<double> h(taps);
-  for (long i = -m; i <= m; ++i) {
+  for (long i = 0; i <= m; ++i) {  // symmetric: h[−i] = h[i]
     double v = 0;
     for (const Band& b : bands) v += lowpass_tap(b.hi_hz, fs, i) - lowpass_tap(b.lo_hz, fs, i);
-    h[i + m] = v * w[i + m];
+    h[m + i] = h[m - i] = v * w[m + i];
   }
   return h;
 }

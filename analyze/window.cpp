@@ -91,7 +91,11 @@ std::vector<double> make_window(const WindowSpec& w, std::size_t n, WindowSymmet
   std::vector<double> out(n, 1.0);
   if (n <= 1) return out;
   const std::size_t span = symmetry == WindowSymmetry::symmetric ? n - 1 : n;  // periodic: n + 1 points, last dropped
-  for (std::size_t i = 0; i < n; ++i) out[i] = value_at(w, 2.0 * static_cast<double>(i) / span - 1.0);
+  // w(x) is even: compute one half (x ≤ 0) and mirror it about the centre.
+  for (std::size_t i = 0; 2 * i <= span; ++i) {
+    out[i] = value_at(w, 2.0 * static_cast<double>(i) / span - 1.0);
+    if (span - i < n) out[span - i] = out[i];
+  }
   return out;
 }
 

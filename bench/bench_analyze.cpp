@@ -29,7 +29,7 @@ struct Fixture {
   testing::SyntheticRig rig;
   testing::SyntheticRecording rec;
   AccelerometerMount coupler_t, rocker_t, coupler_n;
-  LinkAnalysisOptions band, low;
+  ChannelOptions band, low;
 };
 
 const Fixture& fixture() {
@@ -69,10 +69,10 @@ void BM_AnalyzeChain3Channels(benchmark::State& state) {
   const CrankTrack crank = f.rec.crank();
   const double fs = f.rig.sample_rate_hz;
   for (auto _ : state) {
-    const LinkAnalysis c = analyze_tangential_channel(f.rig.rig, f.coupler_t, crank, fs, f.rec.channels[0].recorded, f.band);
-    const LinkAnalysis r = analyze_tangential_channel(f.rig.rig, f.rocker_t, crank, fs, f.rec.channels[1].recorded, f.band);
-    const NormalChannelAnalysis n =
-        analyze_normal_channel(f.rig.rig, f.coupler_n, crank, fs, f.rec.channels[2].recorded, c.alpha_rad_s2, f.low);
+    RecordAnalyzer analyzer(f.rig.rig, crank, fs, AngleGridSpec{});
+    const LinkAnalysis c = analyzer.tangential(f.coupler_t, f.rec.channels[0].recorded, f.band);
+    const LinkAnalysis r = analyzer.tangential(f.rocker_t, f.rec.channels[1].recorded, f.band);
+    const NormalChannelAnalysis n = analyzer.normal(f.coupler_n, f.rec.channels[2].recorded, c.alpha_rad_s2, f.low);
     benchmark::DoNotOptimize(c.omega.mean.data());
     benchmark::DoNotOptimize(r.omega.mean.data());
     benchmark::DoNotOptimize(n.omega_sq.mean.data());
@@ -88,7 +88,9 @@ void BM_ConvertTangential(benchmark::State& state) {
   const Fixture& f = fixture();
   std::vector<double> out(f.rec.angle.size());
   for (auto _ : state) {
-    angular_acceleration_from_tangential(f.rig.rig, f.coupler_t, f.rec.crank(), f.rec.channels[0].recorded, out);
+    // The nominal link track (once per record and link) and the conversion.
+    const std::vector<LinkMotion> track = nominal_link_track(f.rig.rig, SensedLink::coupler, f.rec.crank());
+    angular_acceleration_from_tangential(f.rig.rig, f.coupler_t, track, f.rec.channels[0].recorded, out);
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(state.iterations() * out.size());

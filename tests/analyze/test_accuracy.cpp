@@ -59,6 +59,13 @@ Truth grid_truth(const SyntheticRig& s, SensedLink link, const LinkAnalysis& a, 
   return t;
 }
 
+// The chain on one channel, a fresh analyzer (rig or crank track may differ).
+LinkAnalysis run_chain(const Rig& rig, const CrankTrack& crank, double fs, const AccelerometerMount& mount,
+                       std::span<const double> reading, const ChannelOptions& o) {
+  RecordAnalyzer analyzer(rig, crank, fs, AngleGridSpec{});
+  return analyzer.tangential(mount, reading, o);
+}
+
 Errors errors_of(const LinkAnalysis& a, const Truth& t) {
   return {rel_rms_error(a.alpha.mean, t.alpha), rel_rms_error(a.omega.mean, t.omega),
           rel_rms_error(a.alpha_grid, t.alpha_rev), rel_rms_error(a.omega_grid, t.omega_rev)};
@@ -79,7 +86,7 @@ Errors thesis_method(const SyntheticRig& s, const testing::SyntheticRecording& r
   FftFilter(ideal, fs, n).apply(alpha, alpha);
   const double omega0 = nominal_link_motion(s.rig, ch.mount.link, {rec.angle[0], w0, 0.0}).omega_rad_s;
   cumulative_trapezoid(alpha, 1.0 / fs, omega0, omega);
-  const RevolutionResampler grid(rec.angle, N, 0.0);
+  const RevolutionResampler grid(rec.angle, N, 0.0);  // the same grid as the chain's
   const std::vector<double> alpha_grid = grid.resample(alpha), omega_grid = grid.resample(omega);
   const AngleAverage a = synchronous_average(alpha_grid, N), w = synchronous_average(omega_grid, N);
   return {rel_rms_error(a.mean, truth.alpha), rel_rms_error(w.mean, truth.omega),
@@ -107,7 +114,8 @@ std::vector<Errors> run_case(SyntheticRig s, bool compare) {
   rocker.axis_sign = 1;
   const testing::SyntheticRecording rec = testing::make_recording(s, {coupler, rocker});
 
-  LinkAnalysisOptions opt;
+  const AngleGridSpec grid;
+  ChannelOptions opt;
   opt.filter.band = BandType::bandpass;
   opt.filter.low_hz = 0.5 * s.speed_rpm / 60.0;
   opt.filter.high_hz = 300;
@@ -115,7 +123,6 @@ std::vector<Errors> run_case(SyntheticRig s, bool compare) {
   opt.filter.mains_width_hz = 1.0;
   opt.filter.window = {WindowType::kaiser, 8.0};
   opt.filter.transition_hz = 0.8;
-  opt.points_per_rev = 720;
 
   std::printf("\n  SNR %.0f dB, hum %.0f %%: RMS error / RMS of truth, of the average over the revolutions and of\n"
               "  every revolution before averaging\n",
@@ -125,9 +132,9 @@ std::vector<Errors> run_case(SyntheticRig s, bool compare) {
   for (std::size_t c = 0; c < 2; ++c) {
     const testing::SyntheticChannel& ch = rec.channels[c];
     const SensedLink link = ch.mount.link;
-    const LinkAnalysis full = analyze_tangential_channel(s.rig, ch.mount, rec.crank(), s.sample_rate_hz, ch.recorded, opt);
+    const LinkAnalysis full = run_chain(s.rig, rec.crank(), s.sample_rate_hz, ch.mount, ch.recorded, opt);
     EXPECT_GE(full.revolutions, 49u);
-    const Truth truth = grid_truth(s, link, full, opt.grid_start_rad);
+    const Truth truth = grid_truth(s, link, full, grid.start_rad);
     const Errors ours = errors_of(full, truth);
     result.push_back(ours);
     auto row = [&](const std::string& name, Errors e) {
@@ -139,18 +146,18 @@ std::vector<Errors> run_case(SyntheticRig s, bool compare) {
 
     // One correction left out at a time (same record, same truth).
     auto variant = [&](const Rig& rig, const AccelerometerMount& mount, const CrankTrack& crank,
-                       const LinkAnalysisOptions& o) {
-      return errors_of(analyze_tangential_channel(rig, mount, crank, s.sample_rate_hz, ch.recorded, o), truth);
+                       const ChannelOptions& o) {
+      return errors_of(run_chain(rig, crank, s.sample_rate_hz, mount, ch.recorded, o), truth);
     };
-    LinkAnalysisOptions ideal = opt;
+    ChannelOptions ideal = opt;
     ideal.filter.window = {};
     ideal.filter.transition_hz = 0;
     row("  with the ideal rectangular filter", variant(s.rig, ch.mount, rec.crank(), ideal));
-    LinkAnalysisOptions guarded = opt;
+    ChannelOptions guarded = opt;
     guarded.guard_revolutions = 2;
     row("  with 2 guard revolutions at each end",
-        errors_of(analyze_tangential_channel(s.rig, ch.mount, rec.crank(), s.sample_rate_hz, ch.recorded, guarded),
-                  grid_truth(s, link, full, opt.grid_start_rad, 2)));
+        errors_of(run_chain(s.rig, rec.crank(), s.sample_rate_hz, ch.mount, ch.recorded, guarded),
+                  grid_truth(s, link, full, grid.start_rad, 2)));
     const std::vector<double> w0(rec.angle.size(), s.mean_speed_rad_s()), zero(rec.angle.size(), 0.0);
     row("  at constant crank speed", variant(s.rig, ch.mount, {rec.angle, w0, zero}, opt));
     Rig no_g = s.rig;
@@ -164,7 +171,7 @@ std::vector<Errors> run_case(SyntheticRig s, bool compare) {
     at_joint.distance_m = link_length_m(s.rig, link);
     at_joint.offset_m = 0;
     row("  sensor taken at the joint", variant(s.rig, at_joint, rec.crank(), opt));
-    const Errors thesis = thesis_method(s, rec, ch, opt.filter, truth, opt.points_per_rev);
+    const Errors thesis = thesis_method(s, rec, ch, opt.filter, truth, grid.points_per_rev);
     row("thesis method", thesis);
     EXPECT_GT(thesis.alpha, 3 * ours.alpha);
     EXPECT_GT(thesis.omega, 3 * ours.omega);
@@ -219,16 +226,15 @@ TEST(AnalyzeAccuracy, NormalChannelChecksTheIntegratedOmega) {
   normal.high_pass_corner_hz = 0;
   const testing::SyntheticRecording rec = testing::make_recording(s, {tangential, normal});
 
-  LinkAnalysisOptions opt;
+  ChannelOptions opt;
   opt.filter = {BandType::bandpass, 2.9, 300, 60, 1.0, {WindowType::kaiser, 8.0}, 0.8};
-  const LinkAnalysis t = analyze_tangential_channel(s.rig, tangential, rec.crank(), s.sample_rate_hz,
-                                                    rec.channels[0].recorded, opt);
-  LinkAnalysisOptions low = opt;
+  RecordAnalyzer analyzer(s.rig, rec.crank(), s.sample_rate_hz, AngleGridSpec{});
+  const LinkAnalysis t = analyzer.tangential(tangential, rec.channels[0].recorded, opt);
+  ChannelOptions low = opt;
   low.filter.band = BandType::lowpass;
-  const NormalChannelAnalysis n = analyze_normal_channel(s.rig, normal, rec.crank(), s.sample_rate_hz,
-                                                         rec.channels[1].recorded, t.alpha_rad_s2, low);
+  const NormalChannelAnalysis n = analyzer.normal(normal, rec.channels[1].recorded, t.alpha_rad_s2, low);
   ASSERT_EQ(n.revolutions, t.revolutions);
-  const std::size_t N = opt.points_per_rev;
+  const std::size_t N = t.points_per_rev;
   std::vector<double> from_integral(N), truth(N, 0.0);
   for (std::size_t k = 0; k < N; ++k) from_integral[k] = t.omega.mean[k] * t.omega.mean[k];
   for (std::size_t r = 0; r < t.revolutions; ++r)

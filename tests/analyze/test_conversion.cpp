@@ -88,10 +88,10 @@ TEST(Conversion, InverseRecoversNominalAlphaAndOmegaSquared) {
       const LinkMotion k = nominal_link_motion(rig, m.link, c);
       const double reading = sensor_reading(rig, m, k);
       if (m.axis == SensorAxis::tangential) {
-        const double a = angular_acceleration_from_tangential(rig, m, c, reading);
+        const double a = angular_acceleration_from_tangential(rig, m, k, reading);
         EXPECT_NEAR(a, k.alpha_rad_s2, 1e-10 * (1 + std::abs(k.alpha_rad_s2)));
       } else {
-        const double w2 = angular_speed_squared_from_normal(rig, m, c, reading, k.alpha_rad_s2);
+        const double w2 = angular_speed_squared_from_normal(rig, m, k, reading, k.alpha_rad_s2);
         EXPECT_NEAR(w2, k.omega_rad_s * k.omega_rad_s, 1e-10 * (1 + w2));
       }
     }
@@ -116,7 +116,8 @@ TEST(Conversion, ReducesToThesisFormulaForItsAssumptions) {
         angle[i] = units::deg_to_rad(i);
         reading[i] = sensor_reading(rig, m, nominal_link_motion(rig, link, {angle[i], w2, 0.0}));
       }
-      angular_acceleration_from_tangential(rig, mount, {angle, speed, accel}, reading, ours);
+      angular_acceleration_from_tangential(rig, mount, nominal_link_track(rig, link, {angle, speed, accel}), reading,
+                                           ours);
       thesis_angular_acceleration(rig, link, sign, w2, angle, reading, thesis);
       for (int i = 0; i < 360; ++i) EXPECT_NEAR(ours[i], thesis[i], 1e-10 * (1 + std::abs(ours[i])));
     }
@@ -132,8 +133,9 @@ TEST(Conversion, StandingStillTheSensorReadsOnlyGravityAndAlphaIsZero) {
       const Pose p = solve_pose(rig, c.angle_rad);
       const Vec2 u = m.link == SensedLink::coupler ? p.u3 : p.u4;
       const double gravity_projection = m.sign * rig.gravity_m_s2 * u.perp().y;  // s·g·cos θ
-      EXPECT_NEAR(sensor_reading(rig, m, nominal_link_motion(rig, m.link, c)), gravity_projection, 1e-12);
-      EXPECT_NEAR(angular_acceleration_from_tangential(rig, m, c, gravity_projection), 0.0, 1e-12);
+      const LinkMotion k = nominal_link_motion(rig, m.link, c);
+      EXPECT_NEAR(sensor_reading(rig, m, k), gravity_projection, 1e-12);
+      EXPECT_NEAR(angular_acceleration_from_tangential(rig, m, k, gravity_projection), 0.0, 1e-12);
     }
   }
 }
@@ -162,7 +164,8 @@ TEST(Conversion, SlowlySwingingLinkGravityTermAcAndDcCoupled) {
     max_alpha = std::max(max_alpha, std::abs(truth[i]));
   }
   EXPECT_LT(max_alpha, 1e-4 * rig.gravity_m_s2 / m.r_m);  // the link barely accelerates
-  angular_acceleration_from_tangential(rig, mount, {angle, speed, accel}, dc, alpha);
+  const std::vector<LinkMotion> track = nominal_link_track(rig, SensedLink::coupler, {angle, speed, accel});
+  angular_acceleration_from_tangential(rig, mount, track, dc, alpha);
   for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(alpha[i], truth[i], 1e-11);
   thesis_angular_acceleration(rig, SensedLink::coupler, -1, w2, angle, dc, alpha);
   for (std::size_t i = 0; i < n; ++i) max_thesis_err = std::max(max_thesis_err, std::abs(alpha[i] - truth[i]));
@@ -174,10 +177,10 @@ TEST(Conversion, SlowlySwingingLinkGravityTermAcAndDcCoupled) {
   double max_ac = 0;
   for (std::size_t i = n / 10; i < n; ++i) max_ac = std::max(max_ac, std::abs(ac[i]));
   EXPECT_LT(max_ac, 0.02 * rig.gravity_m_s2);  // the piezo output is nearly flat
-  restore_dc_coupled_reading(rig, mount, {angle, speed, accel}, fs, ac, restored);
+  restore_dc_coupled_reading(rig, mount, track, fs, ac, restored);
   // The sensor started at rest (output 0 at sample 0), so the restored channel
   // matches the DC reading up to a constant; the model mean fixes it.
-  angular_acceleration_from_tangential(rig, mount, {angle, speed, accel}, restored, alpha);
+  angular_acceleration_from_tangential(rig, mount, track, restored, alpha);
   for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(alpha[i], truth[i], 1e-9);
 }
 
@@ -217,9 +220,11 @@ TEST(Conversion, BadMountsAreInputErrorsNamingTheChannel) {
   m.distance_m = 0.3;
   m.axis = SensorAxis::normal;
   std::vector<double> x(10, 0.0), y(10), shorter(9, 0.0);
-  EXPECT_THROW(angular_acceleration_from_tangential(rig, m, {x, x, x}, x, y), InputError);
+  const std::vector<LinkMotion> track = nominal_link_track(rig, SensedLink::coupler, {x, x, x});
+  EXPECT_THROW(angular_acceleration_from_tangential(rig, m, track, x, y), InputError);
   m.axis = SensorAxis::tangential;
-  EXPECT_THROW(angular_acceleration_from_tangential(rig, m, {x, shorter, x}, x, y), InputError);
+  EXPECT_THROW(nominal_link_track(rig, SensedLink::coupler, {x, shorter, x}), InputError);
+  EXPECT_THROW(angular_acceleration_from_tangential(rig, m, track, shorter, y), InputError);
 }
 
 }  // namespace
