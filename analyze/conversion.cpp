@@ -9,22 +9,52 @@
 
 namespace fourbar {
 
-LinkMotion nominal_link_motion(const Rig& rig, SensedLink link, const CrankState& crank) {
-  const NominalMotion m = solve_motion(rig, crank);
+namespace {
+
+LinkMotion link_part(const Rig& rig, SensedLink link, const NominalMotion& m) {
   LinkMotion out;
   if (link == SensedLink::coupler) {
     // Crank pin: a_A = l2(α2·n2 − ω2²·u2).
-    const double l2 = rig.crank.length_m, w2 = crank.speed_rad_s;
+    const double l2 = rig.crank.length_m, w2 = m.crank.speed_rad_s;
     out.u = m.pose.u3;
     out.omega_rad_s = m.omega3_rad_s;
     out.alpha_rad_s2 = m.alpha3_rad_s2;
-    out.joint_accel_m_s2 = l2 * (crank.accel_rad_s2 * m.pose.u2.perp() - w2 * w2 * m.pose.u2);
+    out.joint_accel_m_s2 = l2 * (m.crank.accel_rad_s2 * m.pose.u2.perp() - w2 * w2 * m.pose.u2);
   } else {
     out.u = m.pose.u4;
     out.omega_rad_s = m.omega4_rad_s;
     out.alpha_rad_s2 = m.alpha4_rad_s2;
   }
   return out;
+}
+
+void check_track(const CrankTrack& crank) {
+  const std::size_t n = crank.size();
+  if (crank.speed_rad_s.size() != n || crank.accel_rad_s2.size() != n) {
+    std::ostringstream os;
+    os << "crank track: " << n << " angles, " << crank.speed_rad_s.size() << " speeds, " << crank.accel_rad_s2.size()
+       << " accelerations; give one crank state per sample";
+    throw InputError(os.str());
+  }
+}
+
+}  // namespace
+
+LinkMotion nominal_link_motion(const Rig& rig, SensedLink link, const CrankState& crank) {
+  return link_part(rig, link, solve_motion(rig, crank));
+}
+
+NominalTracks nominal_link_tracks(const Rig& rig, const CrankTrack& crank) {
+  check_track(crank);
+  NominalTracks t;
+  t.coupler.resize(crank.size());
+  t.rocker.resize(crank.size());
+  for (std::size_t i = 0; i < crank.size(); ++i) {
+    const NominalMotion m = solve_motion(rig, {crank.angle_rad[i], crank.speed_rad_s[i], crank.accel_rad_s2[i]});
+    t.coupler[i] = link_part(rig, SensedLink::coupler, m);
+    t.rocker[i] = link_part(rig, SensedLink::rocker, m);
+  }
+  return t;
 }
 
 double sensor_reading(const Rig& rig, const ResolvedMount& mount, const LinkMotion& k) {
@@ -57,13 +87,8 @@ double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mo
 }
 
 std::vector<LinkMotion> nominal_link_track(const Rig& rig, SensedLink link, const CrankTrack& crank) {
+  check_track(crank);
   const std::size_t n = crank.size();
-  if (crank.speed_rad_s.size() != n || crank.accel_rad_s2.size() != n) {
-    std::ostringstream os;
-    os << "crank track: " << n << " angles, " << crank.speed_rad_s.size() << " speeds, " << crank.accel_rad_s2.size()
-       << " accelerations; give one crank state per sample";
-    throw InputError(os.str());
-  }
   std::vector<LinkMotion> track(n);
   for (std::size_t i = 0; i < n; ++i)
     track[i] = nominal_link_motion(rig, link, {crank.angle_rad[i], crank.speed_rad_s[i], crank.accel_rad_s2[i]});

@@ -59,6 +59,12 @@ LinkMotion nominal_link_motion(const Rig& rig, SensedLink link, const CrankState
 /// track's spans differ in length.
 std::vector<LinkMotion> nominal_link_track(const Rig& rig, SensedLink link, const CrankTrack& crank);
 
+/// Both links' tracks in one pass (one nominal solution per sample).
+struct NominalTracks {
+  std::vector<LinkMotion> coupler, rocker;
+};
+NominalTracks nominal_link_tracks(const Rig& rig, const CrankTrack& crank);
+
 /// Forward model: the reading (m/s², DC-coupled) of the sensor for a link
 /// motion (any ω, α; e.g. the nominal one, or a measured/simulated one).
 double sensor_reading(const Rig& rig, const ResolvedMount& mount, const LinkMotion& motion);

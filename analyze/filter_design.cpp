@@ -30,12 +30,25 @@ void check_corner(const char* key, double f, double nyquist) {
 bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
 bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
 
-// Integral over f in [0, b] of the ideal impulse response: 2b/fs·sinc(2b·n/fs).
-double lowpass_tap(double b_hz, double fs, double n) {
-  const double x = 2.0 * b_hz / fs;
-  if (n == 0) return x;
-  const double arg = units::kPi * x * n;
-  return std::sin(arg) / (units::kPi * n);
+// Σ over the band edges of ±sin(2π·f_e·i/fs) for i = 0 … m (the ideal
+// kernel is that divided by π·i): each edge's sine by a rotation recurrence,
+// re-seeded from std::sin/cos every 64 taps so the rounding cannot grow.
+std::vector<double> edge_sine_sums(const std::vector<Band>& bands, double fs, std::size_t m) {
+  std::vector<double> sum(m + 1, 0.0);
+  for (const Band& b : bands)
+    for (const auto& [f, sign] : {std::pair{b.hi_hz, 1.0}, std::pair{b.lo_hz, -1.0}}) {
+      const double step = units::kTwoPi * f / fs;
+      const double cs = std::cos(step), sn = std::sin(step);
+      double c = 1, s = 0;
+      for (std::size_t i = 0; i <= m; ++i) {
+        if (i % 64 == 0) c = std::cos(step * i), s = std::sin(step * i);
+        sum[i] += sign * s;
+        const double c_next = c * cs - s * sn;
+        s = s * cs + c * sn;
+        c = c_next;
+      }
+    }
+  return sum;
 }
 
 }  // namespace
@@ -109,11 +122,13 @@ std::vector<double> design_kernel(const FilterSpec& s, double fs) {
   const std::vector<double> w = make_window(s.window, taps, WindowSymmetry::symmetric);
   const long m = static_cast<long>(taps / 2);
   std::vector<double> h(taps);
-  for (long i = 0; i <= m; ++i) {  // symmetric: h[−i] = h[i]
-    double v = 0;
-    for (const Band& b : bands) v += lowpass_tap(b.hi_hz, fs, i) - lowpass_tap(b.lo_hz, fs, i);
-    h[m + i] = h[m - i] = v * w[m + i];
-  }
+  // Ideal kernel of the bands: Σ [sin(2π·hi·i/fs) − sin(2π·lo·i/fs)]/(π·i),
+  // and Σ 2(hi − lo)/fs at i = 0; symmetric, h[−i] = h[i].
+  const std::vector<double> sines = edge_sine_sums(bands, fs, static_cast<std::size_t>(m));
+  double centre = 0;
+  for (const Band& b : bands) centre += 2.0 * (b.hi_hz - b.lo_hz) / fs;
+  h[m] = centre * w[m];
+  for (long i = 1; i <= m; ++i) h[m + i] = h[m - i] = sines[i] / (units::kPi * i) * w[m + i];
   return h;
 }
 

@@ -45,9 +45,8 @@ RecordAnalyzer::RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double f
 }
 
 const std::vector<LinkMotion>& RecordAnalyzer::track(SensedLink link) {
-  auto& t = tracks_[link == SensedLink::coupler ? 0 : 1];
-  if (!t) t = nominal_link_track(rig_, link, crank_);
-  return *t;
+  if (!tracks_) tracks_ = nominal_link_tracks(rig_, crank_);
+  return link == SensedLink::coupler ? tracks_->coupler : tracks_->rocker;
 }
 
 FftFilter& RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary) {

@@ -92,7 +92,7 @@ class RecordAnalyzer {
   double fs_;
   RevolutionResampler grid_;
   std::vector<double> speed_grid_;
-  std::optional<std::vector<LinkMotion>> tracks_[2];
+  std::optional<NominalTracks> tracks_;  // both links, made on first use
   struct CachedFilter {
     FilterSpec spec;
     Boundary boundary;

@@ -33,9 +33,11 @@ double value_at(const WindowSpec& w, double x) {
       return 0.5 * (1.0 + std::cos(units::kPi * (ax - flat) / a));
     }
     case WindowType::kaiser: {
+      // Double-precision evaluation (Boost promotes to long double by default).
+      using DoublePolicy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
       const double b = w.parameter;
-      return boost::math::cyl_bessel_i(0, b * std::sqrt(std::max(0.0, 1.0 - ax * ax))) /
-             boost::math::cyl_bessel_i(0, b);
+      return boost::math::cyl_bessel_i(0, b * std::sqrt(std::max(0.0, 1.0 - ax * ax)), DoublePolicy()) /
+             boost::math::cyl_bessel_i(0, b, DoublePolicy());
     }
   }
   return 1.0;
