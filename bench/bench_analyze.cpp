@@ -36,19 +36,10 @@ const Fixture& fixture() {
   static const std::unique_ptr<Fixture> f = [] {
     auto x = std::make_unique<Fixture>();
     x->rig.duration_s = record_seconds();
-    x->coupler_t.channel = "coupler_t";
-    x->coupler_t.distance_m = 0.020;
-    x->coupler_t.from = MeasuredFrom::far_joint;
-    x->coupler_t.offset_m = 0.012;
-    x->coupler_t.high_pass_corner_hz = 0.2;
-    x->coupler_n = x->coupler_t;
-    x->coupler_n.channel = "coupler_n";
-    x->coupler_n.axis = SensorAxis::normal;
-    x->rocker_t = x->coupler_t;
-    x->rocker_t.channel = "rocker_t";
-    x->rocker_t.link = SensedLink::rocker;
+    const testing::HousingMounts m = testing::housing_mounts();
+    x->coupler_t = m.coupler_t, x->coupler_n = m.coupler_n, x->rocker_t = m.rocker_t;
     x->rec = testing::make_recording(x->rig, {x->coupler_t, x->rocker_t, x->coupler_n});
-    x->band.filter = {BandType::bandpass, 2.9, 300, 60, 1.0, {WindowType::kaiser, 8.0}, 0.8};
+    x->band.filter = testing::band_pass_with_mains_comb();
     x->low = x->band;
     x->low.filter.band = BandType::lowpass;
     return x;

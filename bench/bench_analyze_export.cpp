@@ -46,22 +46,12 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   testing::SyntheticRig s;
   s.duration_s = argc > 2 ? std::atof(argv[2]) : 60.0;
-  AccelerometerMount ct;
-  ct.channel = "coupler_t";
-  ct.distance_m = 0.020;
-  ct.from = MeasuredFrom::far_joint;
-  ct.offset_m = 0.012;
-  ct.high_pass_corner_hz = 0.2;
-  AccelerometerMount rt = ct;
-  rt.channel = "rocker_t";
-  rt.link = SensedLink::rocker;
-  AccelerometerMount cn = ct;
-  cn.channel = "coupler_n";
-  cn.axis = SensorAxis::normal;
+  const testing::HousingMounts mounts = testing::housing_mounts();
+  const AccelerometerMount &ct = mounts.coupler_t, &rt = mounts.rocker_t, &cn = mounts.coupler_n;
   const testing::SyntheticRecording rec = testing::make_recording(s, {ct, rt, cn});
   const AngleGridSpec grid;
   ChannelOptions band;
-  band.filter = {BandType::bandpass, 2.9, 300, 60, 1.0, {WindowType::kaiser, 8.0}, 0.8};
+  band.filter = testing::band_pass_with_mains_comb();
   ChannelOptions low = band;
   low.filter.band = BandType::lowpass;
 

@@ -12,6 +12,7 @@
 
 #include "analyze/ac_coupling.hpp"
 #include "analyze/conversion.hpp"
+#include "analyze/filter_design.hpp"
 #include "common/units.hpp"
 
 namespace fourbar::testing {
@@ -104,6 +105,35 @@ inline SyntheticRecording make_recording(const SyntheticRig& s, const std::vecto
     rec.channels.push_back(std::move(ch));
   }
   return rec;
+}
+
+/// The sensors of the tests and benches: on the coupler–rocker bearing
+/// housing, 20 mm inboard of the joint and 12 mm off the link line, AC-coupled
+/// at 0.2 Hz: coupler tangential and normal, rocker tangential.
+struct HousingMounts {
+  AccelerometerMount coupler_t, coupler_n, rocker_t;
+};
+inline HousingMounts housing_mounts() {
+  HousingMounts m;
+  m.coupler_t.channel = "coupler_t";
+  m.coupler_t.distance_m = 0.020;
+  m.coupler_t.from = MeasuredFrom::far_joint;
+  m.coupler_t.offset_m = 0.012;
+  m.coupler_t.high_pass_corner_hz = 0.2;
+  m.coupler_n = m.coupler_t;
+  m.coupler_n.channel = "coupler_n";
+  m.coupler_n.axis = SensorAxis::normal;
+  m.rocker_t = m.coupler_t;
+  m.rocker_t.channel = "rocker_t";
+  m.rocker_t.link = SensedLink::rocker;
+  return m;
+}
+
+/// The filter of the tests and benches at 350 rpm: band-pass from half the
+/// crank frequency to 300 Hz, 60 Hz comb with 1 Hz notches, Kaiser β = 8,
+/// 0.8 Hz transition.
+inline FilterSpec band_pass_with_mains_comb() {
+  return {BandType::bandpass, 2.9, 300, 60, 1.0, {WindowType::kaiser, 8.0}, 0.8};
 }
 
 /// Nominal α and ω of `link` at crank angle `angle` of the synthetic motion.

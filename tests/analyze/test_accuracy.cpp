@@ -99,30 +99,17 @@ std::vector<Errors> run_case(SyntheticRig s, bool compare) {
   const double rev_s = units::kTwoPi / s.mean_speed_rad_s();
   s.duration_s = 51 * rev_s;
 
-  AccelerometerMount coupler;
-  coupler.channel = "coupler_t";
-  coupler.link = SensedLink::coupler;
-  coupler.distance_m = 0.020;  // 20 mm inboard from the pin B, on the bearing housing
-  coupler.from = MeasuredFrom::far_joint;
-  coupler.offset_m = 0.012;
+  // On the bearing housing, 20 mm inboard of the joint; the coupler sensor
+  // points along −n3, the rocker one sits on the other side of its link.
+  AccelerometerMount coupler = testing::housing_mounts().coupler_t;
   coupler.axis_sign = -1;
-  coupler.high_pass_corner_hz = 0.2;
-  AccelerometerMount rocker = coupler;
-  rocker.channel = "rocker_t";
-  rocker.link = SensedLink::rocker;
+  AccelerometerMount rocker = testing::housing_mounts().rocker_t;
   rocker.offset_m = -0.010;
-  rocker.axis_sign = 1;
   const testing::SyntheticRecording rec = testing::make_recording(s, {coupler, rocker});
 
   const AngleGridSpec grid;
   ChannelOptions opt;
-  opt.filter.band = BandType::bandpass;
-  opt.filter.low_hz = 0.5 * s.speed_rpm / 60.0;
-  opt.filter.high_hz = 300;
-  opt.filter.mains_hz = 60;
-  opt.filter.mains_width_hz = 1.0;
-  opt.filter.window = {WindowType::kaiser, 8.0};
-  opt.filter.transition_hz = 0.8;
+  opt.filter = testing::band_pass_with_mains_comb();
 
   std::printf("\n  SNR %.0f dB, hum %.0f %%: RMS error / RMS of truth, of the average over the revolutions and of\n"
               "  every revolution before averaging\n",
@@ -214,20 +201,13 @@ TEST(AnalyzeAccuracy, NormalChannelChecksTheIntegratedOmega) {
   SyntheticRig s;
   s.seed = 77;
   s.duration_s = 51 * units::kTwoPi / s.mean_speed_rad_s();
-  AccelerometerMount tangential;
-  tangential.channel = "coupler_t";
-  tangential.distance_m = 0.020;
-  tangential.from = MeasuredFrom::far_joint;
-  tangential.offset_m = 0.012;
-  tangential.high_pass_corner_hz = 0.2;
-  AccelerometerMount normal = tangential;
-  normal.channel = "coupler_n";
-  normal.axis = SensorAxis::normal;
+  const AccelerometerMount tangential = testing::housing_mounts().coupler_t;
+  AccelerometerMount normal = testing::housing_mounts().coupler_n;
   normal.high_pass_corner_hz = 0;
   const testing::SyntheticRecording rec = testing::make_recording(s, {tangential, normal});
 
   ChannelOptions opt;
-  opt.filter = {BandType::bandpass, 2.9, 300, 60, 1.0, {WindowType::kaiser, 8.0}, 0.8};
+  opt.filter = testing::band_pass_with_mains_comb();
   RecordAnalyzer analyzer(s.rig, rec.crank(), s.sample_rate_hz, AngleGridSpec{});
   const LinkAnalysis t = analyzer.tangential(tangential, rec.channels[0].recorded, opt);
   ChannelOptions low = opt;
