@@ -15,6 +15,7 @@ packages=(
   libsundials-dev         # CVODE with root finding (sim events)
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev        # bench/ programs
+  python3-scipy           # bench/compare_analyze_scipy.py (numpy/scipy reference of the analyze chain)
 )
 
 if [ "$(id -u)" -ne 0 ]; then

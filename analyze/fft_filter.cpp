@@ -1,0 +1,149 @@
+#include "analyze/fft_filter.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <sstream>
+
+#include "common/error.hpp"
+
+namespace fourbar {
+
+namespace {
+
+// Real response of a centred kernel h[−M..M] on an n-point DFT grid:
+// H_k = Σ h[i]·cos(2πki/n), computed by FFT of the kernel wrapped modulo n.
+std::vector<double> kernel_response(const std::vector<double>& kernel, RealFft& fft) {
+  const std::size_t n = fft.size(), m = kernel.size() / 2;
+  auto t = fft.time();
+  std::fill(t.begin(), t.end(), 0.0);
+  for (std::size_t i = 0; i < kernel.size(); ++i) t[(i + n - m) % n] += kernel[i];
+  fft.forward();
+  std::vector<double> h(fft.bins());
+  for (std::size_t k = 0; k < h.size(); ++k) h[k] = fft.spectrum()[k].real();  // imaginary part is rounding
+  return h;
+}
+
+std::size_t transform_size(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary) {
+  validate_filter(spec, fs);
+  if (length == 0) throw InputError("filter: the record is empty");
+  const std::size_t period = boundary == Boundary::reflect ? 2 * length : length;
+  if (spec.transition_hz == 0) {
+    if (boundary == Boundary::zero)
+      throw InputError(
+          "filter: the ideal (bin-wise) filter acts on the record as one period; for zero boundaries give a "
+          "transition width (transition_hz > 0)");
+    return period;
+  }
+  const std::size_t half = kernel_taps(spec, fs) / 2;
+  if (boundary == Boundary::zero) return fast_fft_size(length + half);
+  if (2 * half + 1 > period) {
+    std::ostringstream os;
+    os << "filter: the kernel (" << 2 * half + 1 << " taps for a " << spec.transition_hz
+       << " Hz transition) is longer than the record (" << length
+       << " samples); widen the transition or use zero boundaries / overlap-save";
+    throw InputError(os.str());
+  }
+  return period;
+}
+
+}  // namespace
+
+FftFilter::FftFilter(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary)
+    : length_(length), reflect_(boundary == Boundary::reflect), fft_(transform_size(spec, fs, length, boundary)) {
+  const std::size_t n = fft_.size();
+  if (spec.transition_hz == 0) {
+    const std::vector<Band> bands = pass_bands(spec, fs);
+    response_.resize(fft_.bins());
+    for (std::size_t k = 0; k < response_.size(); ++k) response_[k] = passes(bands, fs * k / n) ? 1.0 : 0.0;
+  } else {
+    response_ = kernel_response(design_kernel(spec, fs), fft_);
+  }
+}
+
+void FftFilter::apply(std::span<const double> in, std::span<double> out) {
+  assert(in.size() == length_ && out.size() == length_);
+  const std::size_t n = fft_.size();
+  auto t = fft_.time();
+  std::copy(in.begin(), in.end(), t.begin());
+  if (reflect_) std::reverse_copy(in.begin(), in.end(), t.begin() + length_);
+  else std::fill(t.begin() + length_, t.end(), 0.0);
+  fft_.forward();
+  auto s = fft_.spectrum();
+  const double scale = 1.0 / n;
+  for (std::size_t k = 0; k < s.size(); ++k) s[k] *= response_[k] * scale;
+  fft_.inverse();
+  std::copy(t.begin(), t.begin() + length_, out.begin());
+}
+
+namespace {
+std::size_t overlap_block(const FilterSpec& spec, double fs, std::size_t block) {
+  validate_filter(spec, fs);
+  if (spec.transition_hz == 0)
+    throw InputError("filter: overlap-save needs a windowed kernel; give a transition width (transition_hz > 0)");
+  const std::size_t taps = kernel_taps(spec, fs);
+  if (block == 0) {
+    block = 1024;
+    while (block < 4 * (taps - 1)) block *= 2;
+  }
+  if (block < taps) {
+    std::ostringstream os;
+    os << "filter: overlap-save block " << block << " is shorter than the kernel (" << taps << " taps)";
+    throw InputError(os.str());
+  }
+  return block;
+}
+}  // namespace
+
+OverlapSaveFilter::OverlapSaveFilter(const FilterSpec& spec, double fs, std::size_t fft_block)
+    : half_(0), fft_(overlap_block(spec, fs, fft_block)) {
+  const std::vector<double> kernel = design_kernel(spec, fs);
+  half_ = kernel.size() / 2;
+  response_ = kernel_response(kernel, fft_);
+  window_.assign(half_, 0.0);  // the record is preceded by zeros
+  window_.reserve(fft_.size());
+}
+
+// Filters the window (zero-filled to the block length); its outputs at
+// window positions half_ … are the record outputs emitted_, emitted_ + 1, …
+void OverlapSaveFilter::run_block(std::size_t emit, std::vector<double>& out) {
+  const std::size_t n = fft_.size();
+  auto t = fft_.time();
+  std::copy(window_.begin(), window_.end(), t.begin());
+  std::fill(t.begin() + window_.size(), t.end(), 0.0);
+  fft_.forward();
+  auto s = fft_.spectrum();
+  const double scale = 1.0 / n;
+  for (std::size_t k = 0; k < s.size(); ++k) s[k] *= response_[k] * scale;
+  fft_.inverse();
+  out.insert(out.end(), t.begin() + half_, t.begin() + half_ + emit);
+  emitted_ += emit;
+}
+
+void OverlapSaveFilter::push(std::span<const double> in, std::vector<double>& out) {
+  const std::size_t n = fft_.size(), hop = n - 2 * half_;
+  received_ += in.size();
+  while (!in.empty()) {
+    const std::size_t take = std::min(in.size(), n - window_.size());
+    window_.insert(window_.end(), in.begin(), in.begin() + take);
+    in = in.subspan(take);
+    if (window_.size() == n) {
+      run_block(hop, out);
+      window_.erase(window_.begin(), window_.begin() + hop);  // keep the last 2M samples
+    }
+  }
+}
+
+void OverlapSaveFilter::finish(std::vector<double>& out) {
+  const std::size_t n = fft_.size(), hop = n - 2 * half_;
+  while (emitted_ < received_) {
+    // The window holds inputs for outputs emitted_ … ; beyond the record: zeros.
+    const std::size_t emit = std::min(hop, received_ - emitted_);
+    run_block(emit, out);
+    const std::size_t drop = std::min(hop, window_.size());
+    window_.erase(window_.begin(), window_.begin() + drop);
+  }
+  window_.assign(half_, 0.0);
+  received_ = emitted_ = 0;
+}
+
+}  // namespace fourbar

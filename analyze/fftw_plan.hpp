@@ -1,0 +1,44 @@
+#pragma once
+// A real-to-complex / complex-to-real FFTW plan pair for one transform
+// length, with its own aligned buffers: made once, executed many times.
+// FFTW's planner is not thread-safe; construction is serialised here.
+
+#include <fftw3.h>
+
+#include <complex>
+#include <cstddef>
+#include <span>
+
+namespace fourbar {
+
+class RealFft {
+ public:
+  /// `flags`: FFTW_ESTIMATE (default, instant) or FFTW_MEASURE (slower
+  /// planning, faster transforms for long runs).
+  explicit RealFft(std::size_t n, unsigned flags = FFTW_ESTIMATE);
+  ~RealFft();
+  RealFft(const RealFft&) = delete;
+  RealFft& operator=(const RealFft&) = delete;
+
+  std::size_t size() const { return n_; }
+  std::size_t bins() const { return n_ / 2 + 1; }
+  /// Time-domain buffer (n values).
+  std::span<double> time() { return {real_, n_}; }
+  /// Frequency-domain buffer (n/2 + 1 bins, bin k at k/n cycles per sample).
+  std::span<std::complex<double>> spectrum() { return {reinterpret_cast<std::complex<double>*>(spec_), bins()}; }
+  /// time → spectrum (unnormalised DFT).
+  void forward() { fftw_execute(forward_); }
+  /// spectrum → time, times n (unnormalised); overwrites the spectrum.
+  void inverse() { fftw_execute(inverse_); }
+
+ private:
+  std::size_t n_;
+  double* real_ = nullptr;
+  fftw_complex* spec_ = nullptr;
+  fftw_plan forward_ = nullptr, inverse_ = nullptr;
+};
+
+/// Smallest n' ≥ n whose factors are only 2, 3, 5 and 7 (fast FFTW sizes).
+std::size_t fast_fft_size(std::size_t n);
+
+}  // namespace fourbar

@@ -1,0 +1,99 @@
+#include "analyze/spectrum.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "analyze/fftw_plan.hpp"
+#include "common/error.hpp"
+#include "common/units.hpp"
+
+namespace fourbar {
+
+namespace {
+
+void check_rate(double fs) {
+  if (!(fs > 0) || !std::isfinite(fs)) {
+    std::ostringstream os;
+    os << "spectrum: sample rate " << fs << " Hz must be positive";
+    throw InputError(os.str());
+  }
+}
+
+std::vector<double> frequencies(std::size_t n, double fs) {
+  std::vector<double> f(n / 2 + 1);
+  for (std::size_t k = 0; k < f.size(); ++k) f[k] = fs * k / n;
+  return f;
+}
+
+}  // namespace
+
+Spectrum amplitude_spectrum(std::span<const double> x, double fs, const WindowSpec& window) {
+  check_rate(fs);
+  validate_window(window, "spectrum window");
+  if (x.size() < 2) throw InputError("spectrum: need at least 2 samples");
+  const std::size_t n = x.size();
+  const std::vector<double> w = make_window(window, n, WindowSymmetry::periodic);
+  const double gain = std::accumulate(w.begin(), w.end(), 0.0);  // coherent gain × n
+  RealFft fft(n);
+  auto t = fft.time();
+  for (std::size_t i = 0; i < n; ++i) t[i] = x[i] * w[i];
+  fft.forward();
+  Spectrum s{frequencies(n, fs), std::vector<double>(fft.bins())};
+  for (std::size_t k = 0; k < s.value.size(); ++k) {
+    const bool edge = k == 0 || (n % 2 == 0 && k == n / 2);  // DC and Nyquist have no mirror bin
+    s.value[k] = std::abs(fft.spectrum()[k]) * (edge ? 1.0 : 2.0) / gain;
+  }
+  return s;
+}
+
+Spectrum welch_psd(std::span<const double> x, double fs, const WelchOptions& o) {
+  check_rate(fs);
+  validate_window(o.window, "Welch window");
+  const std::size_t m = o.segment_length;
+  if (m < 2 || m > x.size()) {
+    std::ostringstream os;
+    os << "Welch: segment length " << m << " must be between 2 and the record length " << x.size();
+    throw InputError(os.str());
+  }
+  if (o.overlap >= m) {
+    std::ostringstream os;
+    os << "Welch: overlap " << o.overlap << " must be below the segment length " << m;
+    throw InputError(os.str());
+  }
+  const std::vector<double> w = make_window(o.window, m, WindowSymmetry::periodic);
+  double power = 0;
+  for (double v : w) power += v * v;
+  RealFft fft(m);
+  Spectrum s{frequencies(m, fs), std::vector<double>(fft.bins(), 0.0)};
+  const std::size_t step = m - o.overlap;
+  std::size_t segments = 0;
+  for (std::size_t at = 0; at + m <= x.size(); at += step, ++segments) {
+    const auto seg = x.subspan(at, m);
+    const double mean = std::accumulate(seg.begin(), seg.end(), 0.0) / m;
+    auto t = fft.time();
+    for (std::size_t i = 0; i < m; ++i) t[i] = (seg[i] - mean) * w[i];
+    fft.forward();
+    for (std::size_t k = 0; k < s.value.size(); ++k) s.value[k] += std::norm(fft.spectrum()[k]);
+  }
+  // One-sided density: |X|²/(fs·Σw²), doubled except at DC and Nyquist.
+  for (std::size_t k = 0; k < s.value.size(); ++k) {
+    const bool edge = k == 0 || (m % 2 == 0 && k == m / 2);
+    s.value[k] *= (edge ? 1.0 : 2.0) / (fs * power * segments);
+  }
+  return s;
+}
+
+std::vector<double> order_axis(std::span<const double> frequency_hz, double crank_speed_rad_s) {
+  const double f_crank = std::abs(crank_speed_rad_s) / units::kTwoPi;
+  if (!(f_crank > 0) || !std::isfinite(f_crank)) {
+    std::ostringstream os;
+    os << "order axis: crank speed " << crank_speed_rad_s << " rad/s must be non-zero";
+    throw InputError(os.str());
+  }
+  std::vector<double> o(frequency_hz.size());
+  for (std::size_t k = 0; k < o.size(); ++k) o[k] = frequency_hz[k] / f_crank;
+  return o;
+}
+
+}  // namespace fourbar

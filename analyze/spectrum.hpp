@@ -1,0 +1,43 @@
+#pragma once
+// Spectra of a uniformly sampled signal, one-sided, on a frequency axis and
+// an order axis (multiples of the crank frequency).
+//  - amplitude spectrum: one windowed FFT of the whole record, corrected for
+//    the window's coherent gain, so a sinusoid of amplitude A centred on a
+//    bin reads A (the thesis's power spectrum, Fig. 7.8, used the
+//    rectangular window);
+//  - Welch PSD: averaged modified periodograms of overlapping segments,
+//    density scaling (unit²/Hz) with the window's power, the mean of each
+//    segment removed; the definition of scipy.signal.welch(detrend='constant',
+//    scaling='density'), whose periodic windows it uses too.
+
+#include <span>
+#include <vector>
+
+#include "analyze/window.hpp"
+
+namespace fourbar {
+
+struct Spectrum {
+  std::vector<double> frequency_hz;
+  std::vector<double> value;  ///< amplitude (unit of the signal) or density (unit²/Hz)
+};
+
+/// Amplitude spectrum of the whole record. Throws InputError for fewer than
+/// 2 samples, a bad rate or window.
+Spectrum amplitude_spectrum(std::span<const double> x, double sample_rate_hz, const WindowSpec& window);
+
+struct WelchOptions {
+  std::size_t segment_length = 4096;
+  std::size_t overlap = 2048;  ///< samples shared by consecutive segments
+  WindowSpec window{WindowType::hann, 0};
+};
+
+/// Welch PSD. Throws InputError when the segment is shorter than 2 samples
+/// or longer than the record, the overlap is not below the segment length,
+/// or the window is bad.
+Spectrum welch_psd(std::span<const double> x, double sample_rate_hz, const WelchOptions& options);
+
+/// Order of each frequency: f / f_crank, with f_crank = |ω2|/2π.
+std::vector<double> order_axis(std::span<const double> frequency_hz, double crank_speed_rad_s);
+
+}  // namespace fourbar
