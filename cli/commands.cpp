@@ -8,6 +8,9 @@ std::span<const Command> commands() {
   static constexpr std::array table{
       Command{"sim", "simulate a scene (nominal mechanism) and write CSV + JSON", run_sim},
       Command{"rig", "check a rig file and report its class, assembly and transmission angles", run_rig},
+      Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
+      Command{"virtual-rig", "write the recording (and manifest, truth) the sensors would give for a scene",
+              run_virtual_rig},
   };
   return table;
 }
