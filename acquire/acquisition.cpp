@@ -1,6 +1,7 @@
 #include "acquire/acquisition.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <sstream>
@@ -79,6 +80,7 @@ struct RevolutionPlan {
   RevolutionCurve curve;
   double t_start = 0, t_end = 0;
   bool repaired = false;
+  std::int64_t first_frame = 0, last_frame = 0;  ///< frames its resampling needs
 };
 
 }  // namespace
@@ -138,6 +140,13 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
 
   Progress progress("acquire", 3 * info.frames, options.progress);
 
+  auto clock_start = std::chrono::steady_clock::now();
+  auto lap = [&](int pass) {
+    const auto now = std::chrono::steady_clock::now();
+    report.pass_seconds[static_cast<std::size_t>(pass)] = std::chrono::duration<double>(now - clock_start).count();
+    clock_start = now;
+  };
+
   // Pass 1: statistics, clipping, NaN, the pulse channel's levels.
   std::vector<Accumulator> acc(nacc);
   Accumulator pulse_acc;
@@ -162,6 +171,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
       histogram.add(v);
     }
   });
+  lap(0);
   for (const auto& a : acc) report.channel_stats.push_back(a.stats());
   report.pulse_stats = pulse_acc.stats();
 
@@ -197,6 +207,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
                    for (std::size_t f = 0; f < frames; ++f) volts[f] = block[f * nch + pulse_index] * manifest.full_scale_V;
                    detector.push(volts.data(), frames, 1);
                  });
+  lap(1);
   report.edges_debounced = detector.debounced();
   if (detector.edges().empty())
     throw InputError(info.file.string() + ": no crank pulses: " + pulse_label + " never crosses from " +
@@ -249,13 +260,13 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   // Pass 3: tag samples, resample revolutions.
   const double direction = manifest.crank_direction, offset = pulse.crank_offset_rad;
   auto frame_pos = [&](double t) { return (t - t0) * fs; };
-  auto first_needed = [&](const RevolutionPlan& r) {
-    return static_cast<std::int64_t>(std::floor(frame_pos(r.t_start))) - 1;
-  };
-  auto last_needed = [&](const RevolutionPlan& r) {
-    return std::min<std::int64_t>(static_cast<std::int64_t>(std::floor(frame_pos(r.t_end))) + 2,
-                                  static_cast<std::int64_t>(info.frames) - 1);
-  };
+  for (auto& r : plan) {
+    r.first_frame = static_cast<std::int64_t>(std::floor(frame_pos(r.t_start))) - 1;
+    r.last_frame = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor(frame_pos(r.t_end))) + 2,
+                                          static_cast<std::int64_t>(info.frames) - 1);
+  }
+  auto first_needed = [&](const RevolutionPlan& r) { return r.first_frame; };
+  auto last_needed = [&](const RevolutionPlan& r) { return r.last_frame; };
   std::vector<double> buffer;  // calibrated accelerometer frames from buffer_base on
   std::int64_t buffer_base = 0;
   std::deque<std::int64_t> clipped_frames;
@@ -275,7 +286,8 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     report.revolutions_clipped += rev.clipped;
     const auto n = static_cast<std::size_t>(n_grid);
     rev.crank_rad.resize(n), rev.time_s.resize(n), rev.omega2_rad_s.resize(n), rev.alpha2_rad_s2.resize(n);
-    rev.channels_m_s2.assign(nacc, std::vector<double>(n));
+    rev.channels_m_s2.resize(nacc);
+    for (auto& c : rev.channels_m_s2) c.resize(n);
     const auto buffered = static_cast<std::int64_t>(buffer.size() / std::max<std::size_t>(nacc, 1));
     for (std::size_t j = 0; j < n; ++j) {
       const double u = static_cast<double>(j) / static_cast<double>(n);
@@ -285,17 +297,20 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
       rev.omega2_rad_s[j] = direction * p.speed_rad_s;
       rev.alpha2_rad_s2[j] = direction * p.accel_rad_s2;
       if (nacc == 0) continue;
+      // 4-point Lagrange between the buffered samples around the grid time
+      // (indices clamped only at the ends of the recording).
       const double x = frame_pos(p.time_s);
       const auto i = static_cast<std::int64_t>(std::floor(x));
       const auto w = lagrange4(x - static_cast<double>(i));
-      for (std::size_t a = 0; a < nacc; ++a) {
-        double v = 0;
-        for (int m = 0; m < 4; ++m) {
-          const std::int64_t f = std::clamp<std::int64_t>(i - 1 + m - buffer_base, 0, buffered - 1);
-          v += w[static_cast<std::size_t>(m)] * buffer[static_cast<std::size_t>(f) * nacc + a];
-        }
-        rev.channels_m_s2[a][j] = v;
-      }
+      std::int64_t f[4];
+      for (int m = 0; m < 4; ++m) f[m] = i - 1 + m - buffer_base;
+      if (f[0] < 0 || f[3] >= buffered)
+        for (auto& k : f) k = std::clamp<std::int64_t>(k, 0, buffered - 1);
+      const double* b0 = buffer.data() + static_cast<std::size_t>(f[0]) * nacc;
+      const double* b1 = buffer.data() + static_cast<std::size_t>(f[1]) * nacc;
+      const double* b2 = buffer.data() + static_cast<std::size_t>(f[2]) * nacc;
+      const double* b3 = buffer.data() + static_cast<std::size_t>(f[3]) * nacc;
+      for (std::size_t a = 0; a < nacc; ++a) rev.channels_m_s2[a][j] = w[0] * b0[a] + w[1] * b1[a] + w[2] * b2[a] + w[3] * b3[a];
     }
     sink.on_revolution(rev);
   };
@@ -362,6 +377,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   });
   while (pending < plan.size()) resample(pending++);
   progress.finish();
+  lap(2);
 
   // Warnings.
   for (std::size_t a = 0; a < nacc; ++a)

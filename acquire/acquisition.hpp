@@ -14,6 +14,7 @@
 //                revolution resampled onto N crank angles (4-point Lagrange
 //                interpolation between samples) as soon as it is complete.
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -62,6 +63,7 @@ struct AcquisitionReport {
   SpeedStats speed;
   bool clipping_checked = false;             ///< false for float/text without adc_range_V
   std::vector<std::string> warnings;
+  std::array<double, 3> pass_seconds{};      ///< wall time of scan, pulses, samples passes
 };
 
 /// Runs the three passes. `manifest` must be bound to the reader's recording

@@ -13,15 +13,6 @@ struct CrankAngleModel::Spline {
   boost::math::interpolators::cardinal_cubic_b_spline<double> t_of_turns;
 };
 
-CrankPoint RevolutionCurve::at(double time_s) const {
-  const double tau = (time_s - t0) / h;
-  const auto& k = c;
-  const double p = k[0] + tau * (k[1] + tau * (k[2] + tau * (k[3] + tau * (k[4] + tau * k[5]))));
-  const double dp = k[1] + tau * (2 * k[2] + tau * (3 * k[3] + tau * (4 * k[4] + tau * 5 * k[5])));
-  const double ddp = 2 * k[2] + tau * (6 * k[3] + tau * (12 * k[4] + tau * 20 * k[5]));
-  return {time_s, phase0_rad + p, dp / h, ddp / (h * h)};
-}
-
 CrankPoint RevolutionCurve::at_fraction(double u) const {
   const auto& b = t_of_u;
   const double t = b[0] + u * (b[1] + u * (b[2] + u * b[3]));
@@ -81,6 +72,7 @@ RevolutionCurve CrankAngleModel::revolution(std::size_t k) const {
   RevolutionCurve r;
   r.t0 = a.time_s;
   r.h = b.time_s - a.time_s;
+  r.inv_h = 1.0 / r.h;
   r.phase0_rad = a.phase_rad;
   // Quintic Hermite: value, slope and curvature at both ends (in τ units).
   const double d = units::kTwoPi, d0 = a.speed_rad_s * r.h, d1 = b.speed_rad_s * r.h;

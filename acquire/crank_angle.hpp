@@ -41,12 +41,18 @@ struct CrankPoint {
 ///  • t(u) at the fraction u ∈ [0, 1] of the turn, the spline's own cubic on
 ///    this interval, for points at given crank angles.
 struct RevolutionCurve {
-  double t0 = 0, h = 0;
+  double t0 = 0, h = 0, inv_h = 0;
   double phase0_rad = 0;            ///< φ at t0 (2π·k)
   std::array<double, 6> c{};        ///< φ − phase0 = Σ c_i τ^i
   std::array<double, 4> t_of_u{};   ///< t − t0 = Σ b_i u^i
-  /// Crank motion at a time within the revolution.
-  CrankPoint at(double time_s) const;
+  /// Crank motion at a time within the revolution (inline: once per sample).
+  CrankPoint at(double time_s) const {
+    const double tau = (time_s - t0) * inv_h;
+    const double p = c[0] + tau * (c[1] + tau * (c[2] + tau * (c[3] + tau * (c[4] + tau * c[5]))));
+    const double dp = c[1] + tau * (2 * c[2] + tau * (3 * c[3] + tau * (4 * c[4] + tau * 5 * c[5])));
+    const double ddp = 2 * c[2] + tau * (6 * c[3] + tau * (12 * c[4] + tau * 20 * c[5]));
+    return {time_s, phase0_rad + p, dp * inv_h, ddp * inv_h * inv_h};
+  }
   /// Crank motion where the crank has turned the fraction u of this revolution.
   CrankPoint at_fraction(double u) const;
 };

@@ -15,6 +15,7 @@ void LevelHistogram::grow_down() {
   bins_.swap(merged);
   lo_ -= static_cast<double>(n) * width_;
   width_ *= 2;
+  update_range();
 }
 
 void LevelHistogram::grow_up() {
@@ -23,16 +24,23 @@ void LevelHistogram::grow_up() {
   for (std::size_t j = 0; j < half; ++j) merged[j] = bins_[2 * j] + bins_[2 * j + 1];
   bins_.swap(merged);
   width_ *= 2;
+  update_range();
+}
+
+void LevelHistogram::update_range() {
+  inv_width_ = 1.0 / width_;
+  hi_ = lo_ + width_ * static_cast<double>(bins_.size());
 }
 
 void LevelHistogram::add(double v) {
   if (count_ == 0) {
     width_ = 1e-9 * std::max(1.0, std::abs(v));
     lo_ = v - width_ * static_cast<double>(bins_.size() / 2);
+    update_range();
   }
   while (v < lo_) grow_down();
-  while (v >= lo_ + width_ * static_cast<double>(bins_.size())) grow_up();
-  auto i = static_cast<std::size_t>((v - lo_) / width_);
+  while (v >= hi_) grow_up();
+  auto i = static_cast<std::size_t>((v - lo_) * inv_width_);
   ++bins_[std::min(i, bins_.size() - 1)];
   ++count_;
 }

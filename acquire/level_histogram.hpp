@@ -31,9 +31,10 @@ class LevelHistogram {
  private:
   void grow_down();
   void grow_up();
+  void update_range();
   double quantile(std::size_t from, std::size_t to, std::uint64_t n, double q) const;
   std::vector<std::uint64_t> bins_;
-  double lo_ = 0, width_ = 0;
+  double lo_ = 0, width_ = 0, inv_width_ = 0, hi_ = 0;
   std::uint64_t count_ = 0;
 };
 
