@@ -209,20 +209,22 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
                  });
   lap(1);
   report.edges_debounced = detector.debounced();
-  if (detector.edges().empty())
+  report.edge_level_V = detector.mid_level();
+  const std::vector<double> edges = detector.edges();
+  if (edges.empty())
     throw InputError(info.file.string() + ": no crank pulses: " + pulse_label + " never crosses from " +
                      fmt(report.thresholds.low) + " V to " + fmt(report.thresholds.high) + " V (" +
                      (pulse.polarity == PulsePolarity::rising ? "rising" : "falling") +
                      " edges); check the channel, its polarity and thresholds in " + manifest.file.string());
 
   // The pulse train and the crank motion through it.
-  report.pulses = clean_pulse_train(detector.edges(), options.pulses);
+  report.pulses = clean_pulse_train(edges, options.pulses);
   const PulseTrain& train = report.pulses;
   report.revolutions = train.revolutions();
   if (report.revolutions < 2)
     throw InputError(info.file.string() + ": " + std::to_string(report.revolutions) +
                      " complete revolution" + (report.revolutions == 1 ? "" : "s") + " between the " +
-                     std::to_string(detector.edges().size()) + " crank pulse edges of " + pulse_label +
+                     std::to_string(edges.size()) + " crank pulse edges of " + pulse_label +
                      "; need at least 2: record longer or check the pulse channel");
   std::vector<CrankAngleModel> models;
   std::vector<RevolutionPlan> plan;

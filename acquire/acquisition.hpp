@@ -52,6 +52,7 @@ struct AcquisitionReport {
   std::string pulse_channel;                 ///< its name
   ChannelStats pulse_stats;                  ///< volts
   PulseThresholds thresholds;                ///< as used
+  double edge_level_V = 0;                   ///< mid-level at which edge times are taken (refined)
   std::size_t edges_debounced = 0;
   PulseTrain pulses;
   int samples_per_revolution = 0;            ///< N

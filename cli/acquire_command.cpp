@@ -177,6 +177,7 @@ int run_acquire(const Invocation& inv) {
   for (const auto& s : tr.segments) kept += s.size();
   j["pulses"] = {{"channel", rep.pulse_channel},
                  {"levels_V", {{"bottom", th.bottom_level}, {"top", th.top_level}, {"noise", th.noise}}},
+                 {"edge_level_V", rep.edge_level_V},
                  {"thresholds_V", {{"low", th.low}, {"high", th.high}, {"automatic", th.automatic}}},
                  {"edges_detected", tr.edges},
                  {"edges_debounced", rep.edges_debounced},

@@ -65,6 +65,19 @@ TEST(EdgeDetector, SubSampleTimesOnLinearRamps) {
   for (std::size_t k = 0; k < leads.size(); ++k) EXPECT_NEAR(f.edges()[k], (leads[k] + 40) / fs, 1e-9);
 }
 
+// The histogram's levels are only as good as its bins; the detector refines
+// them from the samples, so edge times do not inherit the bin error.
+TEST(EdgeDetector, RefinesTheLevelsBeforeTimingEdges) {
+  const std::vector<double> leads{300.37, 1300.81, 2300.05};
+  const auto x = pulse_signal(leads, 50, 5.0, 3000);
+  PulseThresholds rough{0.02, 4.96, 1.7, 3.3, 0.0, true};  // bottom and top off by 20 and 40 mV
+  EdgeDetector d(rough, PulsePolarity::rising, 1, 0, 0);
+  d.push(x.data(), x.size(), 1);
+  EXPECT_NEAR(d.mid_level(), 2.5, 1e-12);
+  ASSERT_EQ(d.edges().size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(d.edges()[k], leads[k], 1e-9);
+}
+
 TEST(EdgeDetector, HysteresisIgnoresNoiseAndEchoesBelowTheBand) {
   std::vector<double> leads{500.2, 1500.7, 2500.1};
   auto x = pulse_signal(leads, 30, 1.0, 3200);
