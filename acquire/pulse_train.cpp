@@ -25,6 +25,24 @@ double median(std::vector<double> v) {
   return *mid;
 }
 
+/// The next period from the recent ones: least-squares line through them,
+/// extrapolated one step; their median if there are too few or the line
+/// strays more than 30 % from the last period (an outlier among them).
+double predict_period(const std::deque<double>& recent) {
+  const double med = median({recent.begin(), recent.end()});
+  const std::size_t n = recent.size();
+  if (n < 3) return med;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = static_cast<double>(i);
+    sx += x, sy += recent[i], sxx += x * x, sxy += x * recent[i];
+  }
+  const double dn = static_cast<double>(n);
+  const double b = (dn * sxy - sx * sy) / (dn * sxx - sx * sx), a = (sy - b * sx) / dn;
+  const double next = a + b * dn;
+  return std::abs(next / recent.back() - 1) < 0.3 ? next : med;
+}
+
 /// Lagrange interpolation of time against pulse number through `known`.
 double interpolate_time(const std::vector<std::pair<double, double>>& known, double k) {
   double t = 0;
@@ -132,10 +150,11 @@ PulseTrain clean_pulse_train(std::span<const double> e, const PulseTrainOptions&
       for (int m = 1; m < k_found; ++m) segment.push_back({std::nan(""), true});
       segment.push_back({e[chosen], false});
       i = chosen + 1;
-      // Track the period: median of the last eight (per-revolution) periods.
+      // Track the period: the trend of the last six (per-revolution) periods
+      // extrapolated one step, so that a run-up or coast-down is followed.
       recent.push_back(interval / k_found);
-      if (recent.size() > 8) recent.pop_front();
-      period = median({recent.begin(), recent.end()});
+      if (recent.size() > 6) recent.pop_front();
+      period = predict_period(recent);
       if (k_found == 1) normal_periods.push_back(interval);
     }
 

@@ -3,7 +3,8 @@
 // the sequence of periods (robust to what trips simple tachometer readers:
 // noise, voltage echoes, doubled sync marks, dropped pulses).
 //
-// The period P is tracked as the median of the last normal periods, started
+// The period P is predicted from the trend of the last periods (a line
+// through the last six, extrapolated: follows run-up and coast-down), started
 // from the spacing that most edge pairs agree on. Walking forward from each
 // accepted pulse:
 //   • an edge within (1 ± tolerance)·P of it is the next pulse; of several,

@@ -306,6 +306,21 @@ TEST(AcquireRoundTrip, MissingAndEchoPulsesAreRepairedAndReported) {
   EXPECT_LT(units::rad_to_deg(rms(err)), 0.02);
 }
 
+// A doubled sync mark: a second pulse 8 ms after every pulse (a second bolt
+// head, or an echo on the cable). The first of each pair is kept.
+TEST(AcquireRoundTrip, DoubledSyncPulsesKeepTheFirst) {
+  VirtualSetup v;
+  v.spec.revolutions = 10;
+  for (long long k = 0; k < 12; ++k) v.spec.pulse.echo.push_back(k);
+  v.spec.pulse.echo_delay_s = 0.008;
+  const VirtualRigResult vr = v.write("doubled.wav", false);
+  const Acquired run = run_acquire(vr.recording);
+  EXPECT_EQ(run.report.pulses.edges, 2 * vr.pulse_times_s.size());
+  EXPECT_EQ(run.report.pulses.removed_s.size(), vr.pulse_times_s.size());
+  EXPECT_EQ(run.report.revolutions, vr.pulse_times_s.size() - 1);
+  EXPECT_LT(rms(pulse_errors(pulse_times(run.report), vr.pulse_times_s)) * v.spec.sample_rate_hz, 1e-3);
+}
+
 // A tacho with noise of 12 % of its swing: a plain threshold at mid-level
 // counts extra pulses at the edges; the automatic hysteresis counts each once.
 TEST(AcquireRoundTrip, NoisyTachoCountsEveryPulseOnce) {

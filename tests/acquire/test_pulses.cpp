@@ -169,6 +169,23 @@ TEST(PulseTrain, UnexplainedIntervalCutsTheTrain) {
   EXPECT_EQ(p.revolutions(), 38u);
 }
 
+// A run-up: the period shrinks by 8 % per revolution (100 → 350 rpm in 16
+// turns), with a pulse missing on the way; the tracker follows.
+TEST(PulseTrain, FollowsARunUp) {
+  std::vector<double> truth{0.1};
+  double period = 0.6;
+  while (period > 0.172) truth.push_back(truth.back() + period), period *= 0.92;
+  for (int k = 0; k < 20; ++k) truth.push_back(truth.back() + 0.1714);
+  std::vector<double> t = truth;
+  t.erase(t.begin() + 25);
+  const PulseTrain p = clean_pulse_train(t);
+  ASSERT_EQ(p.segments.size(), 1u);
+  EXPECT_EQ(p.segments[0].size(), truth.size());
+  EXPECT_TRUE(p.removed_s.empty());
+  ASSERT_EQ(p.inserted_s.size(), 1u);
+  EXPECT_NEAR(p.inserted_s[0], truth[25], 1e-3);
+}
+
 TEST(PulseTrain, DominantPeriod) {
   EXPECT_NEAR(dominant_period(regular(30, 0.1)), 0.1, 0.002);
   EXPECT_EQ(dominant_period(std::vector<double>{1.0}), 0.0);
