@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <sstream>
 
 #include "acquire/crank_angle.hpp"
 #include "acquire/edge_detector.hpp"
 #include "acquire/progress.hpp"
+#include "acquire/revolution_builder.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 
@@ -67,21 +67,6 @@ void for_each_block(Reader& reader, std::size_t block_frames, Progress& progress
     throw InputError(reader.info().file.string() + ": the recording ended at frame " + std::to_string(first) +
                      " but announced " + std::to_string(reader.info().frames) + " (truncated); copy it again");
 }
-
-/// 4-point Lagrange weights at fraction f ∈ [0, 1) for samples −1, 0, 1, 2.
-std::array<double, 4> lagrange4(double f) {
-  return {-f * (f - 1) * (f - 2) / 6, (f + 1) * (f - 1) * (f - 2) / 2, -(f + 1) * f * (f - 2) / 2,
-          (f + 1) * f * (f - 1) / 6};
-}
-
-/// One kept revolution, in time order.
-struct RevolutionPlan {
-  std::size_t segment = 0;
-  RevolutionCurve curve;
-  double t_start = 0, t_end = 0;
-  bool repaired = false;
-  std::int64_t first_frame = 0, last_frame = 0;  ///< frames its resampling needs
-};
 
 }  // namespace
 
@@ -260,124 +245,25 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   }
 
   // Pass 3: tag samples, resample revolutions.
-  const double direction = manifest.crank_direction, offset = pulse.crank_offset_rad;
-  auto frame_pos = [&](double t) { return (t - t0) * fs; };
-  for (auto& r : plan) {
-    r.first_frame = static_cast<std::int64_t>(std::floor(frame_pos(r.t_start))) - 1;
-    r.last_frame = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor(frame_pos(r.t_end))) + 2,
-                                          static_cast<std::int64_t>(info.frames) - 1);
-  }
-  auto first_needed = [&](const RevolutionPlan& r) { return r.first_frame; };
-  auto last_needed = [&](const RevolutionPlan& r) { return r.last_frame; };
-  std::vector<double> buffer;  // calibrated accelerometer frames from buffer_base on
-  std::int64_t buffer_base = 0;
-  std::deque<std::int64_t> clipped_frames;
-  std::size_t pending = 0, current = 0;
-  Revolution rev;
-
-  auto resample = [&](std::size_t r_index) {
-    const RevolutionPlan& r = plan[r_index];
-    rev.number = r_index;
-    rev.segment = r.segment;
-    rev.start_time_s = r.t_start;
-    rev.period_s = r.t_end - r.t_start;
-    rev.repaired = r.repaired;
-    const std::int64_t lo = first_needed(r), hi = last_needed(r);
-    rev.clipped = std::any_of(clipped_frames.begin(), clipped_frames.end(),
-                              [&](std::int64_t f) { return f >= lo && f <= hi; });
-    report.revolutions_clipped += rev.clipped;
-    const auto n = static_cast<std::size_t>(n_grid);
-    rev.crank_rad.resize(n), rev.time_s.resize(n), rev.omega2_rad_s.resize(n), rev.alpha2_rad_s2.resize(n);
-    rev.channels_m_s2.resize(nacc);
-    for (auto& c : rev.channels_m_s2) c.resize(n);
-    const auto buffered = static_cast<std::int64_t>(buffer.size() / std::max<std::size_t>(nacc, 1));
-    for (std::size_t j = 0; j < n; ++j) {
-      const double u = static_cast<double>(j) / static_cast<double>(n);
-      const CrankPoint p = r.curve.at_fraction(u);
-      rev.crank_rad[j] = offset + direction * units::kTwoPi * u;
-      rev.time_s[j] = p.time_s;
-      rev.omega2_rad_s[j] = direction * p.speed_rad_s;
-      rev.alpha2_rad_s2[j] = direction * p.accel_rad_s2;
-      if (nacc == 0) continue;
-      // 4-point Lagrange between the buffered samples around the grid time
-      // (indices clamped only at the ends of the recording).
-      const double x = frame_pos(p.time_s);
-      const auto i = static_cast<std::int64_t>(std::floor(x));
-      const auto w = lagrange4(x - static_cast<double>(i));
-      std::int64_t f[4];
-      for (int m = 0; m < 4; ++m) f[m] = i - 1 + m - buffer_base;
-      if (f[0] < 0 || f[3] >= buffered)
-        for (auto& k : f) k = std::clamp<std::int64_t>(k, 0, buffered - 1);
-      const double* b0 = buffer.data() + static_cast<std::size_t>(f[0]) * nacc;
-      const double* b1 = buffer.data() + static_cast<std::size_t>(f[1]) * nacc;
-      const double* b2 = buffer.data() + static_cast<std::size_t>(f[2]) * nacc;
-      const double* b3 = buffer.data() + static_cast<std::size_t>(f[3]) * nacc;
-      for (std::size_t a = 0; a < nacc; ++a) rev.channels_m_s2[a][j] = w[0] * b0[a] + w[1] * b1[a] + w[2] * b2[a] + w[3] * b3[a];
-    }
-    sink.on_revolution(rev);
-  };
-  auto trim_buffer = [&]() {
-    if (pending >= plan.size()) {
-      buffer.clear();
-      return;
-    }
-    const std::int64_t keep_from = std::max<std::int64_t>(first_needed(plan[pending]), 0);
-    if (keep_from > buffer_base) {
-      const auto drop = std::min<std::size_t>(static_cast<std::size_t>(keep_from - buffer_base) * nacc, buffer.size());
-      buffer.erase(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(drop));
-      buffer_base = keep_from;
-    }
-    while (!clipped_frames.empty() && clipped_frames.front() < keep_from) clipped_frames.pop_front();
-  };
-  if (!plan.empty()) buffer_base = std::max<std::int64_t>(first_needed(plan[0]), 0);
-
-  // Per-block sample output.
-  std::vector<double> s_time, s_crank, s_omega, s_alpha;
-  std::vector<std::int64_t> s_rev;
-  std::vector<std::vector<double>> s_ch(nacc);
+  RevolutionBuilder builder(std::move(plan),
+                            {n_grid, manifest.crank_direction, pulse.crank_offset_rad, fs, t0, info.frames}, nacc, sink);
+  std::vector<double> calibrated(nacc);
   progress.set_label("acquire: angles ");
   for_each_block(reader, block_frames, progress, 2 * info.frames, [&](std::span<const double> block,
                                                                       std::size_t frames, std::uint64_t first) {
-    s_time.clear(), s_crank.clear(), s_omega.clear(), s_alpha.clear(), s_rev.clear();
-    for (auto& c : s_ch) c.clear();
     for (std::size_t f = 0; f < frames; ++f) {
-      const auto n = static_cast<std::int64_t>(first + f);
-      const double t = t0 + static_cast<double>(n) / fs;
       const double* frame = block.data() + f * nch;
-      // Buffer what the pending revolutions need.
-      if (pending < plan.size() && n >= buffer_base) {
-        bool clipped = false;
-        for (std::size_t a = 0; a < nacc; ++a) {
-          buffer.push_back(frame[cal[a].index] * cal[a].scale);
-          clipped |= is_clipped(frame[cal[a].index]);
-        }
-        if (clipped) clipped_frames.push_back(n);
+      bool clipped = false;
+      for (std::size_t a = 0; a < nacc; ++a) {
+        calibrated[a] = frame[cal[a].index] * cal[a].scale;
+        clipped |= is_clipped(frame[cal[a].index]);
       }
-      // Tag the sample with its revolution and crank motion.
-      while (current < plan.size() && t >= plan[current].t_end) ++current;
-      if (current < plan.size() && t >= plan[current].t_start) {
-        const RevolutionPlan& r = plan[current];
-        const CrankPoint p = r.curve.at(t);
-        s_time.push_back(t);
-        s_crank.push_back(offset + direction * (p.phase_rad - r.curve.phase0_rad));
-        s_omega.push_back(direction * p.speed_rad_s);
-        s_alpha.push_back(direction * p.accel_rad_s2);
-        s_rev.push_back(static_cast<std::int64_t>(current));
-        for (std::size_t a = 0; a < nacc; ++a) s_ch[a].push_back(frame[cal[a].index] * cal[a].scale);
-      }
-      // Resample every revolution whose samples are all in.
-      while (pending < plan.size() && n >= last_needed(plan[pending])) {
-        resample(pending++);
-        trim_buffer();
-      }
+      builder.push(static_cast<std::int64_t>(first + f), calibrated.data(), clipped);
     }
-    if (!s_time.empty()) {
-      SampleBlock sb{s_time, s_crank, s_omega, s_alpha, s_rev, {}};
-      for (const auto& c : s_ch) sb.channels_m_s2.emplace_back(c);
-      sink.on_samples(sb);
-    }
+    builder.flush_samples();
   });
-  while (pending < plan.size()) resample(pending++);
+  builder.finish();
+  report.revolutions_clipped = builder.revolutions_clipped();
   progress.finish();
   lap(2);
 

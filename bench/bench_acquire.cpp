@@ -18,7 +18,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <string>
 
@@ -53,30 +52,9 @@ ChildResult in_child(const std::function<int()>& work) {
 }
 
 int generate(const std::filesystem::path& file, double seconds) {
-  const auto dir = file.parent_path();
-  std::ofstream(dir / "fourbar_bench_rig.toml") << R"(name = "thesis"
-gravity_m_s2 = 9.8145
-[ground]
-length_mm = 387.0
-[crank]
-length_mm = 64.0
-mass_centre_mm = 9.0
-mass_kg = 0.6095
-inertia_kg_mm2 = 2645.0
-[coupler]
-length_mm = 309.0
-mass_centre_mm = 185.0
-mass_kg = 0.2439
-inertia_kg_mm2 = 2950.0
-[rocker]
-length_mm = 312.0
-mass_centre_mm = 134.0
-mass_kg = 0.2334
-inertia_kg_mm2 = 3176.0
-)";
   Scene scene;
-  scene.rig = std::make_shared<const Rig>(load_rig(dir / "fourbar_bench_rig.toml"));
-  scene.source = dir / "fourbar_bench_scene.toml";
+  scene.rig = std::make_shared<const Rig>(load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml"));
+  scene.source = file.parent_path() / "fourbar_bench_scene.toml";
   scene.crank_speed_rad_s = units::rpm_to_rad_s(350);
   RecordingSpec spec;
   spec.sample_rate_hz = 25600;

@@ -9,6 +9,7 @@
 #include "acquire/acquisition.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "sim/virtual_rig/recording_writer.hpp"
 #include "sim/virtual_rig/sensor_signal.hpp"
 #include "virtual_recording.hpp"
 
@@ -367,6 +368,29 @@ TEST(AcquireBadInput, FewerThanTwoRevolutions) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("need at least 2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(AcquireBadInput, NonFiniteSampleInAFloatFile) {
+  VirtualSetup v;
+  v.spec.revolutions = 3;
+  v.spec.sample_format = "float";
+  const VirtualRigResult vr = v.write("nan.wav", false);
+  // Rewrite the recording with one NaN, keeping the manifest.
+  std::vector<double> x(vr.frames * 4);
+  open_recording(vr.recording)->read(x);
+  x[1000 * 4 + 1] = std::nan("");
+  {
+    auto w = open_recording_writer(vr.recording, 4, v.spec.sample_rate_hz, {"a", "b", "c", "d"}, "float", {});
+    w->write(x);
+    w->commit();
+  }
+  try {
+    run_acquire(vr.recording);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("channel 1 holds a non-finite value at frame 1000"), std::string::npos)
+        << e.what();
   }
 }
 
