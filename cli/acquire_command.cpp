@@ -1,6 +1,7 @@
 // `fourbar acquire REC [--manifest M] --out DIR`: calibrated, angle-tagged
 // samples and revolutions of a recording, with a JSON summary.
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -34,19 +35,51 @@ crank pulses, fits the crank angle through them and writes into DIR:
   summary.json        recording, channels, thresholds, pulse repairs and
                       gaps, revolutions, rpm mean/std/min/max, clipping,
                       warnings, provenance
+With --binary, samples.f64 and revolutions.f64 hold the same columns as
+float64 little-endian rows (numpy: fromfile(f, '<f8').reshape(-1, ncols));
+summary.json "series" lists their columns and row counts.
 Manifest keys and the sensor frame: README "Recordings and manifests".
 Warnings (repaired pulses, gaps, clipping) go to stderr and summary.json.
 )";
 
+/// A series file: CSV, or raw little-endian float64 rows (`.f64`) for long
+/// recordings, whose columns summary.json lists.
+class SeriesFile {
+ public:
+  SeriesFile(const std::filesystem::path& path, const Provenance& prov, std::vector<std::string> columns, bool binary)
+      : columns_(columns) {
+    if (binary) binary_ = std::make_unique<AtomicOutput>(path, true);
+    else csv_ = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::move(columns));
+  }
+  void row(std::span<const double> v) {
+    ++rows_;
+    if (csv_) return csv_->row(v);
+    for (double x : v)
+      if (!std::isfinite(x)) throw RunError(binary_->path().string() + ": a value is not finite; nothing was written");
+    binary_->stream().write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(double)));
+  }
+  void commit() { csv_ ? csv_->commit() : binary_->commit(); }
+  nlohmann::json layout(const std::string& name) const {
+    return {{"file", name}, {"columns", columns_}, {"rows", rows_}, {"format", csv_ ? "csv" : "float64 little-endian, row-major"}};
+  }
+
+ private:
+  std::vector<std::string> columns_;
+  std::unique_ptr<CsvWriter> csv_;
+  std::unique_ptr<AtomicOutput> binary_;
+  std::uint64_t rows_ = 0;
+};
+
 class CsvSink : public AcquisitionSink {
  public:
   CsvSink(const std::filesystem::path& dir, const Provenance& prov, const std::vector<AcquiredChannel>& channels,
-          bool samples) {
+          bool samples, bool binary)
+      : ext_(binary ? ".f64" : ".csv") {
     std::vector<std::string> cols{"crank_deg", "time_s", "revolution", "omega2_rad_s", "alpha2_rad_s2"};
     for (const auto& c : channels) cols.push_back(c.column());
-    if (samples) samples_ = std::make_unique<CsvWriter>(dir / "samples.csv", prov.comment_lines(), cols);
-    std::swap(cols[1], cols[2]);  // revolutions.csv: crank_deg, revolution, time_s, …
-    revolutions_ = std::make_unique<CsvWriter>(dir / "revolutions.csv", prov.comment_lines(), cols);
+    if (samples) samples_ = std::make_unique<SeriesFile>(dir / ("samples" + ext_), prov, cols, binary);
+    std::swap(cols[1], cols[2]);  // revolutions: crank_deg, revolution, time_s, …
+    revolutions_ = std::make_unique<SeriesFile>(dir / ("revolutions" + ext_), prov, cols, binary);
     list_ = std::make_unique<CsvWriter>(
         dir / "revolution_list.csv", prov.comment_lines(),
         std::vector<std::string>{"revolution", "start_time_s", "period_s", "speed_rpm", "segment", "repaired", "clipped"});
@@ -83,9 +116,16 @@ class CsvSink : public AcquisitionSink {
     revolutions_->commit();
     list_->commit();
   }
+  nlohmann::json layout() const {
+    nlohmann::json j = {{"revolutions", revolutions_->layout("revolutions" + ext_)}};
+    if (samples_) j["samples"] = samples_->layout("samples" + ext_);
+    return j;
+  }
 
  private:
-  std::unique_ptr<CsvWriter> samples_, revolutions_, list_;
+  std::string ext_;
+  std::unique_ptr<SeriesFile> samples_, revolutions_;
+  std::unique_ptr<CsvWriter> list_;
   std::vector<double> row_;
 };
 
@@ -100,14 +140,17 @@ nlohmann::json stats_json(const ChannelStats& s, const char* unit) {
 int run_acquire(const Invocation& inv) {
   std::string recording, manifest_file, out_dir;
   int samples_per_rev = 0;
-  bool no_samples = false;
+  bool no_samples = false, binary = false;
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, CSV)")(
       "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
       "out,o", po::value(&out_dir)->required(), "output folder")(
       "samples-per-rev,n", po::value(&samples_per_rev),
       "crank angles per revolution in revolutions.csv (default: the smallest multiple of 360 >= the samples "
-      "per revolution)")("no-samples", po::bool_switch(&no_samples), "do not write samples.csv (long recordings)");
+      "per revolution)")("no-samples", po::bool_switch(&no_samples), "do not write samples.csv (long recordings)")(
+      "binary", po::bool_switch(&binary),
+      "write samples.f64 and revolutions.f64 (float64 little-endian rows, columns as the CSV; listed in "
+      "summary.json) instead of CSV");
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
@@ -127,7 +170,7 @@ int run_acquire(const Invocation& inv) {
   std::vector<AcquiredChannel> channels;
   for (const auto& c : m.channels)
     if (is_accelerometer(c.role)) channels.push_back({c.name, c.role, *c.index, c.position_m, c.offset_m, c.ac_coupled, c.highpass_hz});
-  CsvSink sink(dir, prov, channels, !no_samples);
+  CsvSink sink(dir, prov, channels, !no_samples, binary);
   const AcquisitionReport rep = acquire(*opened.reader, m, options, sink);
 
   // Pulse list and summary.
@@ -199,8 +242,10 @@ int run_acquire(const Invocation& inv) {
                     {"max", rep.speed.max_rpm}};
   j["clipping_checked"] = rep.clipping_checked;
   j["warnings"] = rep.warnings;
-  j["outputs"] = nlohmann::json::array({"revolutions.csv", "revolution_list.csv", "pulses.csv", "summary.json"});
-  if (!no_samples) j["outputs"].push_back("samples.csv");
+  j["series"] = sink.layout();
+  const std::string ext = binary ? ".f64" : ".csv";
+  j["outputs"] = nlohmann::json::array({"revolutions" + ext, "revolution_list.csv", "pulses.csv", "summary.json"});
+  if (!no_samples) j["outputs"].push_back("samples" + ext);
 
   // All complete: move into place.
   AtomicOutput summary(dir / "summary.json");

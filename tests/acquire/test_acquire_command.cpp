@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
+#include <sstream>
 
 #include "support/run_command.hpp"
 
@@ -69,6 +71,24 @@ TEST(VirtualRigCommand, ExampleSceneThenAcquire) {
   ASSERT_EQ(r2.status, 0) << r2.err;
   EXPECT_FALSE(std::filesystem::exists(out2 / "samples.csv"));
   EXPECT_EQ(data_rows(out2 / "revolutions.csv"), 19u * 360u);
+
+  // --binary: the same numbers as float64 rows.
+  const auto out3 = dir.path() / "acq3";
+  ASSERT_EQ(run_fourbar("acquire " + rec.string() + " -n 360 --binary --out " + out3.string()).status, 0);
+  EXPECT_FALSE(std::filesystem::exists(out3 / "revolutions.csv"));
+  const std::string bin = read_file(out3 / "revolutions.f64");
+  ASSERT_EQ(bin.size(), 19u * 360u * 8u * sizeof(double));
+  // Its first row equals the first CSV row of the same run, value for value.
+  std::ifstream csv(out2 / "revolutions.csv");
+  std::string line;
+  while (std::getline(csv, line) && (line.empty() || line[0] == '#' || line[0] == 'c')) {}
+  double first[8];
+  std::memcpy(first, bin.data(), sizeof first);
+  std::stringstream cells(line);
+  std::string cell;
+  for (int c = 0; std::getline(cells, cell, ','); ++c) EXPECT_EQ(first[c], std::strtod(cell.c_str(), nullptr)) << c;
+  EXPECT_NE(read_file(out3 / "summary.json").find("\"rows\": 6840"), std::string::npos);
+  EXPECT_EQ(std::filesystem::file_size(out3 / "samples.f64") % (8 * sizeof(double)), 0u);
 }
 
 TEST(VirtualRigCommand, SameSeedSameBytes) {
