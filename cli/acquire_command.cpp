@@ -31,14 +31,23 @@ crank pulses, fits the crank angle through them and writes into DIR:
   revolution_list.csv per revolution: start_time_s, period_s, speed_rpm,
                       segment, repaired, clipped
   pulses.csv          every pulse edge: time_s, segment, status
-                      (detected, inserted, removed)
+                      (detected, inserted, removed, isolated)
   summary.json        recording, channels, thresholds, pulse repairs and
                       gaps, revolutions, rpm mean/std/min/max, clipping,
                       warnings, provenance
 With --binary, samples.f64 and revolutions.f64 hold the same columns as
 float64 little-endian rows (numpy: fromfile(f, '<f8').reshape(-1, ncols));
 summary.json "series" lists their columns and row counts.
-Manifest keys and the sensor frame: README "Recordings and manifests".
+
+Manifest (TOML) keys: rig, clearance_mm, full_scale_V, adc_range_V,
+sample_rate_hz, time_column, crank_direction (ccw|cw), notes; per
+[[channel]]: index | column, name, role (coupler_tangential coupler_normal
+rocker_tangential rocker_normal crank_pulse ignore), sensitivity_mV_per_m_s2
++ gain | volts_per_unit, axis_sign, position_mm (from the crank pin A on the
+coupler, from the pivot O4 on the rocker), offset_mm, ac_coupled +
+highpass_hz; crank_pulse: polarity (rising|falling), threshold_low_V +
+threshold_high_V, crank_offset_deg, debounce_ms; notes.
+Meanings and the sensor frame: README "Recordings and manifests".
 Warnings (repaired pulses, gaps, clipping) go to stderr and summary.json.
 )";
 
@@ -154,7 +163,7 @@ int run_acquire(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("acquire", "REC [--manifest M] --out DIR", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("acquire", "REC [--manifest M] --out DIR [-n N] [--no-samples] [--binary]", kDetails, opts, pos, inv, vm)) return 0;
   if (vm.count("samples-per-rev") && (samples_per_rev < 4 || samples_per_rev > 10'000'000))
     throw InputError("acquire: --samples-per-rev " + std::to_string(samples_per_rev) + " must be between 4 and 10000000");
 

@@ -44,7 +44,7 @@ int run_virtual_rig(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("scene", 1);
   po::variables_map vm;
-  if (!parse_arguments("virtual-rig", "SCENE.toml --out REC.wav", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("virtual-rig", "SCENE.toml --out REC.wav [--no-truth]", kDetails, opts, pos, inv, vm)) return 0;
 
   const Scene scene = load_scene(scene_file);
   const RecordingSpec spec = read_recording_spec(scene);

@@ -119,6 +119,7 @@ TEST(AcquireRoundTrip, CleanRecordingRecoversTheTruth) {
       worst = std::max(worst, std::abs(run.out.channels[c][i] - truth[v.spec.sensors[c].name + "_m_s2"][n]));
   }
   EXPECT_LT(units::rad_to_deg(rms(angle_err)), 1e-4);
+  RecordProperty("clean_angle_rms_deg", format_double(units::rad_to_deg(rms(angle_err))));
   EXPECT_LT(rms(speed_err), 1e-5 * 36.65);
   EXPECT_LE(worst, 0.5 * lsb_m_s2 * (1 + 1e-6));
   EXPECT_GT(worst, 0.1 * lsb_m_s2);  // it is quantised, not bit-identical by accident
@@ -182,6 +183,8 @@ TEST(AcquireRoundTrip, RevolutionsOnTheCrankAngleGrid) {
   EXPECT_LT(units::rad_to_deg(rms(angle_err)), 0.01);
   // 4-point interpolation between float samples: < 1e-5 of the signal RMS.
   EXPECT_LT(rms(channel_err), 1e-5 * rms(channel_ref));
+  RecordProperty("grid_angle_rms_deg", format_double(units::rad_to_deg(rms(angle_err))));
+  RecordProperty("grid_channel_rms_relative", format_double(rms(channel_err) / rms(channel_ref)));
 }
 
 // The same recording in every container, sample format and as CSV gives the
