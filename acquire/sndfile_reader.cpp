@@ -66,6 +66,9 @@ class SndfileReader final : public Reader {
       throw InputError(os.str());
     }
     if (sf.frames <= 0) throw InputError(file.string() + ": the recording holds no samples");
+    if (options.time_column)
+      throw InputError(file.string() + ": the manifest names time_column '" + *options.time_column +
+                       "' but an audio file has no columns; remove time_column");
   }
   ~SndfileReader() override { sf_close(handle_); }
   SndfileReader(const SndfileReader&) = delete;

@@ -16,7 +16,8 @@ namespace {
 
 class SndfileWriter final : public RecordingWriter {
  public:
-  SndfileWriter(const std::filesystem::path& file, int channels, double rate, int format, int bits)
+  SndfileWriter(const std::filesystem::path& file, int channels, double rate, int format, int bits,
+                const std::vector<std::string>& comments)
       : path_(file), channels_(channels), bits_(bits) {
     tmp_ = file;
     tmp_ += ".tmp-" + std::to_string(::getpid());
@@ -29,6 +30,12 @@ class SndfileWriter final : public RecordingWriter {
                        std::to_string(channels) + " channels and " + std::to_string(info.samplerate) + " Hz");
     handle_ = sf_open(tmp_.c_str(), SFM_WRITE, &info);
     if (!handle_) throw RunError(file.string() + ": cannot create (" + std::string(sf_strerror(nullptr)) + ")");
+    // Provenance in the file's own metadata where the container has some
+    // (WAV, AIFF, FLAC, CAF); silently skipped where it has none.
+    std::string comment;
+    for (const auto& c : comments) comment += (comment.empty() ? "" : "; ") + c;
+    sf_set_string(handle_, SF_STR_SOFTWARE, "fourbar virtual-rig");
+    if (!comment.empty()) sf_set_string(handle_, SF_STR_COMMENT, comment.c_str());
   }
   ~SndfileWriter() override {
     if (handle_) sf_close(handle_);
@@ -134,7 +141,7 @@ std::unique_ptr<RecordingWriter> open_recording_writer(const std::filesystem::pa
     throw InputError(file.string() + ": a " + std::string(container->name) + " file cannot hold sample_format = \"" +
                      name + "\"; it takes " + std::string(container->subtypes));
   return std::make_unique<SndfileWriter>(file, channels, sample_rate_hz, container->major | subtype->subtype,
-                                         subtype->integer_bits);
+                                         subtype->integer_bits, comments);
 }
 
 }  // namespace fourbar

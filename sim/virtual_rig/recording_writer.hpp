@@ -30,7 +30,8 @@ class RecordingWriter {
 
 /// The container comes from the extension (wav, w64, rf64, flac, caf, aiff,
 /// aif, csv); `sample_format` (pcm16, pcm24, pcm32, float, double; default
-/// pcm24) must suit it. `comments` go into a CSV's `#` header. InputError
+/// pcm24) must suit it. `comments` (provenance) go into a CSV's `#` header or
+/// the audio file's comment string. InputError
 /// for an unknown extension or an unsuitable sample format.
 std::unique_ptr<RecordingWriter> open_recording_writer(const std::filesystem::path& file, int channels,
                                                        double sample_rate_hz, const std::vector<std::string>& names,

@@ -12,6 +12,7 @@
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "common/version.hpp"
 #include "sim/virtual_rig/recording_writer.hpp"
 #include "sim/virtual_rig/sensor_signal.hpp"
 
@@ -169,8 +170,12 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   std::vector<std::string> names;
   for (const auto& s : spec.sensors) names.push_back(s.name);
   names.push_back(ps.name);
-  auto writer = open_recording_writer(out, static_cast<int>(nch), fs, names, spec.sample_format.value_or(""),
-                                      provenance.comment_lines());
+  // The recording names what made it, but not where it was written to, so
+  // that the same scene and seed give the same bytes anywhere.
+  std::vector<std::string> made_by{std::string("made by fourbar ") + kVersion + " virtual-rig"};
+  for (const auto& p : provenance.inputs) made_by.push_back("input: " + p.filename().string());
+  made_by.push_back("seed: " + std::to_string(spec.seed));
+  auto writer = open_recording_writer(out, static_cast<int>(nch), fs, names, spec.sample_format.value_or(""), made_by);
   const int bits = writer->integer_bits();
   const double to_recorded = bits > 0 ? 1.0 / spec.full_scale_V : 1.0;  // integer: ±1 full scale; else volts
   std::unique_ptr<CsvWriter> truth;
