@@ -179,6 +179,17 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
                      " V); check the channel index in " + manifest.file.string() +
                      " and the pickup, or set threshold_low_V/threshold_high_V");
   }
+  // Pulses are short: the level the channel spends most time at is idle. The
+  // marking edge should be the pulse's leading edge.
+  if (const auto levels = histogram.two_levels(); automatic && levels) {
+    const bool idle_high = levels->high.count > levels->low.count;
+    if (idle_high == (pulse.polarity == PulsePolarity::rising))
+      report.warnings.push_back(pulse_label + ": the pulses go " + (idle_high ? "down from a high" : "up from a low") +
+                                " idle level, so polarity = \"" +
+                                (pulse.polarity == PulsePolarity::rising ? "rising" : "falling") +
+                                "\" times their trailing edge; if the leading edge marks the crank angle, set "
+                                "polarity = \"" + (idle_high ? "falling" : "rising") + "\"");
+  }
   if (automatic && automatic->noise > 0.1 * (automatic->top_level - automatic->bottom_level))
     report.warnings.push_back(pulse_label + " is noisy (noise " + fmt(automatic->noise) + " V against a swing of " +
                               fmt(automatic->top_level - automatic->bottom_level) + " V); hysteresis widened");

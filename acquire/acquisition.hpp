@@ -75,7 +75,9 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
 
 /// Everything in memory, for analyze and tests: opens `recording`, reads its
 /// manifest (`manifest_file`, or the sidecar when empty), runs acquire and
-/// keeps every revolution.
+/// keeps every revolution. Memory grows with revolutions × N (an hour at
+/// 350 rpm and N = 4680 is several GB): for long recordings pass an
+/// AcquisitionSink to `acquire` and average as the revolutions arrive.
 struct Acquisition {
   Manifest manifest;
   AcquisitionReport report;

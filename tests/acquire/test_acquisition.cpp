@@ -260,6 +260,18 @@ TEST(AcquireRoundTrip, ClockwiseCrankAndFallingPulses) {
   EXPECT_LT(units::rad_to_deg(rms(err)), 1e-3);
   EXPECT_NEAR(run.out.revolutions[0].crank_rad[0], units::deg_to_rad(75), 1e-12);
   EXPECT_LT(run.out.revolutions[0].crank_rad[1], run.out.revolutions[0].crank_rad[0]);
+  EXPECT_TRUE(run.report.warnings.empty());
+
+  // The manifest's polarity set wrong: the trailing edges are timed, and a
+  // warning says so.
+  const auto m = vr.manifest;
+  std::string text = testing::read_file(m);
+  const std::string falling = "polarity = \"falling\"";
+  text.replace(text.find(falling), falling.size(), "polarity = \"rising\"");
+  std::ofstream(m) << text;
+  const Acquired wrong = run_acquire(vr.recording);
+  ASSERT_EQ(wrong.report.warnings.size(), 1u);
+  EXPECT_NE(wrong.report.warnings[0].find("times their trailing edge"), std::string::npos) << wrong.report.warnings[0];
 }
 
 // Missing pulses, echoes and a noisy tacho: found, reported, repaired.
