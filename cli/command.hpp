@@ -38,5 +38,7 @@ bool parse_arguments(std::string_view command, std::string_view usage, std::stri
 int run_sim(const Invocation& inv);
 int run_rig(const Invocation& inv);
 int run_sweep(const Invocation& inv);
+int run_acquire(const Invocation& inv);
+int run_virtual_rig(const Invocation& inv);
 
 }  // namespace fourbar::cli

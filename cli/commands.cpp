@@ -9,6 +9,9 @@ std::span<const Command> commands() {
       Command{"sim", "simulate a scene (nominal or clearance model) and write CSV + JSON", run_sim},
       Command{"rig", "check a rig file and report its class, assembly and transmission angles", run_rig},
       Command{"sweep", "run the clearance model over a clearance x rpm x e x mu grid, one table", run_sweep},
+      Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
+      Command{"virtual-rig", "write the recording (and manifest, truth) the sensors would give for a scene",
+              run_virtual_rig},
   };
   return table;
 }

@@ -1,0 +1,97 @@
+#pragma once
+// Pipeline stage "acquire": a recording and its manifest in; calibrated,
+// angle-tagged samples and revolutions out (through an AcquisitionSink), plus
+// a report of what was found.
+//
+// The recording is read in three streaming passes of fixed-size blocks, so
+// memory stays bounded by one revolution whatever the length:
+//   1. scan    — channel statistics, clipping, NaN check, the pulse
+//                channel's level histogram (automatic Schmitt thresholds);
+//   2. pulses  — Schmitt-trigger edges with sub-sample times;
+//      then the pulse train is cleaned (pulse_train.hpp) and the crank
+//      motion fitted through it (crank_angle.hpp);
+//   3. samples — each sample tagged with θ2, ω2, α2 and calibrated; each
+//                revolution resampled onto N crank angles (4-point Lagrange
+//                interpolation between samples) as soon as it is complete.
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "acquire/level_histogram.hpp"
+#include "acquire/manifest.hpp"
+#include "acquire/pulse_train.hpp"
+#include "acquire/reader.hpp"
+#include "acquire/revolution.hpp"
+
+namespace fourbar {
+
+struct AcquireOptions {
+  int samples_per_revolution = 0;  ///< N; 0: the smallest multiple of 360 ≥ samples per revolution
+  std::size_t block_frames = 16384;
+  bool progress = true;            ///< progress bar on stderr when it is a terminal
+  PulseTrainOptions pulses;
+};
+
+/// Per accelerometer channel (m/s², calibrated) or the pulse channel (V).
+struct ChannelStats {
+  double min = 0, max = 0, mean = 0, rms = 0;
+  std::uint64_t clipped_samples = 0;  ///< samples at the input range
+  double first_clip_s = 0;            ///< time of the first clipped sample
+};
+
+struct SpeedStats {
+  double mean_rpm = 0, std_rpm = 0, min_rpm = 0, max_rpm = 0;
+};
+
+struct AcquisitionReport {
+  RecordingInfo recording;
+  std::vector<AcquiredChannel> channels;     ///< accelerometer channels, manifest order
+  std::vector<ChannelStats> channel_stats;   ///< same order
+  std::string pulse_channel;                 ///< its name
+  ChannelStats pulse_stats;                  ///< volts
+  PulseThresholds thresholds;                ///< as used
+  double edge_level_V = 0;                   ///< mid-level at which edge times are taken (refined)
+  std::size_t edges_debounced = 0;
+  PulseTrain pulses;
+  int samples_per_revolution = 0;            ///< N
+  double samples_per_turn = 0;               ///< recording samples in a typical revolution
+  std::size_t revolutions = 0;               ///< kept
+  std::size_t revolutions_repaired = 0;
+  std::size_t revolutions_clipped = 0;
+  std::size_t revolutions_in_gaps = 0;       ///< dropped: estimated turns inside pulse-train gaps
+  SpeedStats speed;
+  bool clipping_checked = false;             ///< false for float/text without adc_range_V
+  std::vector<std::string> warnings;
+  std::array<double, 3> pass_seconds{};      ///< wall time of scan, pulses, samples passes
+};
+
+/// Runs the three passes. `manifest` must be bound to the reader's recording
+/// (bind_channels). InputError for no pulses, fewer than two revolutions,
+/// NaN samples or a damaged file.
+AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const AcquireOptions& options,
+                          AcquisitionSink& sink);
+
+/// Everything in memory, for analyze and tests: opens `recording`, reads its
+/// manifest (`manifest_file`, or the sidecar when empty), runs acquire and
+/// keeps every revolution. Memory grows with revolutions × N (an hour at
+/// 350 rpm and N = 4680 is several GB): for long recordings pass an
+/// AcquisitionSink to `acquire` and average as the revolutions arrive.
+struct Acquisition {
+  Manifest manifest;
+  AcquisitionReport report;
+  std::vector<Revolution> revolutions;
+};
+Acquisition acquire_revolutions(const std::filesystem::path& recording, const std::filesystem::path& manifest_file = {},
+                                const AcquireOptions& options = {});
+
+/// Loads the manifest (the sidecar when `manifest_file` is empty, with a clear
+/// error when that is missing), opens the recording and binds the channels.
+struct OpenedRecording {
+  Manifest manifest;
+  std::unique_ptr<Reader> reader;
+};
+OpenedRecording open_with_manifest(const std::filesystem::path& recording, const std::filesystem::path& manifest_file);
+
+}  // namespace fourbar

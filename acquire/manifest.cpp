@@ -1,0 +1,251 @@
+#include "acquire/manifest.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "common/csv_writer.hpp"
+#include "common/error.hpp"
+#include "common/toml_section.hpp"
+#include "common/units.hpp"
+
+namespace fourbar {
+
+namespace {
+
+constexpr std::array kRoles{
+    std::pair{ChannelRole::coupler_tangential, "coupler_tangential"},
+    std::pair{ChannelRole::coupler_normal, "coupler_normal"},
+    std::pair{ChannelRole::rocker_tangential, "rocker_tangential"},
+    std::pair{ChannelRole::rocker_normal, "rocker_normal"},
+    std::pair{ChannelRole::crank_pulse, "crank_pulse"},
+    std::pair{ChannelRole::ignore, "ignore"},
+};
+
+ChannelRole role_from_string(const std::string& s) {
+  for (const auto& [role, name] : kRoles)
+    if (s == name) return role;
+  return ChannelRole::ignore;
+}
+
+std::string label(const ChannelSpec& c, std::size_t i) {
+  return "channel[" + std::to_string(i) + "] ('" + c.name + "')";
+}
+
+}  // namespace
+
+ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector<std::string>& roles) {
+  ChannelSpec c;
+  c.role = role_from_string(s.choice("role", roles));
+  if (with_index) {
+    if (s.has("index")) c.index = static_cast<int>(s.integer("index", 0, 1 << 20));
+    if (auto col = s.optional_string("column")) c.column = *col;
+    if (c.index && c.column) s.fail("column", "and 'index' both given; keep one of them");
+    if (!c.index && !c.column)
+      s.fail("index", "missing: give the channel's 0-based 'index' (or a text column's name as 'column')");
+  }
+  if (auto n = s.optional_string("name")) {
+    if (n->empty() || n->find_first_of(",;\"\t\n ") != std::string::npos)
+      s.fail("name", "= \"" + *n + "\" must be a non-empty word without spaces, commas or quotes");
+    c.name = *n;
+  }
+
+  if (is_accelerometer(c.role)) {
+    const bool has_sens = s.has("sensitivity_mV_per_m_s2"), has_vpu = s.has("volts_per_unit");
+    if (has_sens && has_vpu)
+      s.fail("volts_per_unit", "and 'sensitivity_mV_per_m_s2' both given; keep one (volts_per_unit = mV/(m/s²)·gain/1000)");
+    if (has_vpu) {
+      c.volts_per_m_s2 = s.positive("volts_per_unit");
+    } else {
+      c.volts_per_m_s2 = s.positive("sensitivity_mV_per_m_s2") * 1e-3 * s.in_range("gain", 1e-6, 1e6, 1.0);
+    }
+    c.axis_sign = s.in_range("axis_sign", -1, 1, 1.0);
+    if (c.axis_sign != 1 && c.axis_sign != -1) s.fail("axis_sign", "must be 1 or -1");
+    c.position_m = units::mm_to_m(s.in_range("position_mm", -1e5, 1e5));
+    c.offset_m = units::mm_to_m(s.in_range("offset_mm", -1e5, 1e5, 0.0));
+    c.ac_coupled = s.boolean("ac_coupled", false);
+    if (c.ac_coupled) c.highpass_hz = s.positive("highpass_hz");
+    else if (s.has("highpass_hz")) s.fail("highpass_hz", "is given but ac_coupled is not true; set ac_coupled = true or remove it");
+  }
+  if (c.role == ChannelRole::crank_pulse) {
+    c.polarity = s.choice("polarity", {"rising", "falling"}, "rising") == "rising" ? PulsePolarity::rising
+                                                                                  : PulsePolarity::falling;
+    c.threshold_low_V = s.optional_number("threshold_low_V");
+    c.threshold_high_V = s.optional_number("threshold_high_V");
+    if (c.threshold_low_V.has_value() != c.threshold_high_V.has_value())
+      s.fail(c.threshold_low_V ? "threshold_high_V" : "threshold_low_V",
+             "missing: give both Schmitt thresholds or neither (automatic)");
+    if (c.threshold_low_V && !(*c.threshold_low_V < *c.threshold_high_V))
+      s.fail("threshold_low_V", "must be below threshold_high_V");
+    c.crank_offset_rad = units::deg_to_rad(s.in_range("crank_offset_deg", -360, 360, 0.0));
+    c.debounce_s = s.in_range("debounce_ms", 0, 1e6, 0.0) * 1e-3;
+  }
+  if (auto n = s.optional_string("notes")) c.notes = *n;
+  s.finish();
+  return c;
+}
+
+const char* to_string(ChannelRole role) {
+  for (const auto& [r, name] : kRoles)
+    if (r == role) return name;
+  return "ignore";
+}
+
+std::vector<std::string> channel_role_names() {
+  std::vector<std::string> v;
+  for (const auto& kv : kRoles) v.emplace_back(kv.second);
+  return v;
+}
+
+bool is_accelerometer(ChannelRole r) {
+  return r != ChannelRole::crank_pulse && r != ChannelRole::ignore;
+}
+bool is_on_coupler(ChannelRole r) { return r == ChannelRole::coupler_tangential || r == ChannelRole::coupler_normal; }
+bool is_tangential(ChannelRole r) { return r == ChannelRole::coupler_tangential || r == ChannelRole::rocker_tangential; }
+
+const ChannelSpec& Manifest::pulse_channel() const {
+  for (const auto& c : channels)
+    if (c.role == ChannelRole::crank_pulse) return c;
+  throw InputError(file.string() + ": no channel has role = \"crank_pulse\"");  // load_manifest prevents this
+}
+
+std::filesystem::path sidecar_manifest_path(const std::filesystem::path& recording) {
+  std::filesystem::path p = recording;
+  return p.replace_extension(".toml");
+}
+
+Manifest load_manifest(const std::filesystem::path& file) {
+  const toml::table doc = parse_toml_file(file);
+  TomlSection root(doc, file);
+  Manifest m;
+  m.file = file;
+  m.rig_file = root.path("rig");
+  try {
+    m.rig = std::make_shared<const Rig>(load_rig(m.rig_file));
+  } catch (const InputError& e) {
+    throw InputError(root.where("rig") + ": " + e.what());
+  }
+  m.clearance_m = root.has("clearance_mm") ? units::mm_to_m(root.non_negative("clearance_mm")) : m.rig->radial_clearance_m;
+  m.full_scale_V = root.in_range("full_scale_V", 1e-9, 1e9, 1.0);
+  if (root.has("adc_range_V")) m.adc_range_V = root.positive("adc_range_V");
+  if (root.has("sample_rate_hz")) m.sample_rate_hz = root.positive("sample_rate_hz");
+  m.time_column = root.optional_string("time_column");
+  m.crank_direction = root.choice("crank_direction", {"ccw", "cw"}, "ccw") == "ccw" ? 1.0 : -1.0;
+  if (auto n = root.optional_string("notes")) m.notes = *n;
+
+  auto sections = root.sections("channel");
+  if (sections.empty())
+    throw InputError(file.string() + ": no [[channel]] tables; describe at least the crank_pulse channel");
+  int pulses = 0;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    ChannelSpec c = read_channel_spec(sections[i], true, channel_role_names());
+    pulses += c.role == ChannelRole::crank_pulse;
+    m.channels.push_back(std::move(c));
+  }
+  root.finish();
+  if (pulses != 1)
+    throw InputError(file.string() + ": " + std::to_string(pulses) +
+                     " channels have role = \"crank_pulse\"; exactly one must (the once-per-revolution crank pulse)");
+
+  // Default names: the role, numbered when a role appears more than once.
+  for (std::size_t i = 0; i < m.channels.size(); ++i) {
+    ChannelSpec& c = m.channels[i];
+    if (!c.name.empty()) continue;
+    int same = 0, before = 0;
+    for (std::size_t j = 0; j < m.channels.size(); ++j)
+      if (m.channels[j].role == c.role) ++same, before += j < i;
+    c.name = to_string(c.role);
+    if (same > 1) c.name += "_" + std::to_string(before + 1);
+  }
+  for (std::size_t i = 0; i < m.channels.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (m.channels[i].name == m.channels[j].name)
+        throw InputError(file.string() + ": " + label(m.channels[i], i) + " has the same name as " +
+                         label(m.channels[j], j) + "; give each a different 'name'");
+  return m;
+}
+
+void bind_channels(Manifest& m, const RecordingInfo& rec) {
+  for (std::size_t i = 0; i < m.channels.size(); ++i) {
+    ChannelSpec& c = m.channels[i];
+    if (c.column) {
+      const auto& names = rec.channel_names;
+      const auto it = std::find(names.begin(), names.end(), *c.column);
+      if (it == names.end() || c.column->empty()) {
+        std::string hint;
+        std::vector<std::string> present;
+        for (const auto& n : names)
+          if (!n.empty()) present.push_back(n);
+        if (auto best = closest_match(*c.column, present)) hint = " (did you mean '" + *best + "'?)";
+        throw InputError(m.file.string() + ": " + label(c, i) + ": column '" + *c.column + "' is not in " +
+                         rec.file.string() + hint + (present.empty() ? "; audio files have no column names, use 'index'" : ""));
+      }
+      c.index = static_cast<int>(it - names.begin());
+    }
+    if (*c.index >= rec.channels)
+      throw InputError(m.file.string() + ": " + label(c, i) + ": index = " + std::to_string(*c.index) + " but " +
+                       rec.file.string() + " has " + std::to_string(rec.channels) + " channel" +
+                       (rec.channels == 1 ? "" : "s") + " (indices 0.." + std::to_string(rec.channels - 1) +
+                       "); fix the index");
+    for (std::size_t j = 0; j < i; ++j)
+      if (m.channels[j].index == c.index)
+        throw InputError(m.file.string() + ": " + label(c, i) + " and " + label(m.channels[j], j) +
+                         " both describe recording channel " + std::to_string(*c.index) + "; describe each channel once");
+  }
+}
+
+std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& manifest_dir) {
+  // Relative to the manifest when they share a folder below the root.
+  auto rel = [&](const std::filesystem::path& p) {
+    std::error_code ec;
+    const auto abs = std::filesystem::absolute(p, ec), dir = std::filesystem::absolute(manifest_dir, ec);
+    const auto r = abs.lexically_relative(dir);
+    std::size_t up = 0, depth = 0;
+    for (const auto& part : r) up += part == "..";
+    for (const auto& part : dir.relative_path()) depth += !part.empty();
+    return (ec || r.empty() || up >= depth) ? abs.generic_string() : r.generic_string();
+  };
+  auto num = [](double v) { return format_double(v); };
+  auto quoted = [](const std::string& s) {
+    std::string out = "\"";
+    for (char ch : s) out += (ch == '"' || ch == '\\') ? std::string("\\") + ch : std::string(1, ch);
+    return out + "\"";
+  };
+  std::ostringstream os;
+  os << "# Recording manifest (keys: README \"Recordings and manifests\").\n";
+  os << "rig = " << quoted(rel(m.rig_file)) << "\n";
+  os << "clearance_mm = " << num(units::m_to_mm(m.clearance_m)) << "\n";
+  os << "full_scale_V = " << num(m.full_scale_V) << "\n";
+  if (m.adc_range_V) os << "adc_range_V = " << num(*m.adc_range_V) << "\n";
+  if (m.sample_rate_hz) os << "sample_rate_hz = " << num(*m.sample_rate_hz) << "\n";
+  if (m.time_column) os << "time_column = " << quoted(*m.time_column) << "\n";
+  os << "crank_direction = \"" << (m.crank_direction > 0 ? "ccw" : "cw") << "\"\n";
+  if (!m.notes.empty()) os << "notes = " << quoted(m.notes) << "\n";
+  for (const auto& c : m.channels) {
+    os << "\n[[channel]]\n";
+    if (c.column) os << "column = " << quoted(*c.column) << "\n";
+    else os << "index = " << c.index.value_or(0) << "\n";
+    os << "name = " << quoted(c.name) << "\n";
+    os << "role = \"" << to_string(c.role) << "\"\n";
+    if (is_accelerometer(c.role)) {
+      os << "volts_per_unit = " << num(c.volts_per_m_s2) << "\n";
+      os << "axis_sign = " << (c.axis_sign > 0 ? 1 : -1) << "\n";
+      os << "position_mm = " << num(units::m_to_mm(c.position_m)) << "\n";
+      if (c.offset_m != 0) os << "offset_mm = " << num(units::m_to_mm(c.offset_m)) << "\n";
+      os << "ac_coupled = " << (c.ac_coupled ? "true" : "false") << "\n";
+      if (c.ac_coupled) os << "highpass_hz = " << num(c.highpass_hz) << "\n";
+    }
+    if (c.role == ChannelRole::crank_pulse) {
+      os << "polarity = \"" << (c.polarity == PulsePolarity::rising ? "rising" : "falling") << "\"\n";
+      if (c.threshold_low_V) os << "threshold_low_V = " << num(*c.threshold_low_V) << "\n";
+      if (c.threshold_high_V) os << "threshold_high_V = " << num(*c.threshold_high_V) << "\n";
+      os << "crank_offset_deg = " << num(units::rad_to_deg(c.crank_offset_rad)) << "\n";
+      if (c.debounce_s > 0) os << "debounce_ms = " << num(c.debounce_s * 1e3) << "\n";
+    }
+    if (!c.notes.empty()) os << "notes = " << quoted(c.notes) << "\n";
+  }
+  return os.str();
+}
+
+}  // namespace fourbar

@@ -1,0 +1,107 @@
+#pragma once
+// The manifest: a TOML sidecar that says what each channel of a recording is
+// and how to turn its numbers into physical units (README "Recordings and
+// manifests" lists every key). `REC.toml` beside `REC.wav`, or any file given
+// with --manifest. Strict: an unknown or misspelt key is an error with a
+// suggestion; a channel index or column that the recording lacks is an error
+// naming the channel.
+//
+// Sensor frame (per accelerometer channel, on the coupler or the rocker):
+//   position   P = J + position·u + offset·n, where J is the link's first
+//              joint (coupler: crank pin A; rocker: rocker pivot O4), u the
+//              unit vector along the link towards its other joint, and
+//              n = u turned +90° (counter-clockwise);
+//   tangential axis = +n, normal axis = +u (pointing away from J);
+//   axis_sign = −1 when the sensor is mounted the other way round.
+// Calibrated value (m/s²) = axis_sign · volts / volts_per_m_s2, with
+// volts = recorded value · full_scale_V. An accelerometer measures specific
+// force a − g (g = (0, −gravity) in the rig frame), so the calibrated value
+// still contains the gravity projection; analyze removes it.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "acquire/reader.hpp"
+#include "sim/rig.hpp"
+
+namespace fourbar {
+
+enum class ChannelRole { coupler_tangential, coupler_normal, rocker_tangential, rocker_normal, crank_pulse, ignore };
+
+const char* to_string(ChannelRole role);
+/// Every role name, for messages and --help.
+std::vector<std::string> channel_role_names();
+/// True for the four accelerometer roles.
+bool is_accelerometer(ChannelRole role);
+/// True for coupler_* roles (the sensor rides on the coupler).
+bool is_on_coupler(ChannelRole role);
+/// True for *_tangential roles.
+bool is_tangential(ChannelRole role);
+
+enum class PulsePolarity { rising, falling };
+
+struct ChannelSpec {
+  std::string name;                    ///< output column stem; default: the role (role_N when repeated)
+  std::optional<int> index;            ///< 0-based channel in the recording (`index`)
+  std::optional<std::string> column;   ///< or a text recording's column name (`column`)
+  ChannelRole role = ChannelRole::ignore;
+
+  // Accelerometer channels.
+  double volts_per_m_s2 = 0;           ///< sensitivity·gain (or `volts_per_unit`)
+  double axis_sign = 1;                ///< +1 or −1
+  double position_m = 0;               ///< along the link from its first joint
+  double offset_m = 0;                 ///< perpendicular to the link, +n side
+  bool ac_coupled = false;             ///< piezo sensor / AC-coupled amplifier
+  double highpass_hz = 0;              ///< its first-order high-pass corner (when ac_coupled)
+
+  // The crank-pulse channel.
+  PulsePolarity polarity = PulsePolarity::rising;
+  std::optional<double> threshold_low_V, threshold_high_V;  ///< Schmitt thresholds (default: automatic)
+  double crank_offset_rad = 0;         ///< crank angle at the pulse's leading edge
+  double debounce_s = 0;               ///< ignore edges closer than this to the previous one
+
+  std::string notes;
+};
+
+struct Manifest {
+  std::filesystem::path file;          ///< the manifest itself
+  std::filesystem::path rig_file;
+  std::shared_ptr<const Rig> rig;
+  double clearance_m = 0;              ///< default: the rig's radial clearance
+  double full_scale_V = 1;             ///< volts per recorded unit
+  std::optional<double> adc_range_V;   ///< input range, for clipping detection in float/text recordings
+  std::optional<double> sample_rate_hz;  ///< text recordings without a time column
+  std::optional<std::string> time_column;
+  double crank_direction = 1;          ///< +1: the crank turns counter-clockwise (θ2 increases), −1 clockwise
+  std::vector<ChannelSpec> channels;   ///< as listed, `[[channel]]`
+  std::string notes;
+
+  ReaderOptions reader_options() const { return {sample_rate_hz, time_column}; }
+  /// The one crank_pulse channel.
+  const ChannelSpec& pulse_channel() const;
+};
+
+class TomlSection;
+/// Reads one channel table (`[[channel]]` keys; without index/column unless
+/// `with_index`); `roles` are the roles allowed here. Calls finish().
+ChannelSpec read_channel_spec(TomlSection& table, bool with_index, const std::vector<std::string>& roles);
+
+/// `REC.toml` for `REC.wav`.
+std::filesystem::path sidecar_manifest_path(const std::filesystem::path& recording);
+
+/// Reads and validates a manifest and its rig; InputError naming file, line and key.
+Manifest load_manifest(const std::filesystem::path& file);
+
+/// Resolves every channel's `column` to an index and checks indices against
+/// the recording; InputError naming the channel. Fills `index` for all.
+void bind_channels(Manifest& manifest, const RecordingInfo& recording);
+
+/// The manifest as TOML text (what the virtual rig writes); paths relative to
+/// `manifest_dir` when possible. load_manifest reads it back unchanged.
+std::string manifest_to_toml(const Manifest& manifest, const std::filesystem::path& manifest_dir);
+
+}  // namespace fourbar

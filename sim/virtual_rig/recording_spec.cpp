@@ -1,0 +1,125 @@
+#include "sim/virtual_rig/recording_spec.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "acquire/sndfile_formats.hpp"
+#include "common/error.hpp"
+#include "common/toml_section.hpp"
+#include "common/units.hpp"
+
+namespace fourbar {
+
+namespace {
+
+/// Takes the array `key` out of `table` (TomlSection reads no number arrays),
+/// checking each element with `ok`; InputError naming file, line and key.
+template <class T, class Ok>
+std::optional<std::vector<T>> take_array(toml::table& table, std::string_view key, const Scene& scene,
+                                         const std::string& dotted, Ok ok, const char* what) {
+  toml::node* n = table.get(key);
+  if (!n) return std::nullopt;
+  const std::string where = scene.source.string() + ":" + std::to_string(n->source().begin.line) + ": key '" +
+                            dotted + "' ";
+  const toml::array* arr = n->as_array();
+  if (!arr) throw InputError(where + "must be an array of " + what);
+  std::vector<T> out;
+  for (const auto& el : *arr) {
+    const auto v = el.value<T>();
+    if (!v || !ok(*v)) throw InputError(where + "must hold only " + what);
+    out.push_back(*v);
+  }
+  table.erase(key);
+  return out;
+}
+
+}  // namespace
+
+RecordingSpec read_recording_spec(const Scene& scene) {
+  if (!scene.recording)
+    throw InputError(scene.source.string() + ": no [recording] table; the virtual rig needs one (see "
+                     "'fourbar virtual-rig --help')");
+  // Re-read the table from the scene file when there is one: a copied TOML
+  // table loses its line numbers, and errors should name the line.
+  toml::table parsed, copy;
+  toml::table* found = nullptr;
+  std::error_code ec;
+  if (!scene.source.empty() && std::filesystem::is_regular_file(scene.source, ec)) {
+    parsed = parse_toml_file(scene.source);
+    found = parsed["recording"].as_table();
+  }
+  if (!found) copy = *scene.recording, found = &copy;
+  toml::table& table = *found;
+  RecordingSpec spec;
+  if (auto h = take_array<double>(table, "hum_harmonics", scene, "recording.hum_harmonics",
+                                  [](double v) { return std::isfinite(v) && v >= 0; }, "numbers >= 0, e.g. [1.0, 0.3]"))
+    spec.hum_harmonics = *h;
+  if (toml::table* pt = table["pulse"].as_table()) {
+    auto whole = [](long long v) { return v >= 0; };
+    if (auto v = take_array<long long>(*pt, "missing", scene, "recording.pulse.missing", whole, "pulse numbers >= 0"))
+      spec.pulse.missing = *v;
+    if (auto v = take_array<long long>(*pt, "echo", scene, "recording.pulse.echo", whole, "pulse numbers >= 0"))
+      spec.pulse.echo = *v;
+  }
+  TomlSection r(table, scene.source, "recording");
+  spec.sample_rate_hz = r.in_range("sample_rate_hz", 1, 10e6);
+  if (r.has("duration_s") == r.has("revolutions"))
+    r.fail("duration_s", "and 'recording.revolutions': give exactly one of them");
+  if (r.has("duration_s")) spec.duration_s = r.in_range("duration_s", 1e-3, 1e6);
+  else spec.revolutions = r.in_range("revolutions", 0.01, 1e7);
+  if (r.has("sample_format")) {
+    std::vector<std::string> names;
+    for (const auto& s : sndfile_subtypes()) names.emplace_back(s.name);
+    spec.sample_format = r.choice("sample_format", names);
+  }
+  spec.full_scale_V = r.in_range("full_scale_V", 1e-6, 1e6, 10.0);
+  if (r.has("quantisation_bits")) spec.quantisation_bits = static_cast<int>(r.integer("quantisation_bits", 4, 32));
+  spec.noise_snr_db = r.optional_number("noise_snr_db");
+  spec.hum_frequency_hz = r.in_range("hum_frequency_hz", 1, 1e4, 50.0);
+  spec.hum_V = r.in_range("hum_mV", 0, 1e6, 0.0) * 1e-3;
+  spec.speed_fluctuation = r.in_range("speed_fluctuation_pct", 0, 50, 0.0) * 1e-2;
+  if (r.has("speed_fluctuation_period_s"))
+    spec.speed_fluctuation_period_s = r.in_range("speed_fluctuation_period_s", 1e-3, 1e6);
+  spec.seed = static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<long long>::max(), 1));
+  if (auto n = r.optional_string("notes")) spec.notes = *n;
+
+  std::vector<std::string> accel_roles;
+  for (const auto& name : channel_role_names())
+    if (name != "crank_pulse" && name != "ignore") accel_roles.push_back(name);
+  for (auto& s : r.sections("sensor")) spec.sensors.push_back(read_channel_spec(s, false, accel_roles));
+  for (std::size_t i = 0; i < spec.sensors.size(); ++i) {
+    ChannelSpec& c = spec.sensors[i];
+    if (c.name.empty()) c.name = std::string(to_string(c.role)) + (i ? "_" + std::to_string(i) : "");
+    for (std::size_t j = 0; j < i; ++j)
+      if (spec.sensors[j].name == c.name)
+        throw InputError(scene.source.string() + ": recording.sensor[" + std::to_string(i) + "] has the name '" +
+                         c.name + "' of sensor[" + std::to_string(j) + "]; give each a different 'name'");
+    c.index = static_cast<int>(i);
+  }
+
+  TomlSection p = r.section("pulse");
+  PulseSpec& pulse = spec.pulse;
+  if (auto n = p.optional_string("name")) pulse.name = *n;
+  pulse.angle_rad = units::deg_to_rad(p.in_range("angle_deg", -360, 360, 0.0));
+  pulse.low_V = p.in_range("low_V", -1e6, 1e6, 0.0);
+  pulse.high_V = p.in_range("high_V", -1e6, 1e6, 5.0);
+  if (!(pulse.high_V > pulse.low_V)) p.fail("high_V", "must be above low_V");
+  pulse.polarity = p.choice("polarity", {"rising", "falling"}, "rising") == "rising" ? PulsePolarity::rising
+                                                                                   : PulsePolarity::falling;
+  pulse.width_rad = units::deg_to_rad(p.in_range("width_deg", 0.01, 180, 10.0));
+  pulse.rise_s = p.in_range("rise_us", 0, 1e6, 0.0) * 1e-6;
+  if (pulse.rise_s == 0) pulse.rise_s = 4.0 / spec.sample_rate_hz;  // default: four samples
+  pulse.jitter_s = p.in_range("jitter_us", 0, 1e6, 0.0) * 1e-6;
+  pulse.noise_V = p.in_range("noise_mV", 0, 1e6, 0.0) * 1e-3;
+  pulse.echo_delay_s = p.in_range("echo_delay_ms", 0, 1e6, 1.0) * 1e-3;
+  p.finish();
+  r.finish();
+
+  if (spec.sample_format && spec.quantisation_bits)
+    if (auto st = sndfile_subtype(*spec.sample_format); st && st->integer_bits > 0)
+      r.fail("quantisation_bits", "is for float or text outputs; sample_format = \"" + *spec.sample_format +
+                                      "\" already fixes " + std::to_string(st->integer_bits) + " bits");
+  return spec;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,52 @@
+#pragma once
+// The scene's `[recording]` table: what the virtual rig records and how
+// (README "Virtual rig" lists every key).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "acquire/manifest.hpp"
+#include "sim/scene.hpp"
+
+namespace fourbar {
+
+struct PulseSpec {
+  std::string name = "crank_pulse";
+  double angle_rad = 0;          ///< crank angle at the leading edge's mid-level crossing
+  double low_V = 0, high_V = 5;  ///< idle and pulse levels (swapped for falling polarity)
+  PulsePolarity polarity = PulsePolarity::rising;
+  double width_rad = 0;          ///< crank angle between leading and trailing edge
+  double rise_s = 0;             ///< duration of each edge's linear ramp
+  double jitter_s = 0;           ///< standard deviation of each pulse's time
+  double noise_V = 0;            ///< standard deviation of white noise on the channel
+  std::vector<long long> missing;  ///< pulse numbers left out (0 = first pulse after t = 0)
+  std::vector<long long> echo;     ///< pulse numbers followed by an echo pulse
+  double echo_delay_s = 0.001;
+};
+
+struct RecordingSpec {
+  double sample_rate_hz = 0;
+  std::optional<double> duration_s;   ///< one of these two
+  std::optional<double> revolutions;
+  std::optional<std::string> sample_format;  ///< pcm16, pcm24, pcm32, float, double (audio only)
+  double full_scale_V = 10;           ///< DAQ input range ±full_scale_V
+  std::optional<int> quantisation_bits;  ///< ADC resolution for float/text outputs
+  std::optional<double> noise_snr_db; ///< white noise per accelerometer channel
+  double hum_frequency_hz = 50;
+  double hum_V = 0;                   ///< amplitude of the mains fundamental
+  std::vector<double> hum_harmonics{1.0};  ///< relative amplitudes of 1×, 2×, 3×, … the mains frequency
+  double speed_fluctuation = 0;       ///< ε
+  std::optional<double> speed_fluctuation_period_s;  ///< default: 10 mean revolutions
+  std::uint64_t seed = 1;
+  std::vector<ChannelSpec> sensors;   ///< accelerometers, in channel order
+  PulseSpec pulse;                    ///< the last channel
+  std::string notes;
+};
+
+/// Parses `scene.recording`; InputError naming the scene file, line and key
+/// (an unknown key too). InputError when the scene has no [recording].
+RecordingSpec read_recording_spec(const Scene& scene);
+
+}  // namespace fourbar

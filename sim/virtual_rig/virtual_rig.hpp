@@ -1,0 +1,60 @@
+#pragma once
+// The virtual rig: from a simulated motion, the recording that the lab's
+// sensors and DAQ would have produced, its manifest, and the truth beside it.
+//
+// Per sample (t = i/fs): the motion source gives every link's state; each
+// accelerometer sees the specific force at its position along its axis
+// (sensor_signal.hpp), times its axis sign; an AC-coupled sensor passes it
+// through a first-order high-pass (bilinear transform, run in from twelve
+// time constants before t = 0 so the recording starts settled); then
+// volts = value·volts_per_unit, plus white noise at the chosen SNR (against
+// the signal's RMS about its mean over one mean revolution) and mains hum
+// (fundamental and harmonics, common to all accelerometer channels), clipped
+// at ±full_scale_V and quantised (integer sample formats by their bit depth,
+// float/text by quantisation_bits when given).
+// The pulse channel is idle at low_V and rises to high_V (falling polarity:
+// the reverse) for width_deg of crank angle from each crossing of angle_deg;
+// each edge is a linear ramp of rise_us centred on the crossing time, which
+// gets Gaussian jitter; echo pulses and missing pulses can be injected.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "common/provenance.hpp"
+#include "sim/scene.hpp"
+#include "sim/virtual_rig/motion_source.hpp"
+#include "sim/virtual_rig/recording_spec.hpp"
+
+namespace fourbar {
+
+struct VirtualRigOptions {
+  bool write_truth = true;
+  bool progress = true;  ///< progress bar on stderr when it is a terminal
+};
+
+struct VirtualRigResult {
+  std::filesystem::path recording, manifest, truth;
+  std::uint64_t frames = 0;
+  int channels = 0;
+  double sample_rate_hz = 0;
+  std::vector<double> pulse_times_s;  ///< leading-edge times of the pulses written (jitter included)
+  std::uint64_t clipped_samples = 0;  ///< accelerometer samples clipped at ±full_scale_V
+  std::vector<double> noise_V;        ///< per sensor, standard deviation used
+};
+
+/// The crank drive the scene and its [recording] describe (mean speed,
+/// start angle, fluctuation).
+CrankDrive crank_drive(const Scene& scene, const RecordingSpec& spec);
+
+/// Writes `out` (format by extension), `out` with extension .toml (the
+/// manifest) and `<stem>.truth.csv` beside it (unless !write_truth). All
+/// files appear together or not at all.
+VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec& spec, const CrankDrive& drive,
+                                        const MotionSource& motion, const std::filesystem::path& out,
+                                        const Provenance& provenance, const VirtualRigOptions& options = {});
+
+/// `REC.truth.csv` for `REC.wav`.
+std::filesystem::path truth_path(const std::filesystem::path& recording);
+
+}  // namespace fourbar

@@ -1,0 +1,129 @@
+// The delimited-text reader: delimiters, comments, blank lines, time column,
+// decimal comma, and errors that name file:line:column.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "acquire/reader.hpp"
+#include "common/error.hpp"
+#include "support/temp_dir.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::TempDir;
+
+std::vector<double> read_all(Reader& r) {
+  std::vector<double> all, block(static_cast<std::size_t>(r.info().channels) * 3);  // small blocks on purpose
+  for (std::size_t n; (n = r.read(block)) > 0;)
+    all.insert(all.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(n * r.info().channels));
+  return all;
+}
+
+std::string error_of(const std::filesystem::path& f, const ReaderOptions& o = {}) {
+  try {
+    auto r = open_recording(f, o);
+    read_all(*r);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CsvReader, CommaWithCommentsBlankLinesAndTimeColumn) {
+  TempDir dir;
+  const auto f = dir.write("r.csv",
+                           "# exported by the DAQ\n\n"
+                           "time_s,acc,pulse\n"
+                           "0.5,1.25,0\n"
+                           "# a comment between rows\n"
+                           "\n"
+                           "0.501,-2e-3,5\r\n"
+                           "0.502,3,0\n"
+                           "0.503,4,0\n");
+  auto r = open_recording(f);
+  EXPECT_EQ(r->info().format, "CSV");
+  EXPECT_EQ(r->info().channels, 2);
+  EXPECT_EQ(r->info().frames, 4u);
+  EXPECT_NEAR(r->info().sample_rate_hz, 1000.0, 1e-9);
+  EXPECT_DOUBLE_EQ(r->info().start_time_s, 0.5);
+  EXPECT_EQ(r->info().channel_names, (std::vector<std::string>{"acc", "pulse"}));
+  const auto v = read_all(*r);
+  EXPECT_EQ(v, (std::vector<double>{1.25, 0, -2e-3, 5, 3, 0, 4, 0}));
+  r->rewind();
+  EXPECT_EQ(read_all(*r), v);
+}
+
+TEST(CsvReader, SemicolonWithDecimalCommaAndTab) {
+  TempDir dir;
+  const auto semi = dir.write("s.csv", "t;a;b\n0;1,5;-2\n0,001;2,25;3\n");
+  auto r = open_recording(semi);
+  EXPECT_EQ(read_all(*r), (std::vector<double>{1.5, -2, 2.25, 3}));
+  EXPECT_NEAR(r->info().sample_rate_hz, 1000.0, 1e-9);
+  const auto tab = dir.write("t.tsv", "time [ms]\ta\tb\n0\t1\t2\n0.5\t3\t4\n1.0\t5\t6\n");
+  auto t = open_recording(tab);
+  EXPECT_NEAR(t->info().sample_rate_hz, 2000.0, 1e-9);
+  EXPECT_EQ(read_all(*t), (std::vector<double>{1, 2, 3, 4, 5, 6}));
+}
+
+TEST(CsvReader, NoTimeColumnTakesTheManifestRate) {
+  TempDir dir;
+  const auto f = dir.write("n.csv", "a,b\n1,2\n3,4\n");
+  EXPECT_NE(error_of(f).find("no time column"), std::string::npos) << error_of(f);
+  ReaderOptions o;
+  o.sample_rate_hz = 100;
+  auto r = open_recording(f, o);
+  EXPECT_EQ(r->info().sample_rate_hz, 100);
+  EXPECT_EQ(r->info().channels, 2);
+  o.sample_rate_hz = 0;
+  EXPECT_NE(error_of(f, o).find("must be positive"), std::string::npos);
+}
+
+TEST(CsvReader, NamedTimeColumn) {
+  TempDir dir;
+  const auto f = dir.write("n.csv", "a,clock\n1,0\n3,0.01\n");
+  ReaderOptions o;
+  o.time_column = "clock";
+  auto r = open_recording(f, o);
+  EXPECT_NEAR(r->info().sample_rate_hz, 100, 1e-9);
+  EXPECT_EQ(r->info().channel_names, std::vector<std::string>{"a"});
+  o.time_column = "clok";
+  EXPECT_NE(error_of(f, o).find("did you mean 'clock'"), std::string::npos) << error_of(f, o);
+}
+
+TEST(CsvReader, BadCellsNameFileLineAndColumn) {
+  TempDir dir;
+  const auto nan = dir.write("nan.csv", "time_s,a,b\n0,1,2\n0.1,NaN,2\n0.2,1,2\n");
+  EXPECT_NE(error_of(nan).find("nan.csv:3:2 (column 'a'): 'NaN' is not a finite number"), std::string::npos)
+      << error_of(nan);
+  const auto garbage = dir.write("g.csv", "# c\ntime_s,a\n0,1\n0.1,1.2.3\n");
+  EXPECT_NE(error_of(garbage).find("g.csv:4:2"), std::string::npos) << error_of(garbage);
+  const auto empty_cell = dir.write("e.csv", "time_s,a\n0,1\n0.1,\n0.2,1\n");
+  EXPECT_NE(error_of(empty_cell).find("e.csv:3:2"), std::string::npos) << error_of(empty_cell);
+  const auto short_row = dir.write("short.csv", "time_s,a,b\n0,1,2\n0.1,1\n");
+  EXPECT_NE(error_of(short_row).find("short.csv:3: 2 cells but the header has 3"), std::string::npos)
+      << error_of(short_row);
+  const auto gap = dir.write("gap.csv", "time_s,a\n0,1\n0.1,1\n0.3,1\n0.4,1\n0.5,1\n");
+  EXPECT_NE(error_of(gap).find("gap.csv:4:1 (column 'time_s'): time 0.3 s is not uniform"), std::string::npos) << error_of(gap);
+  const auto constant = dir.write("c.csv", "time_s,a\n1,1\n1,2\n");
+  EXPECT_NE(error_of(constant).find("zero sample rate"), std::string::npos) << error_of(constant);
+  const auto header_only = dir.write("h.csv", "# only\ntime_s,a\n");
+  EXPECT_NE(error_of(header_only).find("no data rows"), std::string::npos) << error_of(header_only);
+  const auto dup = dir.write("d.csv", "time_s,a,a\n0,1,2\n");
+  EXPECT_NE(error_of(dup).find("appears twice"), std::string::npos) << error_of(dup);
+}
+
+TEST(ReaderRegistry, UnknownAndMissingFiles) {
+  TempDir dir;
+  const auto f = dir.write("r.dat", "garbage that is no recording");
+  const std::string e = error_of(f);
+  EXPECT_NE(e.find("unknown recording format"), std::string::npos) << e;
+  EXPECT_NE(e.find("'.dat'"), std::string::npos) << e;
+  EXPECT_NE(error_of(dir.path() / "none.wav").find("no such file"), std::string::npos);
+  const auto empty = dir.write("e.wav", "");
+  EXPECT_NE(error_of(empty).find("empty"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fourbar
