@@ -94,7 +94,18 @@ struct CountingSink : AcquisitionSink {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::printf("usage: bench_acquire [SECONDS [FILE]]\n"
+                "  writes a SECONDS-long 3-channel 25.6 kHz float recording with the virtual rig\n"
+                "  (default 3600 s, kept in the temp folder), then times read + pulses + angle +\n"
+                "  revolutions and reports frames per second and peak memory\n");
+    return 0;
+  }
   const double seconds = argc > 1 ? std::atof(argv[1]) : 3600.0;
+  if (!(seconds >= 1.0)) {
+    std::fprintf(stderr, "bench_acquire: SECONDS must be a number >= 1, not '%s'\n", argv[1]);
+    return 2;
+  }
   const std::filesystem::path file =
       argc > 2 ? std::filesystem::path(argv[2])
                : std::filesystem::temp_directory_path() / ("fourbar_bench_" + std::to_string(static_cast<long>(seconds)) + "s.wav");
