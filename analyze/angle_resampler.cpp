@@ -1,5 +1,7 @@
 #include "analyze/angle_resampler.hpp"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <sstream>
 
@@ -68,6 +70,55 @@ std::vector<double> RevolutionResampler::resample(std::span<const double> channe
     const double* x = channel.data() + base_[g];
     const double* w = weights_.data() + 4 * g;
     out[g] = w[0] * x[0] + w[1] * x[1] + w[2] * x[2] + w[3] * x[3];
+  }
+  return out;
+}
+
+namespace {
+
+// 4-point Lagrange interpolation of `v` at ψ from the stencil around it (ψ
+// increasing along the record; the stencil kept inside the record).
+double lagrange_at(std::span<const double> psi, std::span<const double> v, double x) {
+  const std::size_t n = psi.size();
+  const auto it = std::upper_bound(psi.begin(), psi.end(), x);
+  const std::size_t j = it == psi.begin() ? 0 : static_cast<std::size_t>(it - psi.begin()) - 1;
+  const std::size_t b = std::min(j > 0 ? j - 1 : 0, n - 4);
+  double sum = 0;
+  for (std::size_t a = 0; a < 4; ++a) {
+    double w = 1;
+    for (std::size_t c = 0; c < 4; ++c)
+      if (c != a) w *= (x - psi[b + c]) / (psi[b + a] - psi[b + c]);
+    sum += w * v[b + a];
+  }
+  return sum;
+}
+
+}  // namespace
+
+std::vector<double> crank_periodic_extension(std::span<const double> angle, std::span<const double> values,
+                                             std::size_t pad, double direction, bool before) {
+  const std::size_t n = angle.size();
+  if (n < 4 || values.size() != n)
+    throw InputError("periodic extension: need at least 4 samples with one value each, got " + std::to_string(n) +
+                     " angles and " + std::to_string(values.size()) + " values");
+  const double d = direction < 0 ? -1.0 : 1.0;
+  std::vector<double> psi(n);
+  for (std::size_t i = 0; i < n; ++i) psi[i] = d * angle[i];
+  std::vector<double> out(pad);
+  if (before) {
+    const double step = (psi[3] - psi[0]) / 3, first = psi[0];
+    for (std::size_t m = 1; m <= pad; ++m) {
+      const double x = first - static_cast<double>(m) * step;
+      const double turns = std::ceil((first - x) / units::kTwoPi);
+      out[pad - m] = lagrange_at(psi, values, x + turns * units::kTwoPi);
+    }
+  } else {
+    const double step = (psi[n - 1] - psi[n - 4]) / 3, last = psi[n - 1];
+    for (std::size_t m = 1; m <= pad; ++m) {
+      const double x = last + static_cast<double>(m) * step;
+      const double turns = std::ceil((x - last) / units::kTwoPi);
+      out[m - 1] = lagrange_at(psi, values, x - turns * units::kTwoPi);
+    }
   }
   return out;
 }

@@ -45,4 +45,17 @@ class RevolutionResampler {
   std::vector<double> weights_;         // 4 per grid point
 };
 
+/// The continuation of a crank-locked signal beyond one end of a record by
+/// its periodicity in the crank angle: `pad` samples before the first
+/// (`before`) or after the last, their angles extrapolated at the end
+/// sample's angle step, each value read one or more turns back inside the
+/// record (the first or the last revolution), 4-point Lagrange in the angle.
+/// A record of whole revolutions in steady state continues seamlessly, so a
+/// filter run over the extended record does not ring at its ends (a
+/// mirrored record would: α is not symmetric about the cut). Returned in
+/// time order. `crank_angle_rad` as for RevolutionResampler; the record must
+/// be at least 4 samples long.
+std::vector<double> crank_periodic_extension(std::span<const double> crank_angle_rad, std::span<const double> values,
+                                             std::size_t pad, double direction, bool before);
+
 }  // namespace fourbar
