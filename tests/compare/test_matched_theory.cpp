@@ -11,17 +11,7 @@
 namespace fourbar {
 namespace {
 
-Rig thesis() {
-  Rig r;
-  r.name = "thesis";
-  r.ground_length_m = 0.387;
-  r.crank = {0.064, 0.009, 0.6095, 2645e-6};
-  r.coupler = {0.309, 0.185, 0.2439, 2950e-6};
-  r.rocker = {0.312, 0.134, 0.2334, 3176e-6};
-  r.gravity_m_s2 = 9.8145;
-  r.radial_clearance_m = 0.254e-3;
-  return r;
-}
+Rig thesis() { return thesis_rig(); }  // Table 6.1/7.1, clearance 0.254 mm
 
 TEST(MatchedTheory, NominalSeriesOnTheGridAreTheClosedForm) {
   const Rig rig = thesis();
