@@ -256,6 +256,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   }
 
   // Pass 3: tag samples, resample revolutions.
+  sink.on_plan(report);
   RevolutionBuilder builder(std::move(plan),
                             {n_grid, manifest.crank_direction, pulse.crank_offset_rad, fs, t0, info.frames}, nacc, sink);
   std::vector<double> calibrated(nacc);

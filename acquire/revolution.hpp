@@ -25,6 +25,8 @@
 
 namespace fourbar {
 
+struct AcquisitionReport;
+
 /// A calibrated accelerometer channel.
 struct AcquiredChannel {
   std::string name;            ///< from the manifest; CSV column "<name>_m_s2"
@@ -69,6 +71,11 @@ struct SampleBlock {
 class AcquisitionSink {
  public:
   virtual ~AcquisitionSink() = default;
+  /// Once, before the first sample: the report so far (recording, channels,
+  /// pulses, revolutions, speed statistics, N; not yet the clipping counts),
+  /// so that a consumer can size its work (e.g. filters that follow the
+  /// crank speed) before the samples arrive.
+  virtual void on_plan(const AcquisitionReport&) {}
   virtual void on_samples(const SampleBlock&) {}
   virtual void on_revolution(const Revolution&) {}
 };

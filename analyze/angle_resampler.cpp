@@ -1,5 +1,7 @@
 #include "analyze/angle_resampler.hpp"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <sstream>
 
@@ -8,44 +10,53 @@
 
 namespace fourbar {
 
-RevolutionResampler::RevolutionResampler(std::span<const double> angle, std::size_t n, double start)
-    : n_(n), samples_(angle.size()), start_(start) {
+RevolutionResampler::RevolutionResampler(std::span<const double> angle, std::size_t n, double start,
+                                         double direction)
+    : n_(n), samples_(angle.size()), start_(start), direction_(direction < 0 ? -1.0 : 1.0) {
   if (n < 4) throw InputError("resampling: need at least 4 points per revolution, got " + std::to_string(n));
   if (angle.size() < 4) throw InputError("resampling: need at least 4 samples");
+  // Work in ψ = direction·θ, increasing.
+  const double d = direction_;
   for (std::size_t i = 0; i < angle.size(); ++i) {
-    if (!std::isfinite(angle[i]) || (i > 0 && !(angle[i] > angle[i - 1]))) {
+    if (!std::isfinite(angle[i]) || (i > 0 && !(d * angle[i] > d * angle[i - 1]))) {
       std::ostringstream os;
       os << "resampling: crank angle at sample " << i << " is " << angle[i]
-         << (i > 0 ? " after " + std::to_string(angle[i - 1]) : std::string())
-         << "; it must be finite and strictly increasing (continuous, in the direction of rotation)";
+         << (i > 0 ? " after " + std::to_string(angle[i - 1]) : std::string()) << "; it must be finite and strictly "
+         << (d > 0 ? "increasing" : "decreasing") << " (continuous, in the direction of rotation)";
       throw InputError(os.str());
     }
   }
-  // Whole revolutions inside [angle.front(), angle.back()].
-  first_ = static_cast<long>(std::ceil((angle.front() - start) / units::kTwoPi));
-  const long end = static_cast<long>(std::floor((angle.back() - start) / units::kTwoPi));
-  if (end <= first_) throw InputError("resampling: the samples do not cover one whole crank revolution");
-  revs_ = static_cast<std::size_t>(end - first_);
+  // Revolutions whose grid points lie within the samples, give or take one
+  // sample step at either end.
+  const std::size_t last = angle.size() - 1;
+  const double front = d * angle[0] - d * (angle[1] - angle[0]);
+  const double back = d * angle[last] + d * (angle[last] - angle[last - 1]);
+  const double psi0 = d * start;
+  first_ = static_cast<long>(std::ceil((front - psi0) / units::kTwoPi));
+  const long end =
+      static_cast<long>(std::floor((back - psi0) / units::kTwoPi - static_cast<double>(n - 1) / static_cast<double>(n)));
+  if (end < first_) throw InputError("resampling: the samples do not cover one whole crank revolution");
+  revs_ = static_cast<std::size_t>(end - first_ + 1);
   base_.resize(revs_ * n_);
   weights_.resize(4 * revs_ * n_);
-  std::size_t j = 0;  // angle[j] <= θ < angle[j + 1]
+  std::size_t j = 0;  // ψ[j] <= ψ_grid < ψ[j + 1]
   for (std::size_t g = 0; g < revs_ * n_; ++g) {
-    const double theta = grid_angle_rad(g / n_, g % n_);
-    while (j + 2 < angle.size() && angle[j + 1] <= theta) ++j;
+    const double psi = d * grid_angle_rad(g / n_, g % n_);
+    while (j + 2 < angle.size() && d * angle[j + 1] <= psi) ++j;
     // Stencil j−1 … j+2, kept inside the record.
     const std::size_t b = std::min(j > 0 ? j - 1 : 0, angle.size() - 4);
     base_[g] = b;
     for (int a = 0; a < 4; ++a) {
       double w = 1;
       for (int c = 0; c < 4; ++c)
-        if (c != a) w *= (theta - angle[b + c]) / (angle[b + a] - angle[b + c]);
+        if (c != a) w *= (psi - d * angle[b + c]) / (d * angle[b + a] - d * angle[b + c]);
       weights_[4 * g + a] = w;
     }
   }
 }
 
 double RevolutionResampler::grid_angle_rad(std::size_t r, std::size_t k) const {
-  return start_ + units::kTwoPi * (static_cast<double>(first_ + static_cast<long>(r)) + double(k) / n_);
+  return start_ + direction_ * units::kTwoPi * (static_cast<double>(first_ + static_cast<long>(r)) + double(k) / n_);
 }
 
 std::vector<double> RevolutionResampler::resample(std::span<const double> channel) const {
@@ -59,6 +70,55 @@ std::vector<double> RevolutionResampler::resample(std::span<const double> channe
     const double* x = channel.data() + base_[g];
     const double* w = weights_.data() + 4 * g;
     out[g] = w[0] * x[0] + w[1] * x[1] + w[2] * x[2] + w[3] * x[3];
+  }
+  return out;
+}
+
+namespace {
+
+// 4-point Lagrange interpolation of `v` at ψ from the stencil around it (ψ
+// increasing along the record; the stencil kept inside the record).
+double lagrange_at(std::span<const double> psi, std::span<const double> v, double x) {
+  const std::size_t n = psi.size();
+  const auto it = std::upper_bound(psi.begin(), psi.end(), x);
+  const std::size_t j = it == psi.begin() ? 0 : static_cast<std::size_t>(it - psi.begin()) - 1;
+  const std::size_t b = std::min(j > 0 ? j - 1 : 0, n - 4);
+  double sum = 0;
+  for (std::size_t a = 0; a < 4; ++a) {
+    double w = 1;
+    for (std::size_t c = 0; c < 4; ++c)
+      if (c != a) w *= (x - psi[b + c]) / (psi[b + a] - psi[b + c]);
+    sum += w * v[b + a];
+  }
+  return sum;
+}
+
+}  // namespace
+
+std::vector<double> crank_periodic_extension(std::span<const double> angle, std::span<const double> values,
+                                             std::size_t pad, double direction, bool before) {
+  const std::size_t n = angle.size();
+  if (n < 4 || values.size() != n)
+    throw InputError("periodic extension: need at least 4 samples with one value each, got " + std::to_string(n) +
+                     " angles and " + std::to_string(values.size()) + " values");
+  const double d = direction < 0 ? -1.0 : 1.0;
+  std::vector<double> psi(n);
+  for (std::size_t i = 0; i < n; ++i) psi[i] = d * angle[i];
+  std::vector<double> out(pad);
+  if (before) {
+    const double step = (psi[3] - psi[0]) / 3, first = psi[0];
+    for (std::size_t m = 1; m <= pad; ++m) {
+      const double x = first - static_cast<double>(m) * step;
+      const double turns = std::ceil((first - x) / units::kTwoPi);
+      out[pad - m] = lagrange_at(psi, values, x + turns * units::kTwoPi);
+    }
+  } else {
+    const double step = (psi[n - 1] - psi[n - 4]) / 3, last = psi[n - 1];
+    for (std::size_t m = 1; m <= pad; ++m) {
+      const double x = last + static_cast<double>(m) * step;
+      const double turns = std::ceil((x - last) / units::kTwoPi);
+      out[m - 1] = lagrange_at(psi, values, x - turns * units::kTwoPi);
+    }
   }
   return out;
 }

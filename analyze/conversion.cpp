@@ -9,55 +9,7 @@
 
 namespace fourbar {
 
-namespace {
-
-LinkMotion link_part(const Rig& rig, SensedLink link, const NominalMotion& m) {
-  LinkMotion out;
-  if (link == SensedLink::coupler) {
-    // Crank pin: a_A = l2(α2·n2 − ω2²·u2).
-    const double l2 = rig.crank.length_m, w2 = m.crank.speed_rad_s;
-    out.u = m.pose.u3;
-    out.omega_rad_s = m.omega3_rad_s;
-    out.alpha_rad_s2 = m.alpha3_rad_s2;
-    out.joint_accel_m_s2 = l2 * (m.crank.accel_rad_s2 * m.pose.u2.perp() - w2 * w2 * m.pose.u2);
-  } else {
-    out.u = m.pose.u4;
-    out.omega_rad_s = m.omega4_rad_s;
-    out.alpha_rad_s2 = m.alpha4_rad_s2;
-  }
-  return out;
-}
-
-void check_track(const CrankTrack& crank) {
-  const std::size_t n = crank.size();
-  if (crank.speed_rad_s.size() != n || crank.accel_rad_s2.size() != n) {
-    std::ostringstream os;
-    os << "crank track: " << n << " angles, " << crank.speed_rad_s.size() << " speeds, " << crank.accel_rad_s2.size()
-       << " accelerations; give one crank state per sample";
-    throw InputError(os.str());
-  }
-}
-
-}  // namespace
-
-LinkMotion nominal_link_motion(const Rig& rig, SensedLink link, const CrankState& crank) {
-  return link_part(rig, link, solve_motion(rig, crank));
-}
-
-NominalTracks nominal_link_tracks(const Rig& rig, const CrankTrack& crank) {
-  check_track(crank);
-  NominalTracks t;
-  t.coupler.resize(crank.size());
-  t.rocker.resize(crank.size());
-  for (std::size_t i = 0; i < crank.size(); ++i) {
-    const NominalMotion m = solve_motion(rig, {crank.angle_rad[i], crank.speed_rad_s[i], crank.accel_rad_s2[i]});
-    t.coupler[i] = link_part(rig, SensedLink::coupler, m);
-    t.rocker[i] = link_part(rig, SensedLink::rocker, m);
-  }
-  return t;
-}
-
-double sensor_reading(const Rig& rig, const ResolvedMount& mount, const LinkMotion& k) {
+double sensor_reading(const Rig& rig, const ResolvedMount& mount, const SensedLinkMotion& k) {
   const Vec2 u = k.u, n = u.perp();
   const double w2 = k.omega_rad_s * k.omega_rad_s;
   // a_P = a_J + r(α·n − ω²·u) + h(−α·u − ω²·n); specific force f = a_P + g·ŷ.
@@ -67,7 +19,7 @@ double sensor_reading(const Rig& rig, const ResolvedMount& mount, const LinkMoti
   return mount.sign * dot(f, mount.axis == SensorAxis::tangential ? n : u);
 }
 
-double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const LinkMotion& k,
+double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const SensedLinkMotion& k,
                                             double reading_m_s2) {
   assert(mount.axis == SensorAxis::tangential);
   const Vec2 n = k.u.perp();
@@ -77,22 +29,13 @@ double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount&
          mount.r_m;
 }
 
-double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const LinkMotion& k,
+double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const SensedLinkMotion& k,
                                          double reading_m_s2, double link_alpha_rad_s2) {
   assert(mount.axis == SensorAxis::normal);
   // ω² = (a_J·u − h·α + g·sin θ − s·m)/r, with sin θ = ŷ·u.
   return (dot(k.joint_accel_m_s2, k.u) - mount.h_m * link_alpha_rad_s2 + rig.gravity_m_s2 * k.u.y -
           mount.sign * reading_m_s2) /
          mount.r_m;
-}
-
-std::vector<LinkMotion> nominal_link_track(const Rig& rig, SensedLink link, const CrankTrack& crank) {
-  check_track(crank);
-  const std::size_t n = crank.size();
-  std::vector<LinkMotion> track(n);
-  for (std::size_t i = 0; i < n; ++i)
-    track[i] = nominal_link_motion(rig, link, {crank.angle_rad[i], crank.speed_rad_s[i], crank.accel_rad_s2[i]});
-  return track;
 }
 
 namespace {
@@ -117,58 +60,112 @@ ResolvedMount resolve_axis(const Rig& rig, const AccelerometerMount& mount, Sens
   return r;
 }
 
-}  // namespace
-
-void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount,
-                                          std::span<const LinkMotion> nominal, std::span<const double> reading,
-                                          std::span<double> alpha) {
+// The whole-channel functions, for a nominal motion given per sample by
+// `motion(i)` (a stored track or a table read).
+template <class MotionAt>
+void tangential(const Rig& rig, const AccelerometerMount& mount, std::size_t n, MotionAt motion,
+                std::span<const double> reading, std::span<double> alpha) {
   const ResolvedMount r = resolve_axis(rig, mount, SensorAxis::tangential);
-  check_lengths(mount, nominal.size(), reading.size(), alpha.size());
-  for (std::size_t i = 0; i < reading.size(); ++i)
-    alpha[i] = angular_acceleration_from_tangential(rig, r, nominal[i], reading[i]);
+  check_lengths(mount, n, reading.size(), alpha.size());
+  for (std::size_t i = 0; i < n; ++i) alpha[i] = angular_acceleration_from_tangential(rig, r, motion(i), reading[i]);
 }
 
-void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount,
-                                       std::span<const LinkMotion> nominal, std::span<const double> reading,
-                                       std::span<const double> link_alpha, std::span<double> omega_sq) {
+template <class MotionAt>
+void normal(const Rig& rig, const AccelerometerMount& mount, std::size_t n, MotionAt motion,
+            std::span<const double> reading, std::span<const double> link_alpha, std::span<double> omega_sq) {
   const ResolvedMount r = resolve_axis(rig, mount, SensorAxis::normal);
-  check_lengths(mount, nominal.size(), reading.size(), omega_sq.size());
+  check_lengths(mount, n, reading.size(), omega_sq.size());
   if (r.h_m != 0 && link_alpha.size() != reading.size()) {
     std::ostringstream os;
     os << "channel '" << mount.channel << "': the sensor is offset " << r.h_m * 1e3
        << " mm from the link line, so its normal reading needs the link's angular acceleration per sample";
     throw InputError(os.str());
   }
-  for (std::size_t i = 0; i < reading.size(); ++i)
-    omega_sq[i] = angular_speed_squared_from_normal(rig, r, nominal[i], reading[i],
-                                                    link_alpha.empty() ? 0.0 : link_alpha[i]);
+  for (std::size_t i = 0; i < n; ++i)
+    omega_sq[i] =
+        angular_speed_squared_from_normal(rig, r, motion(i), reading[i], link_alpha.empty() ? 0.0 : link_alpha[i]);
 }
 
-void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, std::span<const LinkMotion> nominal,
-                                double sample_rate_hz, std::span<const double> reading, std::span<double> restored) {
+template <class MotionAt>
+void restore(const Rig& rig, const AccelerometerMount& mount, std::size_t n, MotionAt motion, double sample_rate_hz,
+             std::span<const double> reading, std::span<double> restored) {
   const ResolvedMount r = resolve_mount(rig, mount);
-  check_lengths(mount, nominal.size(), reading.size(), restored.size());
+  check_lengths(mount, n, reading.size(), restored.size());
   if (reading.empty()) return;
   if (r.high_pass_corner_hz == 0) {
-    std::copy(reading.begin(), reading.end(), restored.begin());
+    if (restored.data() != reading.data()) std::copy(reading.begin(), reading.end(), restored.begin());
     return;
   }
   // Model mean of the reading: its known part at the nominal link motion with
   // α replaced by the record's mean α (periodic motion: ≈ 0).
-  const std::size_t n = reading.size();
-  const LinkMotion& first = nominal.front();
-  const LinkMotion& last = nominal.back();
+  const SensedLinkMotion first = motion(0), last = motion(n - 1);
   // Sample mean of α: Σα_i = ∫α dt·fs + (α_0 + α_{n−1})/2 (trapezoid rule),
   // with ∫α dt = ω_end − ω_start.
   const double mean_alpha =
       ((last.omega_rad_s - first.omega_rad_s) * sample_rate_hz + 0.5 * (first.alpha_rad_s2 + last.alpha_rad_s2)) / n;
   double sum = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    LinkMotion k = nominal[i];
+    SensedLinkMotion k = motion(i);
     if (r.axis == SensorAxis::tangential) k.alpha_rad_s2 = mean_alpha;
     sum += sensor_reading(rig, r, k);
   }
   undo_sensor_high_pass(reading, sample_rate_hz, r.high_pass_corner_hz, sum / n, restored);
+}
+
+auto from_track(std::span<const SensedLinkMotion> nominal) {
+  return [nominal](std::size_t i) { return nominal[i]; };
+}
+
+auto from_table(const LinkTable& table, const CrankTrack& crank) {
+  check_crank_track(crank);
+  return [&table, crank](std::size_t i) { return table.motion(crank.at(i)); };
+}
+
+void check_table(const AccelerometerMount& mount, const LinkTable& table) {
+  if (table.link() != mount.link)
+    throw InputError("channel '" + mount.channel + "' is on the " + to_string(mount.link) + " but the table is the " +
+                     to_string(table.link()) + "'s");
+}
+
+}  // namespace
+
+void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount,
+                                          std::span<const SensedLinkMotion> nominal, std::span<const double> reading,
+                                          std::span<double> alpha) {
+  tangential(rig, mount, nominal.size(), from_track(nominal), reading, alpha);
+}
+
+void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount,
+                                       std::span<const SensedLinkMotion> nominal, std::span<const double> reading,
+                                       std::span<const double> link_alpha, std::span<double> omega_sq) {
+  normal(rig, mount, nominal.size(), from_track(nominal), reading, link_alpha, omega_sq);
+}
+
+void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount,
+                                std::span<const SensedLinkMotion> nominal, double sample_rate_hz,
+                                std::span<const double> reading, std::span<double> restored) {
+  restore(rig, mount, nominal.size(), from_track(nominal), sample_rate_hz, reading, restored);
+}
+
+void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
+                                          const CrankTrack& crank, std::span<const double> reading,
+                                          std::span<double> alpha) {
+  check_table(mount, table);
+  tangential(rig, mount, crank.size(), from_table(table, crank), reading, alpha);
+}
+
+void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
+                                       const CrankTrack& crank, std::span<const double> reading,
+                                       std::span<const double> link_alpha, std::span<double> omega_sq) {
+  check_table(mount, table);
+  normal(rig, mount, crank.size(), from_table(table, crank), reading, link_alpha, omega_sq);
+}
+
+void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
+                                const CrankTrack& crank, double sample_rate_hz, std::span<const double> reading,
+                                std::span<double> restored) {
+  check_table(mount, table);
+  restore(rig, mount, crank.size(), from_table(table, crank), sample_rate_hz, reading, restored);
 }
 
 void thesis_angular_acceleration(const Rig& rig, SensedLink link, int axis_sign, double crank_speed_rad_s,

@@ -31,52 +31,23 @@
 #include <span>
 #include <vector>
 
+#include "analyze/link_motion.hpp"
 #include "analyze/sensor_mount.hpp"
-#include "sim/nominal/kinematics.hpp"
 
 namespace fourbar {
 
-/// Crank state per sample, as measured (acquire): continuous angle, speed,
-/// acceleration. All spans have the length of the channel.
-struct CrankTrack {
-  std::span<const double> angle_rad, speed_rad_s, accel_rad_s2;
-  std::size_t size() const { return angle_rad.size(); }
-};
-
-/// The motion of the sensed link at one instant.
-struct LinkMotion {
-  Vec2 u;                 ///< link direction
-  double omega_rad_s = 0;
-  double alpha_rad_s2 = 0;
-  Vec2 joint_accel_m_s2;  ///< a_J of the link's first joint
-};
-
-/// The nominal motion of the sensed link at one crank state.
-LinkMotion nominal_link_motion(const Rig& rig, SensedLink link, const CrankState& crank);
-
-/// The same for every sample of a crank track: computed once per record and
-/// link, shared by all channels on that link. Throws InputError when the
-/// track's spans differ in length.
-std::vector<LinkMotion> nominal_link_track(const Rig& rig, SensedLink link, const CrankTrack& crank);
-
-/// Both links' tracks in one pass (one nominal solution per sample).
-struct NominalTracks {
-  std::vector<LinkMotion> coupler, rocker;
-};
-NominalTracks nominal_link_tracks(const Rig& rig, const CrankTrack& crank);
-
 /// Forward model: the reading (m/s², DC-coupled) of the sensor for a link
 /// motion (any ω, α; e.g. the nominal one, or a measured/simulated one).
-double sensor_reading(const Rig& rig, const ResolvedMount& mount, const LinkMotion& motion);
+double sensor_reading(const Rig& rig, const ResolvedMount& mount, const SensedLinkMotion& motion);
 
 /// α of the sensed link from one tangential reading (DC-coupled, m/s²), the
 /// link's angle (and ω, for the offset term) taken from `nominal`.
-double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const LinkMotion& nominal,
+double angular_acceleration_from_tangential(const Rig& rig, const ResolvedMount& mount, const SensedLinkMotion& nominal,
                                             double reading_m_s2);
 
 /// ω² of the sensed link from one normal reading; `link_alpha_rad_s2` is only
 /// used when the sensor is offset from the link line (h ≠ 0).
-double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const LinkMotion& nominal,
+double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mount, const SensedLinkMotion& nominal,
                                          double reading_m_s2, double link_alpha_rad_s2);
 
 /// Whole channel: α per sample from a tangential channel (DC-coupled or
@@ -84,7 +55,7 @@ double angular_speed_squared_from_normal(const Rig& rig, const ResolvedMount& mo
 /// mount's link. Throws InputError when the mount is bad, the mount is not
 /// tangential, or lengths differ. `alpha_rad_s2` may alias `reading_m_s2`.
 void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount,
-                                          std::span<const LinkMotion> nominal, std::span<const double> reading_m_s2,
+                                          std::span<const SensedLinkMotion> nominal, std::span<const double> reading_m_s2,
                                           std::span<double> alpha_rad_s2);
 
 /// Whole channel: ω² per sample from a normal channel. `link_alpha_rad_s2`
@@ -92,7 +63,7 @@ void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMou
 /// AC-coupled normal channel the mean of ω² is not observed (the sensor's
 /// high-pass removed it); only its variation is.
 void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount,
-                                       std::span<const LinkMotion> nominal, std::span<const double> reading_m_s2,
+                                       std::span<const SensedLinkMotion> nominal, std::span<const double> reading_m_s2,
                                        std::span<const double> link_alpha_rad_s2, std::span<double> omega_sq_rad2_s2);
 
 /// For an AC-coupled (piezo) channel: undoes the sensor's first-order
@@ -102,8 +73,21 @@ void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount&
 /// following from ω_end − ω_start of the nominal mechanism at the measured
 /// end states (≈ 0 for whole revolutions). For a DC-coupled mount (corner 0)
 /// copies the reading. `restored_m_s2` may alias `reading_m_s2`.
-void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, std::span<const LinkMotion> nominal,
+void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, std::span<const SensedLinkMotion> nominal,
                                 double sample_rate_hz, std::span<const double> reading_m_s2,
+                                std::span<double> restored_m_s2);
+
+/// The three whole-channel functions above with the nominal motion read
+/// from a table at the measured crank states (`crank`, one per sample)
+/// instead of a stored track: no per-sample memory, one table read per sample.
+void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
+                                          const CrankTrack& crank, std::span<const double> reading_m_s2,
+                                          std::span<double> alpha_rad_s2);
+void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
+                                       const CrankTrack& crank, std::span<const double> reading_m_s2,
+                                       std::span<const double> link_alpha_rad_s2, std::span<double> omega_sq_rad2_s2);
+void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
+                                const CrankTrack& crank, double sample_rate_hz, std::span<const double> reading_m_s2,
                                 std::span<double> restored_m_s2);
 
 /// The thesis conversion as printed (eq. 7.2.1-6 coupler, 7.2.2-1 rocker),

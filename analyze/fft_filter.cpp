@@ -48,31 +48,41 @@ std::size_t transform_size(const FilterSpec& spec, double fs, std::size_t length
 
 }  // namespace
 
+std::vector<double> zero_phase_response(const FilterSpec& spec, double fs, std::size_t n) {
+  validate_filter(spec, fs);
+  if (spec.transition_hz > 0) {
+    RealFft fft(n);
+    return kernel_response(design_kernel(spec, fs), fft);
+  }
+  const std::vector<Band> bands = pass_bands(spec, fs);
+  std::vector<double> h(n / 2 + 1);
+  for (std::size_t k = 0; k < h.size(); ++k) h[k] = passes(bands, fs * k / n) ? 1.0 : 0.0;
+  return h;
+}
+
 FftFilter::FftFilter(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary)
-    : length_(length), reflect_(boundary == Boundary::reflect), fft_(transform_size(spec, fs, length, boundary)) {
+    : length_(length), reflect_(boundary == Boundary::reflect), zero_(boundary == Boundary::zero), fft_(transform_size(spec, fs, length, boundary)) {
   const std::size_t n = fft_.size();
   if (spec.transition_hz == 0) {
-    const std::vector<Band> bands = pass_bands(spec, fs);
-    response_.resize(fft_.bins());
-    for (std::size_t k = 0; k < response_.size(); ++k) response_[k] = passes(bands, fs * k / n) ? 1.0 : 0.0;
+    response_ = zero_phase_response(spec, fs, n);
   } else {
     response_ = kernel_response(design_kernel(spec, fs), fft_);
   }
 }
 
 void FftFilter::apply(std::span<const double> in, std::span<double> out) {
-  assert(in.size() == length_ && out.size() == length_);
-  const std::size_t n = fft_.size();
+  assert(out.size() == in.size() && (in.size() == length_ || (zero_ && in.size() <= length_)));
+  const std::size_t n = fft_.size(), len = in.size();
   auto t = fft_.time();
   std::copy(in.begin(), in.end(), t.begin());
-  if (reflect_) std::reverse_copy(in.begin(), in.end(), t.begin() + length_);
-  else std::fill(t.begin() + length_, t.end(), 0.0);
+  if (reflect_) std::reverse_copy(in.begin(), in.end(), t.begin() + len);
+  else std::fill(t.begin() + len, t.end(), 0.0);
   fft_.forward();
   auto s = fft_.spectrum();
   const double scale = 1.0 / n;
   for (std::size_t k = 0; k < s.size(); ++k) s[k] *= response_[k] * scale;
   fft_.inverse();
-  std::copy(t.begin(), t.begin() + length_, out.begin());
+  std::copy(t.begin(), t.begin() + len, out.begin());
 }
 
 namespace {

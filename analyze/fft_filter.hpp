@@ -37,15 +37,21 @@ class FftFilter {
   /// The real (zero-phase) response at bin k, frequency k·fs/fft_size().
   std::span<const double> response() const { return response_; }
 
-  /// Filters `in` (length() samples) into `out` (may be the same memory).
+  /// Filters `in` (length() samples; with zero boundaries any length up to
+  /// length()) into `out` of the same size (may be the same memory).
   void apply(std::span<const double> in, std::span<double> out);
 
  private:
   std::size_t length_;
-  bool reflect_;
+  bool reflect_, zero_;
   RealFft fft_;
   std::vector<double> response_;
 };
+
+/// The filter's real (zero-phase) response at the n/2 + 1 frequencies
+/// k·fs/n: the ideal response for transition 0, else the kernel's (wrapped
+/// modulo n when longer, which samples its response exactly).
+std::vector<double> zero_phase_response(const FilterSpec& spec, double sample_rate_hz, std::size_t n);
 
 class OverlapSaveFilter {
  public:

@@ -1,5 +1,6 @@
 #include "analyze/link_analysis.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "common/error.hpp"
@@ -37,34 +38,59 @@ bool same(const FilterSpec& a, const FilterSpec& b) {
 
 }  // namespace
 
-RecordAnalyzer::RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double fs, const AngleGridSpec& grid)
-    : rig_(rig), crank_(crank), fs_(fs), grid_(crank.angle_rad, grid.points_per_rev, grid.start_rad) {
-  if (crank.speed_rad_s.size() != crank.size() || crank.accel_rad_s2.size() != crank.size())
-    throw InputError("crank track: angles, speeds and accelerations differ in length");
+RecordAnalyzer::RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double fs, const AngleGridSpec& grid,
+                               std::shared_ptr<const RigTables> tables)
+    : rig_(rig),
+      crank_(crank),
+      fs_(fs),
+      direction_(grid.direction < 0 ? -1.0 : 1.0),
+      grid_(crank.angle_rad, grid.points_per_rev, grid.start_rad, grid.direction),
+      tables_(std::move(tables)) {
+  check_crank_track(crank);
   speed_grid_ = grid_.resample(crank.speed_rad_s);
+  if (!tables_) tables_ = std::make_shared<const RigTables>(rig);
 }
 
-const std::vector<LinkMotion>& RecordAnalyzer::track(SensedLink link) {
-  if (!tracks_) tracks_ = nominal_link_tracks(rig_, crank_);
-  return link == SensedLink::coupler ? tracks_->coupler : tracks_->rocker;
-}
-
-FftFilter& RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary) {
-  for (CachedFilter& c : filters_)
-    if (c.boundary == boundary && same(c.spec, spec)) return *c.filter;
-  filters_.push_back({spec, boundary, std::make_unique<FftFilter>(spec, fs_, crank_.size(), boundary)});
-  return *filters_.back().filter;
+void RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary, std::span<double> x) {
+  auto cached = std::find_if(filters_.begin(), filters_.end(),
+                             [&](const CachedFilter& c) { return c.boundary == boundary && same(c.spec, spec); });
+  if (cached == filters_.end()) {
+    filters_.push_back({spec, boundary, std::make_unique<FftFilter>(spec, fs_, crank_.size(), boundary)});
+    cached = filters_.end() - 1;
+  }
+  cached->filter->apply(x, x);
 }
 
 std::vector<double> RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const double> reading,
-                                              std::span<const double> link_alpha, const ChannelOptions& opt) {
-  const std::vector<LinkMotion>& nominal = track(mount.link);
+                                              std::span<const double> link_alpha) {
+  const LinkTable& table = (*tables_)[mount.link];
   std::vector<double> x(reading.size());
-  restore_dc_coupled_reading(rig_, mount, nominal, fs_, reading, x);
-  if (mount.axis == SensorAxis::tangential) angular_acceleration_from_tangential(rig_, mount, nominal, x, x);
-  else angular_speed_squared_from_normal(rig_, mount, nominal, x, link_alpha, x);
-  filter(opt.filter, opt.boundary).apply(x, x);
+  restore_dc_coupled_reading(rig_, mount, table, crank_, fs_, reading, x);
+  if (mount.axis == SensorAxis::tangential) angular_acceleration_from_tangential(rig_, mount, table, crank_, x, x);
+  else angular_speed_squared_from_normal(rig_, mount, table, crank_, x, link_alpha, x);
   return x;
+}
+
+LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method) {
+  LinkGrids out;
+  const std::size_t N = grid_.points_per_rev();
+  out.points_per_rev = N;
+  out.revolutions = grid_.revolutions();
+  out.first_revolution = grid_.first_revolution();
+  out.alpha_grid = grid_.resample(alpha);
+  out.omega_grid.resize(out.alpha_grid.size());
+  // Integrate in ψ = direction·θ2 (increasing): dω/dψ = α/(direction·ω2),
+  // and over one turn Δθ_link/Δψ = direction·turns.
+  PeriodicIntegrator integrator(N);
+  std::vector<double> psi_speed(N);
+  const double turns = direction_ * link_turns_per_crank_turn(rig_, link);
+  for (std::size_t r = 0; r < out.revolutions; ++r) {
+    const std::size_t at = r * N;
+    for (std::size_t k = 0; k < N; ++k) psi_speed[k] = direction_ * speed_grid_[at + k];
+    integrator.integrate(method, std::span(out.alpha_grid).subspan(at, N), psi_speed, turns,
+                         std::span(out.omega_grid).subspan(at, N));
+  }
+  return out;
 }
 
 LinkAnalysis RecordAnalyzer::tangential(const AccelerometerMount& mount, std::span<const double> reading,
@@ -72,23 +98,11 @@ LinkAnalysis RecordAnalyzer::tangential(const AccelerometerMount& mount, std::sp
   require_axis(mount, SensorAxis::tangential);
   LinkAnalysis out;
   out.link = mount.link;
-  out.alpha_rad_s2 = converted(mount, reading, {}, opt);
-  // Onto the crank-angle grid; integrate each revolution.
-  const std::size_t N = grid_.points_per_rev();
-  out.points_per_rev = N;
-  out.revolutions = grid_.revolutions();
-  out.first_revolution = grid_.first_revolution();
-  out.alpha_grid = grid_.resample(out.alpha_rad_s2);
-  out.omega_grid.resize(out.alpha_grid.size());
-  PeriodicIntegrator integrator(N);
-  const double turns = link_turns_per_crank_turn(rig_, mount.link);
-  for (std::size_t r = 0; r < out.revolutions; ++r) {
-    const std::size_t at = r * N;
-    integrator.integrate(opt.integration, std::span(out.alpha_grid).subspan(at, N),
-                         std::span(speed_grid_).subspan(at, N), turns, std::span(out.omega_grid).subspan(at, N));
-  }
-  out.alpha = guarded_average(out.alpha_grid, out.revolutions, N, opt.guard_revolutions);
-  out.omega = guarded_average(out.omega_grid, out.revolutions, N, opt.guard_revolutions);
+  out.alpha_rad_s2 = converted(mount, reading);
+  filter(opt.filter, opt.boundary, out.alpha_rad_s2);
+  static_cast<LinkGrids&>(out) = on_grid(mount.link, out.alpha_rad_s2, opt.integration);
+  out.alpha = guarded_average(out.alpha_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
+  out.omega = guarded_average(out.omega_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
   return out;
 }
 
@@ -98,7 +112,9 @@ NormalChannelAnalysis RecordAnalyzer::normal(const AccelerometerMount& mount, st
   NormalChannelAnalysis out;
   out.points_per_rev = grid_.points_per_rev();
   out.revolutions = grid_.revolutions();
-  out.omega_sq_grid = grid_.resample(converted(mount, reading, link_alpha, opt));
+  std::vector<double> x = converted(mount, reading, link_alpha);
+  filter(opt.filter, opt.boundary, x);
+  out.omega_sq_grid = grid_.resample(x);
   out.omega_sq = guarded_average(out.omega_sq_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
   return out;
 }

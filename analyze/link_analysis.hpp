@@ -24,7 +24,8 @@ namespace fourbar {
 
 struct AngleGridSpec {
   std::size_t points_per_rev = 720;
-  double start_rad = 0;  ///< crank angle of grid point 0 (the pulse position: 0)
+  double start_rad = 0;   ///< crank angle of grid point 0 (the pulse position: 0)
+  double direction = 1;   ///< +1: the crank turns counter-clockwise (θ2 increases); −1 clockwise
 };
 
 struct ChannelOptions {
@@ -39,12 +40,16 @@ struct ChannelOptions {
   std::size_t guard_revolutions = 0;
 };
 
-struct LinkAnalysis {
+/// α and ω of one link on the crank-angle grid, revolution by revolution.
+struct LinkGrids {
+  std::size_t points_per_rev = 0, revolutions = 0;
+  long first_revolution = 0;                   ///< index of grid revolution 0 (see RevolutionResampler)
+  std::vector<double> alpha_grid, omega_grid;  ///< revolutions × N, row-major
+};
+
+struct LinkAnalysis : LinkGrids {
   SensedLink link = SensedLink::coupler;
   std::vector<double> alpha_rad_s2;  ///< per sample: converted and filtered
-  std::size_t points_per_rev = 0, revolutions = 0;
-  long first_revolution = 0;         ///< index of grid revolution 0 (see RevolutionResampler)
-  std::vector<double> alpha_grid, omega_grid;  ///< revolutions × N, row-major
   AngleAverage alpha, omega;         ///< over the revolutions, less the guard revolutions
 };
 
@@ -60,17 +65,29 @@ struct NormalChannelAnalysis {
   AngleAverage omega_sq;              ///< less the guard revolutions
 };
 
+/// The nominal-motion tables of both links for one rig (link_motion.hpp),
+/// made once and shared by every record (or chunk of a record) analysed.
+struct RigTables {
+  explicit RigTables(const Rig& rig) : coupler(rig, SensedLink::coupler), rocker(rig, SensedLink::rocker) {}
+  const LinkTable& operator[](SensedLink link) const { return link == SensedLink::coupler ? coupler : rocker; }
+  LinkTable coupler, rocker;
+};
+
 class RecordAnalyzer {
  public:
   /// Plans the grid over the record's crank track (kept by reference: the
-  /// spans must outlive the analyzer). Throws InputError for a bad track.
-  RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double sample_rate_hz, const AngleGridSpec& grid);
+  /// spans must outlive the analyzer). `tables`: the rig's nominal-motion
+  /// tables when already made (else made here). Throws InputError for a bad
+  /// track.
+  RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double sample_rate_hz, const AngleGridSpec& grid,
+                 std::shared_ptr<const RigTables> tables = nullptr);
 
   const RevolutionResampler& grid() const { return grid_; }
-  /// Crank speed on the grid, revolutions × N.
+  /// Crank speed ω2 on the grid, revolutions × N.
   const std::vector<double>& crank_speed_grid() const { return speed_grid_; }
 
-  /// A tangential channel. Throws InputError for a bad mount, filter or length.
+  /// A tangential channel: converted → filtered → on the grid and integrated
+  /// → averaged. Throws InputError for a bad mount, filter or length.
   LinkAnalysis tangential(const AccelerometerMount& mount, std::span<const double> reading_m_s2,
                           const ChannelOptions& options);
 
@@ -80,19 +97,27 @@ class RecordAnalyzer {
   NormalChannelAnalysis normal(const AccelerometerMount& mount, std::span<const double> reading_m_s2,
                                std::span<const double> link_alpha_rad_s2, const ChannelOptions& options);
 
- private:
-  const std::vector<LinkMotion>& track(SensedLink link);
-  FftFilter& filter(const FilterSpec& spec, Boundary boundary);
-  /// restore → convert → filter, per sample.
-  std::vector<double> converted(const AccelerometerMount& mount, std::span<const double> reading,
-                                std::span<const double> link_alpha, const ChannelOptions& options);
+  // The steps, for callers that filter or average themselves (the streaming
+  // pipeline, pipeline.hpp):
+  /// Restored (AC-coupled mount) and converted, per sample: α for a
+  /// tangential mount, ω² for a normal one (`link_alpha_rad_s2` as in normal()).
+  std::vector<double> converted(const AccelerometerMount& mount, std::span<const double> reading_m_s2,
+                                std::span<const double> link_alpha_rad_s2 = {});
+  /// Filters `x` (one value per sample) in place with a filter made once per
+  /// spec and boundary.
+  void filter(const FilterSpec& spec, Boundary boundary, std::span<double> x);
+  /// α per sample (filtered) of `link` onto the grid, each revolution
+  /// integrated to ω (periodic, the constant from the mechanism's topology).
+  LinkGrids on_grid(SensedLink link, std::span<const double> alpha_rad_s2, PeriodicMethod method);
 
+ private:
   const Rig& rig_;
   CrankTrack crank_;
   double fs_;
+  double direction_;
   RevolutionResampler grid_;
   std::vector<double> speed_grid_;
-  std::optional<NominalTracks> tracks_;  // both links, made on first use
+  std::shared_ptr<const RigTables> tables_;
   struct CachedFilter {
     FilterSpec spec;
     Boundary boundary;

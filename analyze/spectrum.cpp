@@ -84,6 +84,71 @@ Spectrum welch_psd(std::span<const double> x, double fs, const WelchOptions& o) 
   return s;
 }
 
+SpectrumAverager::SpectrumAverager(double fs, const WelchOptions& o)
+    : fs_(fs), m_(o.segment_length), step_(o.segment_length - o.overlap) {
+  check_rate(fs);
+  validate_window(o.window, "spectrum window");
+  if (m_ < 2 || o.overlap >= m_) {
+    std::ostringstream os;
+    os << "spectrum: segment length " << m_ << " must be at least 2 and above the overlap " << o.overlap;
+    throw InputError(os.str());
+  }
+  window_ = make_window(o.window, m_, WindowSymmetry::periodic);
+  for (double v : window_) gain_ += v, power_ += v * v;
+  fft_ = std::make_unique<RealFft>(m_);
+  sum_.assign(fft_->bins(), 0.0);
+  pending_.reserve(m_);
+}
+
+SpectrumAverager::~SpectrumAverager() = default;
+
+void SpectrumAverager::push(std::span<const double> x) {
+  while (!x.empty()) {
+    const std::size_t take = std::min(x.size(), m_ - pending_.size());
+    pending_.insert(pending_.end(), x.begin(), x.begin() + static_cast<std::ptrdiff_t>(take));
+    x = x.subspan(take);
+    if (pending_.size() == m_) {
+      run_segment();
+      pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(step_));
+    }
+  }
+}
+
+void SpectrumAverager::restart() { pending_.clear(); }
+
+void SpectrumAverager::run_segment() {
+  const double mean = std::accumulate(pending_.begin(), pending_.end(), 0.0) / static_cast<double>(m_);
+  auto t = fft_->time();
+  for (std::size_t i = 0; i < m_; ++i) t[i] = (pending_[i] - mean) * window_[i];
+  fft_->forward();
+  const auto s = fft_->spectrum();
+  for (std::size_t k = 0; k < sum_.size(); ++k) sum_[k] += std::norm(s[k]);
+  ++segments_;
+}
+
+std::vector<double> SpectrumAverager::frequency_hz() const { return frequencies(m_, fs_); }
+
+namespace {
+// One-sided factor: 2 except at DC and (even length) Nyquist.
+double one_sided(std::size_t k, std::size_t m) { return k == 0 || (m % 2 == 0 && k == m / 2) ? 1.0 : 2.0; }
+}  // namespace
+
+std::vector<double> SpectrumAverager::amplitude() const {
+  std::vector<double> a(sum_.size(), 0.0);
+  if (segments_ == 0) return a;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    a[k] = std::sqrt(sum_[k] / static_cast<double>(segments_)) * one_sided(k, m_) / gain_;
+  return a;
+}
+
+std::vector<double> SpectrumAverager::psd() const {
+  std::vector<double> p(sum_.size(), 0.0);
+  if (segments_ == 0) return p;
+  for (std::size_t k = 0; k < p.size(); ++k)
+    p[k] = sum_[k] * one_sided(k, m_) / (fs_ * power_ * static_cast<double>(segments_));
+  return p;
+}
+
 std::vector<double> order_axis(std::span<const double> frequency_hz, double crank_speed_rad_s) {
   const double f_crank = std::abs(crank_speed_rad_s) / units::kTwoPi;
   if (!(f_crank > 0) || !std::isfinite(f_crank)) {

@@ -10,10 +10,15 @@
 //    segment removed; the definition of scipy.signal.welch(detrend='constant',
 //    scaling='density'), whose periodic windows it uses too.
 
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "analyze/window.hpp"
+
+namespace fourbar {
+class RealFft;
+}
 
 namespace fourbar {
 
@@ -36,6 +41,42 @@ struct WelchOptions {
 /// or longer than the record, the overlap is not below the segment length,
 /// or the window is bad.
 Spectrum welch_psd(std::span<const double> x, double sample_rate_hz, const WelchOptions& options);
+
+/// Welch's segmentation as a stream, for records too long to hold: push
+/// samples in order in blocks of any size; each full segment (windowed,
+/// its mean removed) is transformed and its |X|² summed. psd() equals
+/// welch_psd on the same samples; amplitude() is √(mean |X|²) corrected for
+/// the window's coherent gain, so a steady sinusoid of amplitude A centred
+/// on a bin reads A (an RMS-averaged amplitude spectrum).
+class SpectrumAverager {
+ public:
+  /// Throws InputError for a segment shorter than 2, an overlap not below
+  /// it, a bad rate or window.
+  SpectrumAverager(double sample_rate_hz, const WelchOptions& options);
+  ~SpectrumAverager();
+
+  void push(std::span<const double> x);
+  /// A break in the record: the partial segment is dropped.
+  void restart();
+
+  std::size_t segments() const { return segments_; }
+  std::size_t segment_length() const { return m_; }
+  std::vector<double> frequency_hz() const;
+  std::vector<double> amplitude() const;
+  std::vector<double> psd() const;
+
+ private:
+  void run_segment();
+
+  double fs_;
+  std::size_t m_, step_;
+  std::vector<double> window_;
+  double gain_ = 0, power_ = 0;  // Σw, Σw²
+  std::unique_ptr<RealFft> fft_;
+  std::vector<double> pending_;  // samples of the segment being filled
+  std::vector<double> sum_;      // Σ|X_k|²
+  std::size_t segments_ = 0;
+};
 
 /// Order of each frequency: f / f_crank, with f_crank = |ω2|/2π.
 std::vector<double> order_axis(std::span<const double> frequency_hz, double crank_speed_rad_s);

@@ -80,7 +80,7 @@ void BM_ConvertTangential(benchmark::State& state) {
   std::vector<double> out(f.rec.angle.size());
   for (auto _ : state) {
     // The nominal link track (once per record and link) and the conversion.
-    const std::vector<LinkMotion> track = nominal_link_track(f.rig.rig, SensedLink::coupler, f.rec.crank());
+    const std::vector<SensedLinkMotion> track = nominal_link_track(f.rig.rig, SensedLink::coupler, f.rec.crank());
     angular_acceleration_from_tangential(f.rig.rig, f.coupler_t, track, f.rec.channels[0].recorded, out);
     benchmark::DoNotOptimize(out.data());
   }

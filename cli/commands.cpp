@@ -6,6 +6,8 @@ namespace fourbar::cli {
 
 std::span<const Command> commands() {
   static constexpr std::array table{
+      Command{"report", "the main job: a session folder of recordings -> one HTML report, theory over measurement",
+              run_report},
       Command{"sim", "simulate a scene (nominal or clearance model) and write CSV + JSON", run_sim},
       Command{"rig", "check a rig file and report its class, assembly and transmission angles", run_rig},
       Command{"sweep", "run the clearance model over a clearance x rpm x e x mu grid, one table", run_sweep},

@@ -1,12 +1,17 @@
 // `fourbar virtual-rig SCENE.toml --out REC.wav`: the recording (plus its
 // manifest and the truth) that the rig's sensors would produce for a scene.
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <memory>
 
 #include "cli/command.hpp"
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
 #include "common/provenance.hpp"
+#include "common/units.hpp"
+#include "sim/virtual_rig/clearance_motion_source.hpp"
 #include "sim/virtual_rig/virtual_rig.hpp"
 
 namespace po = boost::program_options;
@@ -19,13 +24,17 @@ constexpr const char* kDetails = R"(Writes REC (format by extension: .wav .w64 .
 REC's manifest (same name, .toml) and REC's truth (<stem>.truth.csv: crank_deg,
 time_s, theta2..alpha4 and each sensor's true specific force <name>_m_s2, plus
 <name>_hp_m_s2 after the high-pass of an AC-coupled sensor), from the scene's
-nominal motion at its crank_speed_rpm and start_angle_deg.
+motion at its crank_speed_rpm and start_angle_deg: the nominal mechanism
+(model = "nominal") or the clearance model (model = "clearance", with the
+scene's [clearance] table, started warmup_revolutions turns before the
+recording; the manifest then carries the scene's clearance).
 
 The scene's [recording] table (README "Virtual rig" lists every key):
   sample_rate_hz, duration_s | revolutions, sample_format (pcm16 pcm24 pcm32
   float double), full_scale_V, quantisation_bits, noise_snr_db,
   hum_frequency_hz, hum_mV, hum_harmonics, speed_fluctuation_pct,
-  speed_fluctuation_period_s, seed, notes;
+  speed_fluctuation_period_s, seed, notes, warmup_revolutions (clearance
+  scenes, default 20);
   [recording.pulse] name, angle_deg, low_V, high_V, polarity, width_deg,
   rise_us, jitter_us, noise_mV, missing, echo, echo_delay_ms;
   [[recording.sensor]] name, role, position_mm, offset_mm, axis_sign,
@@ -51,11 +60,25 @@ int run_virtual_rig(const Invocation& inv) {
   const std::filesystem::path out_path(out);
   if (out_path.has_parent_path()) ensure_output_dir(out_path.parent_path());
   const CrankDrive drive = crank_drive(scene, spec);
-  const NominalMotionSource motion(scene.rig, drive);
+  std::unique_ptr<MotionSource> motion;
+  if (scene.model == Model::clearance) {
+    // Simulated from warmup_revolutions turns before the earliest time the rig
+    // asks for (the AC filters' run-in), to past the end.
+    double run_in_s = 0;
+    for (const auto& c : spec.sensors)
+      if (c.ac_coupled) run_in_s = std::max(run_in_s, 12.0 / (units::kTwoPi * c.highpass_hz));
+    const double period_s = units::kTwoPi / std::abs(drive.mean_speed_rad_s);
+    const double duration_s = spec.duration_s ? *spec.duration_s : *spec.revolutions * period_s;
+    motion = std::make_unique<ClearanceMotionSource>(scene.rig, drive, scene.clearance, scene.clearance_m(),
+                                                     -run_in_s - (spec.warmup_revolutions + 1) * period_s,
+                                                     duration_s + period_s, 1.0 / spec.sample_rate_hz);
+  } else {
+    motion = std::make_unique<NominalMotionSource>(scene.rig, drive);
+  }
   VirtualRigOptions options;
   options.write_truth = !no_truth;
   const VirtualRigResult r =
-      make_virtual_recording(scene, spec, drive, motion, out_path, Provenance{inv.command_line, {scene.source, scene.rig->source}}, options);
+      make_virtual_recording(scene, spec, drive, *motion, out_path, Provenance{inv.command_line, {scene.source, scene.rig->source}}, options);
   std::cout << "wrote " << r.recording.string() << " (" << r.frames << " frames x " << r.channels << " channels at "
             << r.sample_rate_hz << " Hz, " << r.pulse_times_s.size() << " crank pulses), " << r.manifest.string();
   if (options.write_truth) std::cout << " and " << r.truth.string();

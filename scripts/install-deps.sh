@@ -16,6 +16,9 @@ packages=(
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev        # bench/ programs
   python3-scipy           # bench/compare_analyze_scipy.py (numpy/scipy reference of the analyze chain)
+  libssl-dev              # SHA-256 (libcrypto) for the report's checksums and cache keys
+  libjs-dygraphs          # charting library inlined into the HTML report
+  chromium                # headless browser test of the HTML report
 )
 
 if [ "$(id -u)" -ne 0 ]; then

@@ -82,6 +82,11 @@ RecordingSpec read_recording_spec(const Scene& scene) {
     spec.speed_fluctuation_period_s = r.in_range("speed_fluctuation_period_s", 1e-3, 1e6);
   spec.seed = static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<long long>::max(), 1));
   if (auto n = r.optional_string("notes")) spec.notes = *n;
+  if (r.has("warmup_revolutions")) {
+    if (scene.model != Model::clearance)
+      r.fail("warmup_revolutions", "is for clearance scenes (model = \"clearance\") only; remove it");
+    spec.warmup_revolutions = static_cast<int>(r.integer("warmup_revolutions", 0, 100000));
+  }
 
   std::vector<std::string> accel_roles;
   for (const auto& name : channel_role_names())

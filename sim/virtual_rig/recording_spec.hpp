@@ -43,6 +43,9 @@ struct RecordingSpec {
   std::vector<ChannelSpec> sensors;   ///< accelerometers, in channel order
   PulseSpec pulse;                    ///< the last channel
   std::string notes;
+  /// Clearance scenes: crank turns simulated before the recording starts, so
+  /// that it shows the running mechanism rather than the start from rest.
+  int warmup_revolutions = 20;
 };
 
 /// Parses `scene.recording`; InputError naming the scene file, line and key

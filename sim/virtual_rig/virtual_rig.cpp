@@ -244,11 +244,16 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   // The manifest that goes with it.
   Manifest m;
   m.rig_file = rig.source;
-  m.clearance_m = rig.radial_clearance_m;
+  m.clearance_m = scene.clearance_m();
   m.full_scale_V = bits > 0 ? spec.full_scale_V : 1.0;
   if (bits == 0) m.adc_range_V = spec.full_scale_V;
   m.crank_direction = direction;
-  m.notes = "written by fourbar virtual-rig from " + scene.source.string() + (spec.notes.empty() ? "" : "; " + spec.notes);
+  m.notes = "written by fourbar virtual-rig from " + scene.source.string() +
+            (scene.model == Model::clearance
+                 ? "; motion: clearance model, e = " + format_double(scene.clearance.restitution) + ", contact " +
+                       to_string(scene.clearance.contact)
+                 : std::string("; motion: nominal mechanism")) +
+            (spec.notes.empty() ? "" : "; " + spec.notes);
   const bool text = is_text_recording(out);
   for (std::size_t c = 0; c < nsens; ++c) {
     ChannelSpec s = spec.sensors[c];

@@ -137,7 +137,7 @@ inline FilterSpec band_pass_with_mains_comb() {
 }
 
 /// Nominal α and ω of `link` at crank angle `angle` of the synthetic motion.
-inline LinkMotion truth_at_angle(const SyntheticRig& s, SensedLink link, double angle) {
+inline SensedLinkMotion truth_at_angle(const SyntheticRig& s, SensedLink link, double angle) {
   return nominal_link_motion(s.rig, link, s.crank_at(s.time_at(angle)));
 }
 

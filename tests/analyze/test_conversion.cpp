@@ -85,7 +85,7 @@ TEST(Conversion, InverseRecoversNominalAlphaAndOmegaSquared) {
     const ResolvedMount m = resolve_mount(rig, mount);
     for (int i = 0; i < 500; ++i) {
       const CrankState c{angle(rng), speed(rng), accel(rng)};
-      const LinkMotion k = nominal_link_motion(rig, m.link, c);
+      const SensedLinkMotion k = nominal_link_motion(rig, m.link, c);
       const double reading = sensor_reading(rig, m, k);
       if (m.axis == SensorAxis::tangential) {
         const double a = angular_acceleration_from_tangential(rig, m, k, reading);
@@ -133,7 +133,7 @@ TEST(Conversion, StandingStillTheSensorReadsOnlyGravityAndAlphaIsZero) {
       const Pose p = solve_pose(rig, c.angle_rad);
       const Vec2 u = m.link == SensedLink::coupler ? p.u3 : p.u4;
       const double gravity_projection = m.sign * rig.gravity_m_s2 * u.perp().y;  // s·g·cos θ
-      const LinkMotion k = nominal_link_motion(rig, m.link, c);
+      const SensedLinkMotion k = nominal_link_motion(rig, m.link, c);
       EXPECT_NEAR(sensor_reading(rig, m, k), gravity_projection, 1e-12);
       EXPECT_NEAR(angular_acceleration_from_tangential(rig, m, k, gravity_projection), 0.0, 1e-12);
     }
@@ -158,13 +158,13 @@ TEST(Conversion, SlowlySwingingLinkGravityTermAcAndDcCoupled) {
   const ResolvedMount m = resolve_mount(rig, mount);
   double max_alpha = 0, max_thesis_err = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const LinkMotion k = nominal_link_motion(rig, m.link, {angle[i], w2, 0.0});
+    const SensedLinkMotion k = nominal_link_motion(rig, m.link, {angle[i], w2, 0.0});
     truth[i] = k.alpha_rad_s2;
     dc[i] = sensor_reading(rig, m, k);
     max_alpha = std::max(max_alpha, std::abs(truth[i]));
   }
   EXPECT_LT(max_alpha, 1e-4 * rig.gravity_m_s2 / m.r_m);  // the link barely accelerates
-  const std::vector<LinkMotion> track = nominal_link_track(rig, SensedLink::coupler, {angle, speed, accel});
+  const std::vector<SensedLinkMotion> track = nominal_link_track(rig, SensedLink::coupler, {angle, speed, accel});
   angular_acceleration_from_tangential(rig, mount, track, dc, alpha);
   for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(alpha[i], truth[i], 1e-11);
   thesis_angular_acceleration(rig, SensedLink::coupler, -1, w2, angle, dc, alpha);
@@ -220,7 +220,7 @@ TEST(Conversion, BadMountsAreInputErrorsNamingTheChannel) {
   m.distance_m = 0.3;
   m.axis = SensorAxis::normal;
   std::vector<double> x(10, 0.0), y(10), shorter(9, 0.0);
-  const std::vector<LinkMotion> track = nominal_link_track(rig, SensedLink::coupler, {x, x, x});
+  const std::vector<SensedLinkMotion> track = nominal_link_track(rig, SensedLink::coupler, {x, x, x});
   EXPECT_THROW(angular_acceleration_from_tangential(rig, m, track, x, y), InputError);
   m.axis = SensorAxis::tangential;
   EXPECT_THROW(nominal_link_track(rig, SensedLink::coupler, {x, shorter, x}), InputError);

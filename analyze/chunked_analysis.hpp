@@ -1,0 +1,110 @@
+#pragma once
+// The streaming part of analyze_recording (pipeline.hpp): an AcquisitionSink
+// that buffers acquire's angle-tagged samples of the current pulse-train
+// segment and analyses them in chunks of K whole revolutions with RecordAnalyzer.
+//
+// A chunk spans its K revolutions plus `overlap` samples on each side
+// (half the filter kernel and the resampler's stencil), so each of its
+// revolutions sees the same filtered values as a filter over the whole
+// segment would give. The segment's own ends are continued periodically in
+// the crank angle (the first and last revolution repeated), so the filter
+// does not ring there. With the ideal (bin-wise) filter each chunk is one
+// period instead, as the thesis did with its record.
+// Only the chunk's own revolutions are kept; the buffer then drops what the
+// next chunk no longer needs. Memory: about (K revolutions + 2·overlap)
+// samples × (3 crank values + the channels used) doubles, plus one chunk's
+// working arrays.
+
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analyze/link_analysis.hpp"
+#include "analyze/pipeline.hpp"
+#include "analyze/spectrum.hpp"
+
+namespace fourbar {
+
+/// The manifest's accelerometer channels as analyze uses them.
+struct AnalysisChannel {
+  std::size_t index = 0;  ///< in acquire's channel list (SampleBlock::channels_m_s2)
+  AccelerometerMount mount;
+};
+struct LinkChannels {
+  SensedLink link = SensedLink::coupler;
+  std::optional<AnalysisChannel> tangential, normal;
+};
+struct AnalysisChannels {
+  std::vector<LinkChannels> links;  ///< coupler first, then rocker; only links with a tangential channel
+  std::vector<std::string> warnings;
+};
+
+/// Picks the channels (the first of each role; InputError when the manifest
+/// has no coupler_tangential channel). Mounts in SI, axis sign +1 (acquire
+/// applies the manifest's sign).
+AnalysisChannels analysis_channels(const Manifest& manifest);
+
+class ChunkedAnalysis final : public AcquisitionSink {
+ public:
+  /// Fills `result` as the data come. `manifest` and `observer` must outlive it.
+  ChunkedAnalysis(RecordingAnalysis& result, const Manifest& manifest, AnalysisChannels channels,
+                  RevolutionObserver* observer);
+  ~ChunkedAnalysis() override;
+
+  void on_plan(const AcquisitionReport& report) override;
+  void on_samples(const SampleBlock& block) override;
+  void on_revolution(const Revolution& revolution) override;
+  /// After acquire: analyses what is left and completes the result.
+  void finish();
+
+ private:
+  struct Pending;
+  void resolve_settings(const AcquisitionReport& report);
+  void process_ready();
+  void process_chunk(std::size_t rev_end, bool segment_end);
+  void end_segment();
+  /// Filters one chunk's values in place; a segment end is continued
+  /// periodically in the crank angle first (crank_periodic_extension).
+  void filter(bool normal, std::span<const double> angle, std::vector<double>& x, bool at_start, bool at_end);
+  void accept(Pending&& rev);
+  void commit(Pending& rev, bool averaged);
+  std::size_t rev_start(std::size_t rev) const;
+
+  RecordingAnalysis& result_;
+  const Manifest& manifest_;
+  AnalysisChannels channels_;
+  RevolutionObserver* observer_;
+  bool planned_ = false;
+
+  // Settings (resolved in on_plan).
+  double fs_ = 0, direction_ = 1, offset_rad_ = 0, mean_speed_rad_s_ = 0;
+  AngleGridSpec grid_;
+  FilterSpec filter_, normal_filter_;
+  std::size_t half_kernel_ = 0, overlap_ = 0, chunk_revs_ = 0;
+  std::unique_ptr<FftFilter> alpha_filter_, normal_filter_block_;  // windowed: linear convolution, made once
+  std::shared_ptr<const RigTables> tables_;
+  std::vector<std::size_t> used_;  // acquire channel indices buffered, in order
+
+  // The current segment's samples from absolute index `base_` on.
+  std::vector<double> theta_, speed_, accel_;
+  std::vector<std::vector<double>> samples_;  // per used channel
+  std::size_t base_ = 0, end_ = 0;           // absolute indices within the segment
+  std::deque<std::size_t> starts_;           // absolute index of the first sample of revolutions first_rev_ …
+  std::size_t first_rev_ = 0, next_rev_ = 0;
+  std::optional<std::int64_t> last_rev_;
+  double last_time_ = 0;
+  bool in_segment_ = false;
+  std::size_t revs_in_segment_ = 0;
+  std::vector<std::optional<double>> omega_carry_;  // per link: running-trapezoid ω at next_rev_'s start
+
+  // Results as they accumulate.
+  std::vector<bool> clipped_;  // by revolution number
+  std::deque<std::unique_ptr<Pending>> guard_queue_;
+  std::unique_ptr<SynchronousAverager> speed_avg_;
+  std::vector<SynchronousAverager> alpha_avg_, omega_avg_, normal_avg_, omega_sq_avg_;
+  std::vector<std::unique_ptr<SpectrumAverager>> spectra_;
+};
+
+}  // namespace fourbar

@@ -1,0 +1,117 @@
+#include "analyze/pipeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <sstream>
+
+#include "analyze/chunked_analysis.hpp"
+#include "analyze/window.hpp"
+#include "common/error.hpp"
+#include "common/units.hpp"
+
+namespace fourbar {
+
+const char* to_string(ConversionMethod m) { return m == ConversionMethod::full ? "full" : "thesis"; }
+
+const char* to_string(IntegrationMethod m) {
+  switch (m) {
+    case IntegrationMethod::spectral: return "spectral";
+    case IntegrationMethod::closed_trapezoid: return "closed-trapezoid";
+    case IntegrationMethod::trapezoid: return "trapezoid";
+  }
+  return "?";
+}
+
+AnalyzeOptions AnalyzeOptions::thesis_method() {
+  AnalyzeOptions o;
+  o.conversion = ConversionMethod::thesis;
+  o.integration = IntegrationMethod::trapezoid;
+  o.filter.window = {WindowType::rectangular, 0};
+  o.filter.transition_hz = 0.0;
+  return o;
+}
+
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+void positive_if_set(const std::optional<double>& v, const char* option) {
+  if (v && !(*v > 0 && std::isfinite(*v)))
+    throw InputError(std::string("analyze: ") + option + " " + fmt(*v) + " must be a positive frequency in Hz");
+}
+
+}  // namespace
+
+void validate_options(const AnalyzeOptions& o) {
+  if (o.points_per_rev != 0 && o.points_per_rev < 4)
+    throw InputError("analyze: --points " + std::to_string(o.points_per_rev) + " must be at least 4 crank angles per revolution");
+  positive_if_set(o.filter.low_hz, "--low-hz");
+  positive_if_set(o.filter.high_hz, "--high-hz");
+  if (o.filter.transition_hz && !(*o.filter.transition_hz >= 0 && std::isfinite(*o.filter.transition_hz)))
+    throw InputError("analyze: --transition-hz " + fmt(*o.filter.transition_hz) + " must be >= 0 (0: ideal filter)");
+  if (o.filter.mains_hz < 0 || !std::isfinite(o.filter.mains_hz))
+    throw InputError("analyze: --mains-hz " + fmt(o.filter.mains_hz) + " must be 50, 60 (or any positive frequency), or 0 for none");
+  validate_window(o.filter.window, "--window");
+  if (o.filter.transition_hz && *o.filter.transition_hz == 0 && o.filter.window.type != WindowType::rectangular)
+    throw InputError("analyze: --transition-hz 0 (the ideal bin-wise filter) takes --window rectangular, not " +
+                     to_string(o.filter.window));
+  if (o.spectrum_segment != 0 && o.spectrum_segment < 16)
+    throw InputError("analyze: --spectrum-segment " + std::to_string(o.spectrum_segment) + " must be at least 16 samples");
+}
+
+RecordingAnalysis analyze_recording(const std::filesystem::path& recording, const std::filesystem::path& manifest_file,
+                                    const AnalyzeOptions& options, RevolutionObserver* observer) {
+  validate_options(options);
+  OpenedRecording opened = open_with_manifest(recording, manifest_file);
+  const Manifest& manifest = opened.manifest;
+
+  RecordingAnalysis result;
+  result.recording = recording;
+  result.manifest_file = manifest.file;
+  result.rig_file = manifest.rig_file;
+  result.rig = manifest.rig;
+  result.clearance_m = manifest.clearance_m;
+  result.options = options;
+
+  // The channels, checked against the rig before the long passes.
+  const AnalysisChannels channels = analysis_channels(manifest);
+  if (options.conversion == ConversionMethod::full)
+    for (const auto& link : channels.links) {
+      if (link.tangential) resolve_mount(*manifest.rig, link.tangential->mount);
+      if (link.normal) resolve_mount(*manifest.rig, link.normal->mount);
+    }
+  result.warnings = channels.warnings;
+  // The filter corners against the sample rate, as far as they are given.
+  {
+    const double fs = opened.reader->info().sample_rate_hz;
+    const double nyquist = 0.5 * fs;
+    for (const auto& [v, option] : {std::pair{options.filter.low_hz, "--low-hz"}, std::pair{options.filter.high_hz, "--high-hz"}})
+      if (v && *v >= nyquist)
+        throw InputError("analyze: " + std::string(option) + " " + fmt(*v) + " Hz lies at or above the Nyquist frequency " +
+                         fmt(nyquist) + " Hz of " + recording.string() + " (sample rate " + fmt(fs) +
+                         " Hz); give a corner below it");
+    if (options.filter.mains_hz >= nyquist)
+      throw InputError("analyze: --mains-hz " + fmt(options.filter.mains_hz) + " lies at or above the Nyquist frequency " +
+                       fmt(nyquist) + " Hz of " + recording.string());
+  }
+
+  ChunkedAnalysis analysis(result, manifest, channels, observer);
+  AcquireOptions acquire_options;
+  acquire_options.progress = options.progress;
+  acquire_options.samples_per_revolution = 4;  // acquire's own grid is not used: keep its resampling cheap
+  result.acquisition = acquire(*opened.reader, manifest, acquire_options, analysis);
+  analysis.finish();
+  // acquire's own revolutions were not used: report the analysis grid.
+  result.acquisition.samples_per_revolution = static_cast<int>(result.points_per_rev);
+  result.warnings.insert(result.warnings.begin(), result.acquisition.warnings.begin(),
+                         result.acquisition.warnings.end());
+  return result;
+}
+
+}  // namespace fourbar

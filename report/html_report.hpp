@@ -1,0 +1,35 @@
+#pragma once
+// The session report as one self-contained HTML file: opens offline and makes
+// no network request. The data (the session record, numbers rounded to six
+// significant digits) and Debian's dygraphs (libjs-dygraphs: JavaScript and
+// CSS) are inlined; the polar plots of impact directions are inline SVG.
+//
+// Charts per recording: measured vs clearance model vs nominal (and the
+// modified analytical response, thesis Fig. 8.4) for α3, ω3, α4, ω4, with the
+// spread as a band, zoom (drag; range selector; double-click resets) and
+// series toggles; deviation amplitudes per crank order and the magnification
+// factor per order; the measured α spectrum; impact directions on pin and
+// bushing (thesis Figs 8.11/8.12). Session charts: severity against
+// clearance and against crank speed (Figs 7.10/7.11). Tables: metrics,
+// operating points, every setting, every input file with its SHA-256.
+// Print CSS puts each recording on its own page without the controls.
+//
+// When every chart has drawn, the page sets data-charts-drawn (count) on
+// <body>; script errors are counted in data-js-errors and listed on the page
+// (the headless-browser test reads both).
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fourbar {
+
+/// The folder with dygraph.min.js and dygraph.min.css (libjs-dygraphs);
+/// FOURBAR_DYGRAPHS_DIR in the environment overrides the built-in path.
+std::filesystem::path dygraphs_dir();
+
+/// The HTML text. RunError when dygraphs is not installed (names the package).
+std::string render_html_report(const nlohmann::json& session);
+
+}  // namespace fourbar

@@ -1,0 +1,117 @@
+#include "report/recording_job.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.hpp"
+#include "common/units.hpp"
+#include "report/comparison_record.hpp"
+
+namespace fourbar {
+
+namespace {
+
+using nlohmann::json;
+
+json filter_json(const FilterSpec& f) {
+  static const char* bands[] = {"all_pass", "lowpass", "highpass", "bandpass", "bandstop"};
+  return {{"band", bands[static_cast<int>(f.band)]}, {"low_hz", f.low_hz},          {"high_hz", f.high_hz},
+          {"mains_hz", f.mains_hz},                  {"mains_width_hz", f.mains_width_hz},
+          {"window", to_string(f.window)},           {"transition_hz", f.transition_hz}};
+}
+
+AngleSeries series_from(const AngleAverage& avg, const std::vector<double>& grid) {
+  AngleSeries s;
+  s.mean = avg.mean;
+  s.std = avg.std;
+  s.revolutions = grid;
+  s.revolution_count = avg.revolutions;
+  return s;
+}
+
+/// The measured α spectrum of a link up to `max_order` crank orders.
+json link_spectrum(const RecordingAnalysis& a, const LinkResult& link, double max_order) {
+  json order = json::array(), amp = json::array();
+  for (std::size_t i = 0; i < a.spectra.order.size() && i < link.alpha_amplitude.size(); ++i) {
+    if (a.spectra.order[i] > max_order) break;
+    order.push_back(a.spectra.order[i]);
+    amp.push_back(link.alpha_amplitude[i]);
+  }
+  return {{"order", order}, {"amplitude", amp}};
+}
+
+}  // namespace
+
+MeasuredResponse measured_response(const RecordingAnalysis& a) {
+  MeasuredResponse m;
+  m.grid.points_per_rev = a.points_per_rev;
+  m.grid.start_rad = a.crank_deg.empty() ? 0.0 : units::deg_to_rad(a.crank_deg[0]);
+  m.grid.direction = a.crank_direction;
+  m.crank_speed_rad_s = a.mean_crank_speed_rad_s;
+  if (a.coupler) {
+    m.series[index_of(LinkQuantity::alpha3)] = series_from(a.coupler->alpha_rad_s2, a.coupler->alpha_grid);
+    m.series[index_of(LinkQuantity::omega3)] = series_from(a.coupler->omega_rad_s, a.coupler->omega_grid);
+  }
+  if (a.rocker) {
+    m.series[index_of(LinkQuantity::alpha4)] = series_from(a.rocker->alpha_rad_s2, a.rocker->alpha_grid);
+    m.series[index_of(LinkQuantity::omega4)] = series_from(a.rocker->omega_rad_s, a.rocker->omega_grid);
+  }
+  return m;
+}
+
+json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measured, const MatchedTheory& t,
+                       const RecordingComparison& c) {
+  const AcquisitionReport& acq = a.acquisition;
+  json r = comparison_record(measured, t, c);
+  r["acquisition"] = {{"format", acq.recording.format},
+                      {"sample_format", acq.recording.sample_format},
+                      {"channels", acq.recording.channels},
+                      {"sample_rate_hz", acq.recording.sample_rate_hz},
+                      {"duration_s", acq.recording.duration_s()},
+                      {"revolutions_kept", acq.revolutions},
+                      {"revolutions_repaired", acq.revolutions_repaired},
+                      {"revolutions_clipped", acq.revolutions_clipped},
+                      {"revolutions_in_gaps", acq.revolutions_in_gaps},
+                      {"speed_rpm", {{"mean", acq.speed.mean_rpm}, {"std", acq.speed.std_rpm}, {"min", acq.speed.min_rpm}, {"max", acq.speed.max_rpm}}}};
+  r["analysis"] = {{"points_per_rev", a.points_per_rev},
+                   {"filter", filter_json(a.filter)},
+                   {"kernel_taps", a.kernel_taps},
+                   {"conversion", to_string(a.options.conversion)},
+                   {"integration", to_string(a.options.integration)},
+                   {"guard_revolutions", a.options.guard_revolutions},
+                   {"rig", a.rig ? a.rig->name : ""}};
+  json spectra = json::object();
+  const double max_order = 4.0 * t.settings.max_order;
+  if (a.coupler) spectra["alpha3_rad_s2"] = link_spectrum(a, *a.coupler, max_order);
+  if (a.rocker) spectra["alpha4_rad_s2"] = link_spectrum(a, *a.rocker, max_order);
+  r["spectra"] = spectra;
+  r["warnings"] = a.warnings;
+  return r;
+}
+
+json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& options,
+                       const TheorySettings& settings) {
+  try {
+    const RecordingAnalysis a = analyze_recording(recording, {}, options);
+    if (!a.coupler && !a.rocker)
+      throw InputError(recording.string() + ": no tangential channel on the coupler or the rocker; the comparison needs one");
+    const MeasuredResponse measured = measured_response(a);
+    MatchedTheory t;
+    try {
+      t = simulate_matched_theory(*a.rig, a.clearance_m, a.mean_crank_speed_rad_s, measured.grid, settings);
+    } catch (const InputError& e) {
+      throw InputError(a.manifest_file.string() + ": " + e.what());
+    }
+    apply_pass_band(t, a.filter);
+    const RecordingComparison c = compare_response(measured, t);
+    return recording_record(a, measured, t, c);
+  } catch (const InputError& e) {
+    return {{"status", "failed"}, {"error_kind", "input"}, {"error", e.what()}};
+  } catch (const RunError& e) {
+    return {{"status", "failed"}, {"error_kind", "run"}, {"error", e.what()}};
+  } catch (const std::exception& e) {
+    return {{"status", "failed"}, {"error_kind", "run"}, {"error", std::string("internal error: ") + e.what()}};
+  }
+}
+
+}  // namespace fourbar

@@ -1,0 +1,34 @@
+#pragma once
+// One recording of a session through the whole chain: acquire + analyze
+// (analyze_recording), the matched theory at its operating point, the
+// comparison, and the record the report is drawn from (JSON: what the cache
+// keeps, what summary.json, the CSV series and the HTML are written from).
+// A recording that fails gives a record with status "failed" and the error;
+// it never stops the session.
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "analyze/pipeline.hpp"
+#include "compare/matched_theory.hpp"
+#include "compare/measured_response.hpp"
+#include "compare/recording_comparison.hpp"
+
+namespace fourbar {
+
+/// The measured response on the analysis grid (α, ω per link, every turn).
+MeasuredResponse measured_response(const RecordingAnalysis& analysis);
+
+/// The record of a recording that went through (status "ok").
+nlohmann::json recording_record(const RecordingAnalysis& analysis, const MeasuredResponse& measured,
+                                const MatchedTheory& theory, const RecordingComparison& comparison);
+
+/// Runs the chain for one recording; the record (status "ok" or "failed"
+/// with `error` and `error_kind` "input" | "run"). Never throws for a bad
+/// recording.
+nlohmann::json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& analysis,
+                                 const TheorySettings& theory);
+
+}  // namespace fourbar

@@ -1,0 +1,120 @@
+#include "report/series_files.hpp"
+
+#include <string>
+#include <vector>
+
+#include "common/atomic_output.hpp"
+#include "common/csv_writer.hpp"
+
+namespace fourbar {
+
+namespace {
+
+using nlohmann::json;
+
+/// "alpha3_rad_s2" → {"alpha3", "rad_s2"}.
+std::pair<std::string, std::string> split_unit(const std::string& column) {
+  const auto p = column.find('_');
+  return {column.substr(0, p), column.substr(p + 1)};
+}
+
+std::vector<std::string> comments(const json& session, const json& r) {
+  std::vector<std::string> c{"made by fourbar " + session["version"].get<std::string>() + ": " +
+                             session["command"].get<std::string>()};
+  for (const json& f : r["files"])
+    c.push_back("input: " + f["path"].get<std::string>() + " sha256 " +
+                (f["sha256"].is_null() ? std::string("-") : f["sha256"].get<std::string>()));
+  return c;
+}
+
+double num(const json& v) { return v.is_null() ? 0.0 : v.get<double>(); }
+
+void write_recording(const json& session, const json& r, const std::filesystem::path& dir) {
+  const std::string stem = std::filesystem::path(r["name"].get<std::string>()).stem().string();
+  const auto notes = comments(session, r);
+
+  // Per-angle series.
+  std::vector<std::string> cols{"crank_deg"};
+  std::vector<const std::vector<double>*> data;
+  std::vector<std::vector<double>> store;
+  store.reserve(64);
+  store.push_back(r["grid"]["crank_deg"].get<std::vector<double>>());
+  for (const auto& [q, s] : r["series"].items()) {
+    const auto [name, unit] = split_unit(q);
+    for (const char* part : {"measured", "measured_std", "clearance", "clearance_std", "nominal", "modified"}) {
+      if (!s.contains(part) || s[part].empty()) continue;
+      cols.push_back(name + "_" + part + "_" + unit);
+      store.push_back(s[part].get<std::vector<double>>());
+    }
+  }
+  CsvWriter series(dir / (stem + ".csv"), notes, cols);
+  std::vector<double> row(cols.size());
+  for (std::size_t k = 0; k < store[0].size(); ++k) {
+    for (std::size_t c = 0; c < store.size(); ++c) row[c] = store[c][k];
+    series.row(row);
+  }
+
+  // Per-order magnification.
+  std::vector<std::string> ocols{"order"};
+  std::vector<const json*> orders;
+  for (const auto& [q, m] : r["metrics"].items()) {
+    const auto [name, unit] = split_unit(q);
+    for (const std::string part : {"measured_dev_amplitude_", "simulated_dev_amplitude_", "measured_floor_"})
+      ocols.push_back(name + "_" + part + unit);
+    ocols.push_back(name + "_significant");
+    ocols.push_back(name + "_factor");
+    orders.push_back(&m["magnification"]["orders"]);
+  }
+  CsvWriter ord(dir / (stem + "_orders.csv"), notes, ocols);
+  const std::size_t n_orders = orders.empty() ? 0 : orders[0]->size();
+  for (std::size_t k = 0; k < n_orders; ++k) {
+    std::vector<double> v{static_cast<double>(k + 1)};
+    for (const json* o : orders) {
+      const json& e = (*o)[k];
+      v.insert(v.end(), {num(e["measured_amplitude"]), num(e["simulated_amplitude"]), num(e["measured_floor"]),
+                         e["significant"].get<bool>() ? 1.0 : 0.0, num(e["factor"])});
+    }
+    ord.row(v);
+  }
+
+  // Impacts.
+  CsvWriter imp(dir / (stem + "_impacts.csv"), notes,
+                {"crank_deg", "revolution", "normal_impulse_Ns", "pin_deg", "bushing_deg", "global_deg"});
+  for (const json& i : r["impacts"]) {
+    const std::vector<double> v{i["crank_deg"], i["revolution"], i["normal_impulse_Ns"], i["pin_deg"],
+                                i["bushing_deg"], i["global_deg"]};
+    imp.row(v);
+  }
+  series.commit();
+  ord.commit();
+  imp.commit();
+}
+
+}  // namespace
+
+void write_series_files(const json& session, const std::filesystem::path& out_dir) {
+  const std::filesystem::path dir = out_dir / "series";
+  ensure_output_dir(dir);
+  for (const json& r : session["recordings"])
+    if (r["status"] == "ok") write_recording(session, r, dir);
+
+  std::vector<std::string> c{"made by fourbar " + session["version"].get<std::string>() + ": " +
+                             session["command"].get<std::string>()};
+  CsvWriter sev(out_dir / "session_severity.csv", c,
+                {"clearance_mm", "speed_rpm", "measured_alpha3_fluctuation_rms_rad_s2",
+                 "measured_alpha4_fluctuation_rms_rad_s2", "simulated_alpha3_fluctuation_rms_rad_s2",
+                 "impacts_per_rev", "sum_normal_impulse_per_rev_Ns", "impact_index_Ns", "magnification_alpha3",
+                 "recording"});
+  for (const json& g : session["severity"]["by_speed"])
+    for (const json& p : g["points"]) {
+      const std::vector<double> v{num(p["clearance_mm"]), num(p["speed_rpm"]),
+                                  num(p["measured_alpha3_fluctuation_rms"]), num(p["measured_alpha4_fluctuation_rms"]),
+                                  num(p["simulated_alpha3_fluctuation_rms"]), num(p["impacts_per_rev"]),
+                                  num(p["sum_normal_impulse_per_rev_Ns"]), num(p["impact_index_Ns"]),
+                                  num(p["magnification_alpha3"])};
+      sev.row(v, p["recording"].get<std::string>());
+    }
+  sev.commit();
+}
+
+}  // namespace fourbar

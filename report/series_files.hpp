@@ -1,0 +1,21 @@
+#pragma once
+// The CSV series beside the report (crank angle in degrees first, units in
+// every column name):
+//   series/<recording stem>.csv         crank_deg, per quantity q (alpha3_rad_s2, …):
+//                                       q_measured, q_measured_std, q_clearance,
+//                                       q_clearance_std, q_nominal, q_modified (units kept last)
+//   series/<stem>_orders.csv            order, per measured q: deviation amplitudes from the
+//                                       nominal (measured, simulated), floor, significant, factor
+//   series/<stem>_impacts.csv           simulated impacts in the averaged turns
+//   session_severity.csv                one row per analysed recording
+// Written from the session record (session_report.hpp).
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+namespace fourbar {
+
+void write_series_files(const nlohmann::json& session, const std::filesystem::path& out_dir);
+
+}  // namespace fourbar

@@ -1,0 +1,41 @@
+#pragma once
+// The main job, `fourbar report SESSION_DIR`: every recording of a session
+// folder through acquire + analyze, the matched theory and the comparison;
+// one self-contained HTML report, summary.json and CSV series beside it.
+//
+// Cache: each recording's record is stored under a key that is the SHA-256
+// of the tool version, the recording's, manifest's and rig's SHA-256 and
+// every setting that applies to it; a second run with unchanged inputs reads
+// the records back instead of recomputing. Failed recordings are not cached.
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fourbar {
+
+struct ReportOptions {
+  std::filesystem::path session_dir;
+  std::filesystem::path out_html;   ///< the report; summary.json, session_severity.csv and series/ go beside it
+  std::filesystem::path cache_dir;  ///< empty: <out dir>/.fourbar-cache
+  bool use_cache = true;
+  bool progress = true;             ///< per-recording progress on stderr when it is a terminal
+  std::string command_line;         ///< for provenance
+};
+
+struct ReportOutcome {
+  int recordings = 0, failed = 0, from_cache = 0;
+  std::filesystem::path html, summary;
+};
+
+/// Runs the whole session. InputError (exit 2) for a bad session folder,
+/// session.toml or output path; a bad recording is reported in the outputs
+/// and on stderr and counted in `failed`.
+ReportOutcome run_session_report(const ReportOptions& options);
+
+/// The session record without the bulky per-angle series and spectra (what
+/// summary.json holds).
+nlohmann::json summary_of(const nlohmann::json& session);
+
+}  // namespace fourbar

@@ -1,0 +1,153 @@
+#include "report/session_settings.hpp"
+
+#include "report/comparison_record.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "acquire/manifest.hpp"
+#include "common/error.hpp"
+#include "common/toml_section.hpp"
+#include "common/units.hpp"
+
+namespace fourbar {
+
+namespace {
+
+const char* kSessionFile = "session.toml";
+
+ContactLaw contact_from(const std::string& s) {
+  if (s == "rough") return ContactLaw::rough;
+  if (s == "stick-slip") return ContactLaw::stick_slip;
+  return ContactLaw::smooth;
+}
+
+/// [theory] keys (also allowed in each [[recording]]), over `base`.
+TheorySettings read_theory(TomlSection& t, TheorySettings s) {
+  s.restitution = t.in_range("restitution", 0.0, 1.0, s.restitution);
+  if (t.has("contact")) s.contact = contact_from(t.choice("contact", {"smooth", "rough", "stick-slip"}));
+  if (t.has("friction_coefficient")) {
+    if (s.contact != ContactLaw::stick_slip)
+      t.fail("friction_coefficient", "is used only with contact = \"stick-slip\"; set contact or remove it");
+    s.friction_coefficient = t.non_negative("friction_coefficient");
+  }
+  s.warmup_revolutions = static_cast<int>(t.integer("warmup_revolutions", 0, 10000, s.warmup_revolutions));
+  s.averaged_revolutions = static_cast<int>(t.integer("averaged_revolutions", 1, 10000, s.averaged_revolutions));
+  s.tolerance = t.in_range("tolerance", 1e-14, 1e-4, s.tolerance);
+  s.max_order = static_cast<int>(t.integer("max_order", 1, 100000, s.max_order));
+  return s;
+}
+
+void read_analysis(TomlSection& a, AnalyzeOptions& o) {
+  o.points_per_rev = static_cast<std::size_t>(a.integer("points_per_rev", 0, 1 << 20, 0));
+  if (a.has("low_hz")) o.filter.low_hz = a.positive("low_hz");
+  if (a.has("high_hz")) o.filter.high_hz = a.positive("high_hz");
+  o.filter.mains_hz = a.in_range("mains_hz", 0, 1e5, 0.0);
+  o.filter.mains_width_hz = a.in_range("mains_width_hz", 1e-6, 1e4, o.filter.mains_width_hz);
+  if (a.has("window")) {
+    const std::string w = a.string("window");
+    try {
+      o.filter.window = parse_window(w, "analysis.window");
+    } catch (const InputError& e) {
+      a.fail("window", e.what());
+    }
+  }
+  if (a.has("transition_hz")) o.filter.transition_hz = a.non_negative("transition_hz");
+  o.guard_revolutions = static_cast<std::size_t>(a.integer("guard_revolutions", 0, 1000, 0));
+  if (a.has("integration")) {
+    const std::string m = a.choice("integration", {"spectral", "closed_trapezoid", "trapezoid"});
+    o.integration = m == "trapezoid" ? IntegrationMethod::trapezoid
+                    : m == "closed_trapezoid" ? IntegrationMethod::closed_trapezoid
+                                              : IntegrationMethod::spectral;
+  }
+}
+
+}  // namespace
+
+const TheorySettings& SessionSettings::theory_for(const std::string& recording_file) const {
+  const auto it = theory_by_recording.find(recording_file);
+  return it == theory_by_recording.end() ? theory : it->second;
+}
+
+nlohmann::json SessionSettings::to_json() const {
+  nlohmann::json a = {{"points_per_rev", analysis.points_per_rev == 0 ? nlohmann::json("auto") : nlohmann::json(analysis.points_per_rev)},
+                      {"low_hz", analysis.filter.low_hz ? nlohmann::json(*analysis.filter.low_hz) : nlohmann::json("auto")},
+                      {"high_hz", analysis.filter.high_hz ? nlohmann::json(*analysis.filter.high_hz) : nlohmann::json("auto")},
+                      {"mains_hz", analysis.filter.mains_hz},
+                      {"mains_width_hz", analysis.filter.mains_width_hz},
+                      {"window", to_string(analysis.filter.window)},
+                      {"transition_hz", analysis.filter.transition_hz ? nlohmann::json(*analysis.filter.transition_hz) : nlohmann::json("auto")},
+                      {"guard_revolutions", analysis.guard_revolutions},
+                      {"integration", to_string(analysis.integration)},
+                      {"conversion", to_string(analysis.conversion)}};
+  nlohmann::json per = nlohmann::json::object();
+  for (const auto& [name, t] : theory_by_recording) per[name] = theory_settings_json(t);
+  return {{"file", file.empty() ? nlohmann::json(nullptr) : nlohmann::json(file.filename().string())},
+          {"title", title},
+          {"notes", notes},
+          {"analysis", a},
+          {"theory", theory_settings_json(theory)},
+          {"theory_by_recording", per}};
+}
+
+SessionSettings load_session_settings(const std::filesystem::path& dir) {
+  SessionSettings s;
+  s.title = std::filesystem::absolute(dir).lexically_normal().filename().string();
+  if (s.title.empty()) s.title = std::filesystem::absolute(dir).lexically_normal().parent_path().filename().string();
+  s.analysis.keep_revolutions = true;
+  const std::filesystem::path file = dir / kSessionFile;
+  if (!std::filesystem::exists(file)) return s;
+  s.file = file;
+  const toml::table table = parse_toml_file(file);
+  TomlSection root(table, file);
+  if (auto t = root.optional_string("title")) s.title = *t;
+  if (auto n = root.optional_string("notes")) s.notes = *n;
+  if (auto a = root.optional_section("analysis")) {
+    read_analysis(*a, s.analysis);
+    a->finish();
+  }
+  if (auto t = root.optional_section("theory")) {
+    s.theory = read_theory(*t, s.theory);
+    t->finish();
+  }
+  for (TomlSection& r : root.sections("recording")) {
+    const std::string name = r.string("file");
+    if (name.find('/') != std::string::npos || !std::filesystem::exists(dir / name))
+      r.fail("file", "'" + name + "' is not a file in the session folder " + dir.string());
+    if (s.theory_by_recording.count(name)) r.fail("file", "'" + name + "' has two [[recording]] tables; merge them");
+    s.theory_by_recording[name] = read_theory(r, s.theory);
+    r.finish();
+  }
+  root.finish();
+  return s;
+}
+
+SessionFiles find_session_files(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir))
+    throw InputError(dir.string() + ": not a folder; give the session folder that holds the recordings");
+  static const std::set<std::string> kExtensions{".wav", ".w64", ".rf64", ".flac", ".caf", ".aiff", ".aif",
+                                                 ".csv", ".tsv", ".txt"};
+  SessionFiles f;
+  std::set<std::string> stems;
+  std::vector<std::filesystem::path> manifests;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::filesystem::path p = e.path();
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string name = p.filename().string();
+    if (ext == ".toml") {
+      if (name != kSessionFile) manifests.push_back(p);
+    } else if (kExtensions.count(ext) && !name.ends_with(".truth.csv")) {
+      f.recordings.push_back(p);
+      stems.insert(p.stem().string());
+    }
+  }
+  for (const auto& m : manifests)
+    if (!stems.count(m.stem().string())) f.orphan_manifests.push_back(m);
+  std::sort(f.recordings.begin(), f.recordings.end());
+  std::sort(f.orphan_manifests.begin(), f.orphan_manifests.end());
+  return f;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,57 @@
+#pragma once
+// A session folder and its optional `session.toml`: shared settings for the
+// analysis and the matched theory of every recording in it, per-recording
+// theory overrides, and a title. Read strictly (unknown keys are errors with
+// a suggestion, values checked, file:line:key in every message).
+//
+//   title = "Coupler bearing, March series"      # report title (default: folder name)
+//   notes = "..."
+//   [analysis]    points_per_rev, low_hz, high_hz, mains_hz, mains_width_hz,
+//                 window ("kaiser:8"), transition_hz, guard_revolutions,
+//                 integration ("spectral" | "closed_trapezoid" | "trapezoid")
+//   [theory]      restitution, contact ("smooth" | "rough" | "stick-slip"),
+//                 friction_coefficient, warmup_revolutions,
+//                 averaged_revolutions, tolerance, max_order
+//   [[recording]] file = "run3.flac", then any [theory] key for that recording
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "analyze/pipeline.hpp"
+#include "compare/matched_theory.hpp"
+
+namespace fourbar {
+
+struct SessionSettings {
+  std::filesystem::path file;  ///< session.toml (empty when the folder has none)
+  std::string title;
+  std::string notes;
+  AnalyzeOptions analysis;     ///< keep_revolutions on (the spectral magnification needs every turn)
+  TheorySettings theory;
+  std::map<std::string, TheorySettings> theory_by_recording;  ///< by file name
+
+  const TheorySettings& theory_for(const std::string& recording_file) const;
+  /// Every setting with its value (for the report's settings table and the cache key).
+  nlohmann::json to_json() const;
+};
+
+/// Reads `dir/session.toml` when present (defaults otherwise). InputError
+/// naming file, line and key for a bad value or an unknown key.
+SessionSettings load_session_settings(const std::filesystem::path& dir);
+
+struct SessionFiles {
+  std::vector<std::filesystem::path> recordings;  ///< sorted by name
+  std::vector<std::filesystem::path> orphan_manifests;  ///< REC.toml with no recording beside it
+};
+
+/// The recordings in `dir` (top level only): files with a recording
+/// extension (.wav .w64 .rf64 .flac .caf .aiff .aif .csv .tsv .txt), except
+/// the virtual rig's `*.truth.csv`.
+SessionFiles find_session_files(const std::filesystem::path& dir);
+
+}  // namespace fourbar

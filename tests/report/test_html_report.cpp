@@ -1,0 +1,111 @@
+// The report page in a real browser (Debian's headless Chromium): no script
+// errors, no blocked requests, every chart drew data; and the page holds no
+// reference to anything outside itself.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "common/atomic_output.hpp"
+#include "common/units.hpp"
+#include "compare/matched_theory.hpp"
+#include "compare/recording_comparison.hpp"
+#include "report/comparison_record.hpp"
+#include "report/html_report.hpp"
+#include "support/headless_browser.hpp"
+
+namespace fourbar {
+namespace {
+
+using nlohmann::json;
+
+/// A session of two recordings: the "measurement" is an independent run of
+/// the clearance model (another warm-up), so all plots have real content.
+json synthetic_session() {
+  const Rig rig = thesis_rig();
+  json records = json::array();
+  int i = 0;
+  for (double rpm : {250.0, 350.0}) {
+    const CrankGrid grid{360, 0.0, 1.0};
+    const double w = units::rpm_to_rad_s(rpm);
+    TheorySettings s;
+    s.warmup_revolutions = 3, s.averaged_revolutions = 6, s.max_order = 30;
+    const MatchedTheory theory = simulate_matched_theory(rig, 0.254e-3, w, grid, s);
+    s.warmup_revolutions = 7;
+    const MatchedTheory other = simulate_matched_theory(rig, 0.254e-3, w, grid, s);
+    MeasuredResponse m;
+    m.grid = grid;
+    m.crank_speed_rad_s = w;
+    for (LinkQuantity q : kLinkQuantities) {
+      const TheorySeries& o = other.series[index_of(q)];
+      m.series[index_of(q)] = AngleSeries{o.clearance.mean, o.clearance.std, o.clearance_revolutions, 6};
+    }
+    json r = comparison_record(m, theory, compare_response(m, theory));
+    r["name"] = "synthetic_" + std::to_string(static_cast<int>(rpm)) + ".flac";
+    r["files"] = json::array({{{"role", "recording"}, {"path", r["name"]}, {"sha256", std::string(64, 'a')}, {"bytes", 1}}});
+    r["spectra"] = {{"alpha3_rad_s2", {{"order", {1, 2, 3}}, {"amplitude", {10.0, 5.0, 1.0}}}}};
+    records.push_back(r);
+    ++i;
+  }
+  records.push_back({{"name", "broken.wav"}, {"status", "failed"}, {"error_kind", "input"},
+                     {"error", "broken.wav: not a recording </script><b>"}, {"files", json::array()}});
+  return {{"tool", "fourbar"}, {"version", "test"}, {"command", "fourbar report <test>"}, {"session_dir", "synthetic"},
+          {"title", "Synthetic session"}, {"notes", ""}, {"settings", {{"theory", theory_settings_json({})}}},
+          {"settings_file", nullptr}, {"recordings", records}, {"recordings_failed", 1},
+          {"orphan_manifests", json::array()}, {"severity", severity_record(records)}};
+}
+
+TEST(HtmlReport, SelfContainedAndEscaped) {
+  const std::string html = render_html_report(synthetic_session());
+  // Nothing to fetch: no src/href to another document, no url(), no @import.
+  EXPECT_FALSE(std::regex_search(html, std::regex(R"re((src|href)\s*=\s*["']?(https?:|//|file:))re", std::regex::icase)));
+  EXPECT_EQ(html.find("@import"), std::string::npos);
+  EXPECT_EQ(html.find("sourceMappingURL"), std::string::npos);
+  // Text from the data cannot close the script or inject markup.
+  EXPECT_EQ(html.find("not a recording </script><b>"), std::string::npos);
+  EXPECT_NE(html.find("not a recording &lt;/script&gt;&lt;b&gt;"), std::string::npos);
+  EXPECT_NE(html.find("Dygraph"), std::string::npos);   // the library is inlined
+  EXPECT_NE(html.find("@media print"), std::string::npos);
+}
+
+TEST(HtmlReport, DrawsEveryChartInHeadlessChromium) {
+  const auto chromium = testing::chromium_binary();
+  if (!chromium) GTEST_SKIP() << "chromium is not installed (Debian package chromium; scripts/install-deps.sh installs it)";
+  testing::TempDir dir;
+  const auto page = dir.path() / "report.html";
+  write_text_file(page, render_html_report(synthetic_session()));
+  const testing::BrowserRun run = testing::run_chromium(*chromium, page, "--dump-dom");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::string& dom = run.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(dom, m, std::regex(R"re(<body[^>]*data-js-errors="(\d+)")re"))) << dom.substr(0, 2000);
+  EXPECT_EQ(m[1], "0") << dom.substr(dom.find("js-errors"), 600);
+  ASSERT_TRUE(std::regex_search(dom, m, std::regex(R"re(<body[^>]*data-charts-drawn="(\d+)")re"))) << "charts never finished";
+  const int drawn = std::stoi(m[1]);
+  // 2 recordings × (4 overlays + orders + factor + spectrum) + 4 session charts.
+  EXPECT_EQ(drawn, 2 * 7 + 4);
+  std::size_t charts = 0, with_data = 0;
+  const std::regex chart_div(R"re(<div class="chart[^"]*" id="([^"]+)"([^>]*)>)re");
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), chart_div); it != std::sregex_iterator(); ++it) {
+    ++charts;
+    std::smatch d;
+    const std::string attrs = (*it)[2];
+    if (std::regex_search(attrs, d, std::regex(R"re(data-drawn="(\d+)")re")) && std::stoi(d[1]) > 0) ++with_data;
+    else ADD_FAILURE() << "chart " << (*it)[1] << " drew no data";
+  }
+  EXPECT_EQ(charts, static_cast<std::size_t>(drawn));
+  EXPECT_EQ(with_data, charts);
+  EXPECT_EQ(run.err.find("Uncaught"), std::string::npos) << run.err;
+  EXPECT_NE(dom.find("<canvas"), std::string::npos);
+  EXPECT_NE(dom.find("class=\"dot\""), std::string::npos);  // the polar impact plots have points
+
+  // A screenshot to look at (kept in the test's working folder).
+  const auto shot = std::filesystem::absolute("html_report_screenshot.png");
+  std::filesystem::remove(shot);
+  const testing::BrowserRun pic = testing::run_chromium(*chromium, page, "--screenshot=" + shot.string());
+  ASSERT_EQ(pic.status, 0) << pic.err;
+  ASSERT_TRUE(std::filesystem::exists(shot));
+  EXPECT_GT(std::filesystem::file_size(shot), 20000u);  // a blank page is a few kB
+}
+
+}  // namespace
+}  // namespace fourbar
