@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
                 r.name.c_str(), units::m_to_mm(r.rig.ground_length_m), units::m_to_mm(r.rig.crank.length_m),
                 units::m_to_mm(r.rig.coupler.length_m), units::m_to_mm(r.rig.rocker.length_m),
                 to_string(rep.grashof), rep.transmission_min_deg, rep.transmission_max_deg,
-                units::m_to_mm(stress::toggle_margin_m(r.rig)));
+                units::m_to_mm(toggle_margin_m(r.rig)));
   }
 
   std::vector<Group> groups;
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
                                                          {ContactLaw::stick_slip, 1}};
   for (const auto& nr : rigs) {
     Group b{"B grid, " + nr.name, {}, 0};
-    const double margin = stress::toggle_margin_m(nr.rig);
+    const double margin = toggle_margin_m(nr.rig);
     for (double xi : clearances_mm)
       for (double e : restitutions)
         for (const Law& l : laws)

@@ -61,6 +61,21 @@ TEST(ClearanceStress, ClearanceExtremes) {
   expect_passes(large);
 }
 
+TEST(ClearanceStress, TinyClearanceAtSpeedStaysInsideTheBushing) {
+  // Regression (issue 7): impacts located to a fixed 1e-13 s let the pin
+  // reach 7.7e-9·ξ past the wall at ξ = 1 µm, 3000 rpm, e = 1 (approach
+  // speed × 1e-13 s); now located to a few ulps of t.
+  Case c = base();
+  c.clearance_m = 1e-6;
+  c.restitution = 1;
+  c.rpm = 3000;
+  c.turns = 3;
+  const stress::Result r = stress::run_case(c);
+  EXPECT_TRUE(r.ok) << r.failure;
+  EXPECT_GT(r.impacts, 1000u);
+  EXPECT_LT(r.drift, stress::kDriftBound);
+}
+
 TEST(ClearanceStress, ImpactLawExtremes) {
   Case rough = base();
   rough.clearance_m = 1e-3;
