@@ -16,6 +16,7 @@ packages=(
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev        # bench/ programs
   python3-scipy           # bench/compare_analyze_scipy.py (numpy/scipy reference of the analyze chain)
+  clang libclang-rt-14-dev      # scripts/fuzz.sh: libFuzzer, ASan and UBSan runtimes (Debian 12's clang 14)
 )
 
 if [ "$(id -u)" -ne 0 ]; then
