@@ -8,7 +8,7 @@
 # and runs each target, one after the other on one core (-jobs=1), for
 # SECONDS (default 60) from its seed corpus tests/fuzz/corpus/<target>/.
 # New inputs go to build-fuzz/corpus/<target>/ (the seeds stay small);
-# crashes to build-fuzz/crashes/<target>/. A crash input belongs in
+# crashes of this run to build-fuzz/crashes/<target>/. A crash input belongs in
 # tests/fuzz/regressions/<target>/ once fixed: CTest replays those.
 # Prints one line per target: executions, corpus size, crashes. Exit 1 when
 # any target crashed.
@@ -29,6 +29,7 @@ status=0
 summary=()
 for t in "${targets[@]}"; do
   corpus="build-fuzz/corpus/$t" crashes="build-fuzz/crashes/$t" log="build-fuzz/fuzz_$t.log"
+  rm -rf "$crashes"  # only this run's crashes are counted (fixed ones live in tests/fuzz/regressions/)
   mkdir -p "$corpus" "$crashes"
   set +e
   "build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -jobs=1 -workers=1 -max_len=8192 -rss_limit_mb=2048 \

@@ -113,6 +113,21 @@ TEST(ClearanceStress, NearToggle) {
   expect_passes(hi);
 }
 
+TEST(ClearanceStress, NearToggleEnergyResidualIsIntegrationError) {
+  // Near a toggle the default tolerance 1e-10 does not hold the energy
+  // balance to 1e-8 at every start angle (bench/stress_clearance: 1.4e-8 …
+  // 1.1e-7 on the toggle rigs). It is integration error, not a modelling
+  // fault: the residual falls with the tolerance, and at 1e-12 every
+  // invariant holds.
+  Case loose = base("toggle-0", stress::near_toggle_rig(5));
+  Case tight = loose;
+  tight.tolerance = 1e-12;
+  const stress::Result a = stress::run_case(loose), b = stress::run_case(tight);
+  EXPECT_GT(a.impacts, 10u);
+  EXPECT_TRUE(b.ok) << b.failure;
+  EXPECT_LT(b.energy_residual, 0.1 * a.energy_residual);
+}
+
 Scene sampled_scene(int samples_per_revolution) {
   Scene s;
   s.rig = std::make_shared<const Rig>(thesis_rig());
