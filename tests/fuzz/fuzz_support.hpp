@@ -16,32 +16,9 @@
 #include <string>
 #include <string_view>
 
-namespace fourbar::fuzz {
+#include "support/temp_dir.hpp"
 
-/// The thesis rig file (data/rigs/thesis.toml), for scenes and manifests.
-inline constexpr std::string_view kRigToml = R"(name = "thesis rig"
-gravity_m_s2 = 9.8145
-assembly = "open"
-[ground]
-length_mm = 387.0
-[crank]
-length_mm = 64.0
-mass_centre_mm = 9.0
-mass_kg = 0.6095
-inertia_kg_mm2 = 2645.0
-[coupler]
-length_mm = 309.0
-mass_centre_mm = 185.0
-mass_kg = 0.2439
-inertia_kg_mm2 = 2950.0
-[rocker]
-length_mm = 312.0
-mass_centre_mm = 134.0
-mass_kg = 0.2334
-inertia_kg_mm2 = 3176.0
-[clearance]
-radial_mm = 0.254
-)";
+namespace fourbar::fuzz {
 
 class Workspace {
  public:
@@ -49,7 +26,9 @@ class Workspace {
     std::string tmpl = (std::filesystem::temp_directory_path() / "fourbar-fuzz-XXXXXX").string();
     if (!::mkdtemp(tmpl.data())) std::abort();
     dir_ = tmpl;
-    write("rig.toml", reinterpret_cast<const std::uint8_t*>(kRigToml.data()), kRigToml.size());
+    // The thesis rig, for scenes and manifests that name "rig.toml".
+    const std::string rig = testing::thesis_rig_toml();
+    write("rig.toml", reinterpret_cast<const std::uint8_t*>(rig.data()), rig.size());
   }
   ~Workspace() {
     std::error_code ec;
