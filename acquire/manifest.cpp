@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "common/csv_writer.hpp"
@@ -207,6 +208,15 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
     return (ec || r.empty() || up >= depth) ? abs.generic_string() : r.generic_string();
   };
   auto num = [](double v) { return format_double(v); };
+  // A value converted from SI back to the file's unit (mm, degrees) carries
+  // the conversion's rounding in its last digit (0.258 mm came back as
+  // 0.25800000000000006 and drifted on each round trip, issue 7 fuzzing):
+  // 15 significant digits give back the decimal that was read.
+  auto converted = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.15g", v);
+    return std::string(buf);
+  };
   auto quoted = [](const std::string& s) {
     std::string out = "\"";
     for (char ch : s) out += (ch == '"' || ch == '\\') ? std::string("\\") + ch : std::string(1, ch);
@@ -215,7 +225,7 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
   std::ostringstream os;
   os << "# Recording manifest (keys: README \"Recordings and manifests\").\n";
   os << "rig = " << quoted(rel(m.rig_file)) << "\n";
-  os << "clearance_mm = " << num(units::m_to_mm(m.clearance_m)) << "\n";
+  os << "clearance_mm = " << converted(units::m_to_mm(m.clearance_m)) << "\n";
   os << "full_scale_V = " << num(m.full_scale_V) << "\n";
   if (m.adc_range_V) os << "adc_range_V = " << num(*m.adc_range_V) << "\n";
   if (m.sample_rate_hz) os << "sample_rate_hz = " << num(*m.sample_rate_hz) << "\n";
@@ -231,8 +241,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
     if (is_accelerometer(c.role)) {
       os << "volts_per_unit = " << num(c.volts_per_m_s2) << "\n";
       os << "axis_sign = " << (c.axis_sign > 0 ? 1 : -1) << "\n";
-      os << "position_mm = " << num(units::m_to_mm(c.position_m)) << "\n";
-      if (c.offset_m != 0) os << "offset_mm = " << num(units::m_to_mm(c.offset_m)) << "\n";
+      os << "position_mm = " << converted(units::m_to_mm(c.position_m)) << "\n";
+      if (c.offset_m != 0) os << "offset_mm = " << converted(units::m_to_mm(c.offset_m)) << "\n";
       os << "ac_coupled = " << (c.ac_coupled ? "true" : "false") << "\n";
       if (c.ac_coupled) os << "highpass_hz = " << num(c.highpass_hz) << "\n";
     }
@@ -240,8 +250,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
       os << "polarity = \"" << (c.polarity == PulsePolarity::rising ? "rising" : "falling") << "\"\n";
       if (c.threshold_low_V) os << "threshold_low_V = " << num(*c.threshold_low_V) << "\n";
       if (c.threshold_high_V) os << "threshold_high_V = " << num(*c.threshold_high_V) << "\n";
-      os << "crank_offset_deg = " << num(units::rad_to_deg(c.crank_offset_rad)) << "\n";
-      if (c.debounce_s > 0) os << "debounce_ms = " << num(c.debounce_s * 1e3) << "\n";
+      os << "crank_offset_deg = " << converted(units::rad_to_deg(c.crank_offset_rad)) << "\n";
+      if (c.debounce_s > 0) os << "debounce_ms = " << converted(c.debounce_s * 1e3) << "\n";
     }
     if (!c.notes.empty()) os << "notes = " << quoted(c.notes) << "\n";
   }

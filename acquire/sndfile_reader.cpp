@@ -3,6 +3,7 @@
 #include <sndfile.h>
 
 #include <cstring>
+#include <memory>
 #include <regex>
 #include <sstream>
 
@@ -39,17 +40,16 @@ class SndfileReader final : public Reader {
  public:
   SndfileReader(const std::filesystem::path& file, const ReaderOptions& options) {
     SF_INFO sf{};
-    handle_ = sf_open(file.c_str(), SFM_READ, &sf);
+    handle_.reset(sf_open(file.c_str(), SFM_READ, &sf));
     if (!handle_)
       throw InputError(file.string() + ": cannot read as audio recording (" + sf_strerror(nullptr) +
                        "); check that the file is complete and really a " + file.extension().string() + " file");
     char log[8192] = {};
-    sf_command(handle_, SFC_GET_LOG_INFO, log, sizeof log);
+    sf_command(handle_.get(), SFC_GET_LOG_INFO, log, sizeof log);
     if (auto why = truncation_in_log(log)) {
-      sf_close(handle_);
       throw InputError(file.string() + ": truncated recording: " + *why + "; copy the file again from the DAQ");
     }
-    sf_command(handle_, SFC_SET_NORM_DOUBLE, nullptr, SF_TRUE);
+    sf_command(handle_.get(), SFC_SET_NORM_DOUBLE, nullptr, SF_TRUE);
     info_.file = file;
     info_.format = sndfile_major_name(sf.format);
     info_.sample_format = sndfile_subtype_name(sf.format);
@@ -70,16 +70,15 @@ class SndfileReader final : public Reader {
       throw InputError(file.string() + ": the manifest names time_column '" + *options.time_column +
                        "' but an audio file has no columns; remove time_column");
   }
-  ~SndfileReader() override { sf_close(handle_); }
   SndfileReader(const SndfileReader&) = delete;
   SndfileReader& operator=(const SndfileReader&) = delete;
 
   std::size_t read(std::span<double> out) override {
     const auto want = static_cast<sf_count_t>(out.size() / static_cast<std::size_t>(info_.channels));
     if (want == 0 || position_ >= info_.frames) return 0;
-    const sf_count_t got = sf_readf_double(handle_, out.data(), want);
+    const sf_count_t got = sf_readf_double(handle_.get(), out.data(), want);
     position_ += static_cast<std::uint64_t>(std::max<sf_count_t>(got, 0));
-    if (sf_error(handle_) != SF_ERR_NO_ERROR || (got < want && position_ < info_.frames))
+    if (sf_error(handle_.get()) != SF_ERR_NO_ERROR || (got < want && position_ < info_.frames))
       throw InputError(info_.file.string() + ": truncated or damaged recording: reading stopped at frame " +
                        std::to_string(position_) + " of " + std::to_string(info_.frames) +
                        " (time " + std::to_string(static_cast<double>(position_) / info_.sample_rate_hz) +
@@ -88,13 +87,16 @@ class SndfileReader final : public Reader {
   }
 
   void rewind() override {
-    if (sf_seek(handle_, 0, SEEK_SET) != 0)
-      throw RunError(info_.file.string() + ": cannot seek back to the start (" + sf_strerror(handle_) + ")");
+    if (sf_seek(handle_.get(), 0, SEEK_SET) != 0)
+      throw RunError(info_.file.string() + ": cannot seek back to the start (" + sf_strerror(handle_.get()) + ")");
     position_ = 0;
   }
 
  private:
-  SNDFILE* handle_ = nullptr;
+  // Owned, so that a constructor that throws after sf_open (sample rate 0,
+  // no frames, a rate the manifest contradicts) closes it too: those paths
+  // leaked libsndfile's state (found by fuzzing, issue 7).
+  std::unique_ptr<SNDFILE, int (*)(SNDFILE*)> handle_{nullptr, sf_close};
   std::uint64_t position_ = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <memory>
 
 #include "cli/command.hpp"
 #include "common/atomic_output.hpp"
@@ -56,18 +57,23 @@ nlohmann::json column_stats(const SeriesTable& t) {
   return cols;
 }
 
-void write_series(const std::filesystem::path& csv_path, const Provenance& prov, const SeriesTable& table) {
-  CsvWriter csv(csv_path, prov.comment_lines(), table.names);
+// The writers below return their file written but not committed: the
+// caller commits every file of a run together at the end, so an interrupted
+// or failed run leaves none of them new beside old ones.
+using PendingFile = std::unique_ptr<CsvWriter>;
+
+PendingFile write_series(const std::filesystem::path& csv_path, const Provenance& prov, const SeriesTable& table) {
+  auto csv = std::make_unique<CsvWriter>(csv_path, prov.comment_lines(), table.names);
   std::vector<double> row(table.names.size());
   for (std::size_t i = 0; i < table.rows(); ++i) {
     for (std::size_t c = 0; c < row.size(); ++c) row[c] = table.columns[c][i];
-    csv.row(row);
+    csv->row(row);
   }
-  csv.commit();
+  return csv;
 }
 
-void write_impacts(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run) {
-  CsvWriter csv(path, prov.comment_lines(),
+PendingFile write_impacts(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run) {
+  auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
                 {"crank_deg", "time_s", "revolution", "normal_impulse_Ns", "tangential_impulse_Ns", "eta_deg",
                  "approach_speed_m_s", "rebound_speed_m_s", "slip_speed_before_m_s", "slip_speed_after_m_s",
                  "stuck", "energy_loss_J", "motor_impulse_Nms", "mode_after"});
@@ -78,14 +84,14 @@ void write_impacts(const std::filesystem::path& path, const Provenance& prov, co
                           x.normal_speed_before_m_s, -x.normal_speed_after_m_s, x.tangential_speed_before_m_s,
                           x.tangential_speed_after_m_s, x.stuck ? 1.0 : 0.0, x.energy_loss_J, x.motor_impulse_Nms,
                           r.mode_after == ContactMode::following ? 1.0 : 0.0};
-    csv.row(row);
+    csv->row(row);
   }
-  csv.commit();
+  return csv;
 }
 
-void write_revolutions(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run,
-                       double start_angle_rad, double direction) {
-  CsvWriter csv(path, prov.comment_lines(),
+PendingFile write_revolutions(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run,
+                              double start_angle_rad, double direction) {
+  auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
                 {"crank_deg", "revolution", "impacts", "sum_normal_impulse_Ns", "impact_index_Ns", "contact_losses",
                  "following_share", "free_flight_share"});
   for (const RevolutionRecord& r : run.revolutions) {
@@ -94,9 +100,9 @@ void write_revolutions(const std::filesystem::path& path, const Provenance& prov
                           static_cast<double>(r.index), static_cast<double>(r.impacts), r.sum_normal_impulse_Ns,
                           r.impacts ? r.sum_normal_impulse_Ns / r.impacts : 0.0, static_cast<double>(r.contact_losses),
                           r.following_time_s / span, r.free_time_s / span};
-    csv.row(row);
+    csv->row(row);
   }
-  csv.commit();
+  return csv;
 }
 
 nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
@@ -145,14 +151,16 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
 int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::filesystem::path& dir,
                         const Provenance& prov) {
   const auto csv_path = dir / "series.csv";
-  write_series(csv_path, prov, run.series);
+  std::vector<PendingFile> files;
+  files.push_back(write_series(csv_path, prov, run.series));
   std::string extra;
   if (scene.clearance.write_impacts) {
-    write_impacts(dir / "impacts.csv", prov, run);
+    files.push_back(write_impacts(dir / "impacts.csv", prov, run));
     extra += ", impacts.csv (" + std::to_string(run.impacts.size()) + " impacts)";
   }
   if (scene.clearance.write_revolutions) {
-    write_revolutions(dir / "revolutions.csv", prov, run, scene.start_angle_rad, scene.crank_speed_rad_s > 0 ? 1 : -1);
+    files.push_back(
+        write_revolutions(dir / "revolutions.csv", prov, run, scene.start_angle_rad, scene.crank_speed_rad_s > 0 ? 1 : -1));
     extra += ", revolutions.csv";
   }
   nlohmann::json summary;
@@ -167,7 +175,10 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
   summary["clearance"] = clearance_json(scene, run);
   summary["series"] = {{"file", "series.csv"}, {"rows", run.series.rows()}, {"columns", column_stats(run.series)}};
   const auto json_path = dir / "summary.json";
-  write_text_file(json_path, summary.dump(2) + "\n");
+  AtomicOutput json(json_path);
+  json.stream() << summary.dump(2) << "\n";
+  for (auto& f : files) f->commit();
+  json.commit();
   std::cout << "wrote " << csv_path.string() << " (" << run.series.rows() << " rows x " << run.series.names.size()
             << " columns)" << extra << " and " << json_path.string() << "\n";
   return 0;
@@ -204,7 +215,7 @@ int run_sim(const Invocation& inv) {
   const SeriesTable table = run_nominal(scene);
 
   const std::filesystem::path csv_path = std::filesystem::path(out_dir) / "series.csv";
-  write_series(csv_path, prov, table);
+  PendingFile csv = write_series(csv_path, prov, table);
 
   nlohmann::json summary;
   summary["provenance"] = prov.to_json();
@@ -217,7 +228,10 @@ int run_sim(const Invocation& inv) {
                       {"samples_per_revolution", scene.samples_per_revolution}};
   summary["series"] = {{"file", "series.csv"}, {"rows", table.rows()}, {"columns", column_stats(table)}};
   const std::filesystem::path json_path = std::filesystem::path(out_dir) / "summary.json";
-  write_text_file(json_path, summary.dump(2) + "\n");
+  AtomicOutput json(json_path);
+  json.stream() << summary.dump(2) << "\n";
+  csv->commit();
+  json.commit();
 
   std::cout << "wrote " << csv_path.string() << " (" << table.rows() << " rows x " << table.names.size()
             << " columns) and " << json_path.string() << "\n";

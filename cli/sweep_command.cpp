@@ -19,7 +19,8 @@ namespace fourbar::cli {
 
 int run_sweep(const Invocation& inv) {
   std::string sweep_file, out_file;
-  unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+  // Signed, so that "--jobs -1" is refused instead of wrapping round to 4294967295.
+  long long jobs = std::max(1u, std::thread::hardware_concurrency());
   po::options_description opts("options");
   opts.add_options()("sweep", po::value(&sweep_file)->required(), "sweep file (TOML)")(
       "out,o", po::value(&out_file), "output table (default: out/<sweep name>.csv)")(
@@ -44,7 +45,7 @@ int run_sweep(const Invocation& inv) {
           "energy_residual_rel, max_penetration_rel.",
           opts, pos, inv, vm))
     return 0;
-  if (jobs == 0) throw InputError("sweep: --jobs must be at least 1");
+  if (jobs < 1 || jobs > 4096) throw InputError("sweep: --jobs " + std::to_string(jobs) + " must be between 1 and 4096");
 
   Scene base;
   const SweepGrid grid = load_sweep(sweep_file, base);
@@ -52,7 +53,7 @@ int run_sweep(const Invocation& inv) {
   const std::filesystem::path out_path(out_file);
   if (out_path.has_parent_path()) ensure_output_dir(out_path.parent_path());
 
-  const std::vector<SweepPoint> points = fourbar::run_sweep(base, grid, jobs);
+  const std::vector<SweepPoint> points = fourbar::run_sweep(base, grid, static_cast<unsigned>(jobs));
 
   Provenance prov{inv.command_line, {sweep_file, base.source, base.rig->source}};
   CsvWriter csv(out_path, prov.comment_lines(),

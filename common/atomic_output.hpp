@@ -1,12 +1,30 @@
 #pragma once
 // An output file that appears under its final name only when complete:
 // written to a temporary file beside it and renamed on commit(). An
-// interrupted run leaves no half file that looks finished.
+// interrupted run leaves no half file that looks finished: SIGINT, SIGTERM
+// and SIGHUP remove the temporary files still open before the process ends
+// (InterruptCleanup); a crash or SIGKILL may leave a `NAME.tmp-PID` file,
+// never a file under the final name.
 
 #include <filesystem>
 #include <fstream>
 
 namespace fourbar {
+
+/// While alive, `path` is removed if the process is ended by SIGINT, SIGTERM
+/// or SIGHUP (handlers installed on first use where the signal's disposition
+/// is the default; the signal then ends the process as before). For the
+/// temporary files of outputs not yet committed.
+class InterruptCleanup {
+ public:
+  explicit InterruptCleanup(const std::filesystem::path& path);
+  InterruptCleanup(const InterruptCleanup&) = delete;
+  InterruptCleanup& operator=(const InterruptCleanup&) = delete;
+  ~InterruptCleanup();
+
+ private:
+  int slot_ = -1;
+};
 
 class AtomicOutput {
  public:
@@ -25,6 +43,7 @@ class AtomicOutput {
  private:
   std::filesystem::path path_;
   std::filesystem::path tmp_;
+  InterruptCleanup cleanup_;  // after tmp_: removes it on SIGINT/SIGTERM/SIGHUP until commit
   std::ofstream out_;
   bool committed_ = false;
 };

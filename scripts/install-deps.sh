@@ -19,6 +19,7 @@ packages=(
   libssl-dev              # SHA-256 (libcrypto) for the report's checksums and cache keys
   libjs-dygraphs          # charting library inlined into the HTML report
   chromium                # headless browser test of the HTML report
+  clang libclang-rt-14-dev      # scripts/fuzz.sh: libFuzzer, ASan and UBSan runtimes (Debian 12's clang 14)
 )
 
 if [ "$(id -u)" -ne 0 ]; then

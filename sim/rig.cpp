@@ -25,6 +25,11 @@ const char* to_string(GrashofClass c) {
   return "?";
 }
 
+double toggle_margin_m(const Rig& rig) {
+  const double l1 = rig.ground_length_m, l2 = rig.crank.length_m, l3 = rig.coupler.length_m, l4 = rig.rocker.length_m;
+  return std::min((l3 + l4) - (l1 + l2), std::abs(l1 - l2) - std::abs(l3 - l4));
+}
+
 GrashofClass grashof_class(const Rig& rig) {
   const std::array<double, 4> l{rig.ground_length_m, rig.crank.length_m, rig.coupler.length_m, rig.rocker.length_m};
   const auto [mn, mx] = std::minmax_element(l.begin(), l.end());

@@ -59,6 +59,14 @@ GrashofClass grashof_class(const Rig& rig);
 /// InputError naming `rig.source`, the key and the value.
 void validate_rig(const Rig& rig);
 
+/// How close the loop comes to a toggle, as a distance (m): the least
+/// distance by which the crank pin to rocker pivot distance (|l1 − l2| …
+/// l1 + l2 over a turn) stays inside the coupler–rocker reach (|l3 − l4| …
+/// l3 + l4). A radial clearance ξ moves the rocker end by up to ξ, so the
+/// clearance model needs ξ below this margin (issue 7: beyond it the loop
+/// with the pin on the bushing wall cannot close and the run is garbage).
+double toggle_margin_m(const Rig& rig);
+
 /// Reads and validates a rig TOML file (keys in README "Rig file").
 Rig load_rig(const std::filesystem::path& file);
 

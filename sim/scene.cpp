@@ -1,7 +1,9 @@
 #include "sim/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "common/csv_writer.hpp"
 #include "common/error.hpp"
 #include "common/toml_section.hpp"
 #include "common/units.hpp"
@@ -62,6 +64,12 @@ Scene load_scene(const std::filesystem::path& file) {
   if (auto sec = root.optional_section("clearance")) {
     if (!clearance) root.fail("clearance", "is only used with model = \"clearance\"; remove the table or change model");
     scene.clearance = read_clearance_settings(*sec, scene.rig->radial_clearance_m);
+    if (const double margin = toggle_margin_m(*scene.rig); !(scene.clearance_m() < margin))
+      sec->fail("radial_mm", "= " + format_double(units::m_to_mm(scene.clearance_m())) +
+                                 " mm does not fit the rig: its loop comes within " +
+                                 format_double(std::round(units::m_to_mm(margin) * 1e6) / 1e6) +
+                                 " mm of a toggle, so the pin on the bushing wall cannot close it; use a clearance "
+                                 "below that");
     sec->finish();
   } else if (clearance) {
     root.fail("clearance", "is missing: model = \"clearance\" needs a [clearance] table (at least restitution)");

@@ -47,6 +47,12 @@ SweepGrid load_sweep(const std::filesystem::path& file, Scene& base) {
     return out;
   };
   g.radial_clearance_m = array("radial_mm", 1e-9, 100, units::m_to_mm(base.clearance_m()), 1e-3);
+  for (double xi : g.radial_clearance_m)
+    if (const double margin = toggle_margin_m(*base.rig); !(xi < margin))
+      full.fail("radial_mm", "holds " + format_double(units::m_to_mm(xi)) + " mm: the rig's loop comes within " +
+                                 format_double(std::round(units::m_to_mm(margin) * 1e6) / 1e6) +
+                                 " mm of a toggle, so the pin on the bushing wall cannot close it; use clearances "
+                                 "below that");
   g.crank_speed_rad_s = array("crank_speed_rpm", -1e5, 1e5, units::rad_s_to_rpm(base.crank_speed_rad_s),
                               units::kTwoPi / 60.0);
   for (double w : g.crank_speed_rad_s)

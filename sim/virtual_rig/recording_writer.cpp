@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "acquire/sndfile_formats.hpp"
+#include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
 
@@ -21,6 +22,7 @@ class SndfileWriter final : public RecordingWriter {
       : path_(file), channels_(channels), bits_(bits) {
     tmp_ = file;
     tmp_ += ".tmp-" + std::to_string(::getpid());
+    cleanup_ = std::make_unique<InterruptCleanup>(tmp_);
     SF_INFO info{};
     info.channels = channels;
     info.samplerate = static_cast<int>(std::lround(rate));
@@ -77,6 +79,7 @@ class SndfileWriter final : public RecordingWriter {
  private:
   std::filesystem::path path_, tmp_;
   int channels_, bits_;
+  std::unique_ptr<InterruptCleanup> cleanup_;  // removes tmp_ on SIGINT/SIGTERM/SIGHUP
   SNDFILE* handle_ = nullptr;
   bool committed_ = false;
   std::vector<int> ints_;

@@ -75,5 +75,25 @@ TEST(ClearanceScene, RejectsBadValues) {
   has(error_of(replaced(kScene, "= 350", "= 0")), "crank_speed_rpm");
 }
 
+TEST(ClearanceScene, RejectsClearanceBeyondTheToggleMargin) {
+  // Issue 7: with the ground made 556 mm the loop comes within 1 mm of its
+  // 180° toggle; a 1.5 mm clearance cannot close the loop with the pin on the
+  // wall (runs gave energy residuals of order 1), 0.5 mm can.
+  EXPECT_NEAR(toggle_margin_m(thesis_rig()), 0.170, 1e-12);  // (309 + 312) − (387 + 64) mm
+  TempDir dir;
+  dir.write("r.toml", replaced(testing::thesis_rig_toml(), "length_mm = 387.0", "length_mm = 556.0"));
+  const std::string msg = [&] {
+    try {
+      load_scene(dir.write("s.toml", replaced(kScene, "radial_mm = 0.1", "radial_mm = 1.5")));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  }();
+  EXPECT_NE(msg.find("radial_mm"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("within 1 mm of a toggle"), std::string::npos) << msg;
+  EXPECT_NO_THROW(load_scene(dir.write("t.toml", replaced(kScene, "radial_mm = 0.1", "radial_mm = 0.5"))));
+}
+
 }  // namespace
 }  // namespace fourbar

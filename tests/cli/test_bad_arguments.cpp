@@ -1,0 +1,126 @@
+// Bad arguments to every subcommand (issue 7): each fails cleanly with exit
+// status 2 and exactly one line on stderr starting `fourbar: `, writes
+// nothing, and never crashes.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "support/run_command.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::count_lines;
+using testing::run_fourbar;
+using testing::TempDir;
+
+const std::string kData = FOURBAR_SOURCE_DIR "/data";
+
+struct BadCase {
+  std::string args;
+  std::string must_mention;  ///< a word the message names (option, file, value)
+};
+
+void expect_clean_failure(const BadCase& c, const std::filesystem::path& out_dir) {
+  const auto r = run_fourbar(c.args);
+  SCOPED_TRACE("fourbar " + c.args);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(c.must_mention), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  // Nothing written: the output folder is empty or absent.
+  if (std::filesystem::exists(out_dir)) EXPECT_TRUE(std::filesystem::is_empty(out_dir)) << out_dir;
+}
+
+class BadArguments : public ::testing::Test {
+ protected:
+  TempDir dir;
+  std::string out() const { return (dir.path() / "out").string(); }
+  std::filesystem::path file(const std::string& name, const std::string& text) const { return dir.write(name, text); }
+};
+
+TEST_F(BadArguments, Sim) {
+  const std::string scene = kData + "/scenes/thesis_nominal_350rpm.toml";
+  const std::string empty = file("empty.toml", "").string();
+  const std::string plain = file("plain_file", "x").string();
+  for (const BadCase& c : std::vector<BadCase>{
+           {"sim", "scene"},
+           {"sim --frobnicate " + scene, "frobnicate"},
+           {"sim " + scene + " " + scene + " --out " + out(), "sim"},
+           {"sim /nonexistent/scene.toml --out " + out(), "/nonexistent/scene.toml"},
+           {"sim " + dir.path().string() + " --out " + out(), dir.path().string()},
+           {"sim " + empty + " --out " + out(), "empty.toml"},
+           {"sim " + scene + " --out", "out"},
+           {"sim " + scene + " --out " + plain, "plain_file"},
+       })
+    expect_clean_failure(c, out());
+}
+
+TEST_F(BadArguments, Rig) {
+  const std::string rig = kData + "/rigs/thesis.toml";
+  const std::string garbage = file("garbage.toml", "[ground\nlength_mm = ").string();
+  for (const BadCase& c : std::vector<BadCase>{
+           {"rig", "rig"},
+           {"rig " + rig + " --json=maybe", "json"},
+           {"rig " + rig + " " + rig, "rig"},
+           {"rig --nope " + rig, "nope"},
+           {"rig /nonexistent.toml", "/nonexistent.toml"},
+           {"rig " + garbage, "garbage.toml"},
+       })
+    expect_clean_failure(c, out());
+}
+
+TEST_F(BadArguments, Sweep) {
+  const std::string sweep = kData + "/scenes/experiment_grid_sweep.toml";
+  const std::string out_csv = out() + "/table.csv";
+  for (const BadCase& c : std::vector<BadCase>{
+           {"sweep", "sweep"},
+           {"sweep " + sweep + " --jobs 0 --out " + out_csv, "jobs"},
+           {"sweep " + sweep + " --jobs -1 --out " + out_csv, "jobs"},
+           {"sweep " + sweep + " --jobs many --out " + out_csv, "jobs"},
+           {"sweep " + sweep + " --jobs 99999999999 --out " + out_csv, "jobs"},
+           {"sweep " + sweep + " --out " + out_csv + " --bogus", "bogus"},
+           {"sweep /nonexistent.toml --out " + out_csv, "/nonexistent.toml"},
+           {"sweep " + kData + "/scenes/thesis_nominal_350rpm.toml --out " + out_csv, "scene"},
+       })
+    expect_clean_failure(c, out());
+}
+
+TEST_F(BadArguments, Acquire) {
+  const std::string rec = file("rec.csv", "time_s,a\n0,1\n0.001,2\n").string();
+  for (const BadCase& c : std::vector<BadCase>{
+           {"acquire", "required"},
+           {"acquire " + rec, "out"},
+           {"acquire " + rec + " --out " + out() + " -n 0", "samples-per-rev"},
+           {"acquire " + rec + " --out " + out() + " -n -5", "samples-per-rev"},
+           {"acquire " + rec + " --out " + out() + " -n lots", "samples-per-rev"},
+           {"acquire " + rec + " --out " + out() + " --binary=yes", "binary"},
+           {"acquire " + rec + " --out " + out() + " --manifest /nonexistent.toml", "/nonexistent.toml"},
+           {"acquire " + rec + " --out " + out(), "rec.toml"},  // no manifest beside it
+           {"acquire /nonexistent.wav --out " + out(), "/nonexistent.wav"},
+           {"acquire " + dir.path().string() + " --out " + out(), dir.path().string()},
+       })
+    expect_clean_failure(c, out());
+}
+
+TEST_F(BadArguments, VirtualRig) {
+  const std::string scene = kData + "/scenes/thesis_virtual_rig_350rpm.toml";
+  for (const BadCase& c : std::vector<BadCase>{
+           {"virtual-rig", "required"},
+           {"virtual-rig " + scene, "out"},
+           {"virtual-rig " + scene + " --out " + out() + "/rec.mp3", "mp3"},
+           {"virtual-rig " + scene + " --out " + out() + "/rec", "rec"},
+           {"virtual-rig " + scene + " --out " + out() + "/rec.wav --no-truth=1", "no-truth"},
+           {"virtual-rig " + kData + "/scenes/thesis_nominal_350rpm.toml --out " + out() + "/rec.wav", "recording"},
+           {"virtual-rig /nonexistent.toml --out " + out() + "/rec.wav", "/nonexistent.toml"},
+       })
+    expect_clean_failure(c, out());
+}
+
+}  // namespace
+}  // namespace fourbar
