@@ -59,6 +59,8 @@ class ClearanceModel {
 
   /// Bearing geometry and relative velocity of pin and bushing.
   BearingState bearing(const CrankState& crank, const LinkMotion& m) const;
+  /// The same with the crank direction u2 = (cos θ2, sin θ2) already known.
+  BearingState bearing(const CrankState& crank, Vec2 u2, const LinkMotion& m) const;
 
   /// Free-flight angular accelerations (no contact force).
   void free_accelerations(const CrankState& crank, const LinkMotion& m, double& alpha3, double& alpha4) const;

@@ -38,6 +38,10 @@ struct ClearanceSettings {
   int max_revolutions = 200;     ///< bound on the turns simulated to reach steady state
   double steady_tolerance = 1e-6;  ///< state repeat tolerance (scaled state, see README)
   int max_period = 8;            ///< longest period (in turns) looked for
+  /// Sample every following-mode step at kScanPoints points for events even
+  /// when its Runge–Kutta stage values already clear it (tests and benches
+  /// compare the two; not a scene key).
+  bool full_event_scan = false;
   bool write_impacts = false;       ///< impacts.csv
   bool write_revolutions = false;   ///< revolutions.csv
 };

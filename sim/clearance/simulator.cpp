@@ -70,6 +70,7 @@ struct ClearanceSimulator::Impl {
   bool armed = true;         // free flight: the pin has left the wall since the segment start
   double segment_start = 0;  // start time of the current smooth segment
   int zeno_count = 0;
+  bool stage_filter = false;  // the integrator's right-hand-side calls lie inside its steps
   double last_event = -1e300;
 
   // Witness samples carried across steps of one segment.
@@ -133,9 +134,17 @@ struct ClearanceSimulator::Impl {
 
   struct FollowingOde final : OdeSystem {
     Impl* s;
+    /// Range of N + N_guard over the right-hand-side calls since the last
+    /// clear(): with a Runge–Kutta integrator these are its stage values
+    /// inside the step (and inside rejected, longer trial steps).
+    double w_min = 0, w_max = 0;
+    void clear() { w_min = 1e300, w_max = -1e300; }
     void rhs(double time, const OdeState& y, OdeState& dy) override {
       const CrankState c = s->crank.at(time);
       const FollowingMotion f = s->model.following(c, s->eta_of(y), s->eta_rate_of(y));
+      const double w = f.normal_force_N + s->force_guard;
+      w_min = std::min(w_min, w);
+      w_max = std::max(w_max, w);
       dy[0] = s->eta_rate_of(y);
       dy[1] = f.eta_accel_rad_s2 / s->speed_scale;
       dy[2] = f.crank_torque_Nm * c.speed_rad_s / s->energy_scale;
@@ -145,10 +154,17 @@ struct ClearanceSimulator::Impl {
 
   struct FreeOde final : OdeSystem {
     Impl* s;
+    /// Largest and smallest penetration |e| − ξ over the right-hand-side
+    /// calls since the last clear() (see FollowingOde::w_min).
+    double pen_min = 0, pen_max = 0;
+    void clear() { pen_min = 1e300, pen_max = -1e300; }
     void rhs(double time, const OdeState& y, OdeState& dy) override {
       const CrankState c = s->crank.at(time);
       NominalMotion nm;
       const LinkMotion m = s->free_links(time, y, &nm);
+      const double pen = -s->model.bearing(c, nm.pose.u2, m).gap_m;
+      pen_min = std::min(pen_min, pen);
+      pen_max = std::max(pen_max, pen);
       double a3, a4;
       s->model.free_accelerations(c, nm.pose.u2, m, a3, a4);
       const double rate_scale = s->delta_scale * s->speed_scale;
@@ -169,12 +185,14 @@ struct ClearanceSimulator::Impl {
     return {time, -b.gap_m, b.normal_speed_m_s};
   }
 
-  FollowSample follow_witness(double time) {
+  /// N + N_guard at `time`; with `check_drift` also the contact-circle
+  /// error (done once per step: it is round-off by construction).
+  FollowSample follow_witness(double time, bool check_drift = false) {
     OdeState y;
     integ->interpolate(time, y);
     const CrankState c = crank.at(time);
     const FollowingMotion f = model.following(c, eta_of(y), eta_rate_of(y));
-    monitor(model.bearing(c, f.links));
+    if (check_drift) monitor(model.bearing(c, f.links));
     return {time, f.normal_force_N + force_guard};
   }
 
@@ -184,6 +202,18 @@ struct ClearanceSimulator::Impl {
     auto spd = [this](double x) { return free_witness(x).speed; };
     FreeSample prev = free_prev;
     if (prev.t != ta) prev = free_witness(ta);
+    if (armed && stage_filter && !settings.full_event_scan) {
+      // As in scan_following: the pin stays inside by more than the spread
+      // of the step's stage and end penetrations.
+      const FreeSample end = free_witness(tb);
+      const double lo = std::min({free_ode.pen_min, prev.pen, end.pen});
+      const double hi = std::max({free_ode.pen_max, prev.pen, end.pen});
+      if (-hi > hi - lo) {
+        ++diag.filtered_steps;
+        free_prev = end;
+        return std::nullopt;
+      }
+    }
     for (int i = 1; i <= kScanPoints; ++i) {
       const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
       const FreeSample cur = free_witness(ti);
@@ -226,9 +256,24 @@ struct ClearanceSimulator::Impl {
       follow_hist.clear();
       follow_hist.push_back(follow_witness(ta));
     }
+    if (stage_filter && !settings.full_event_scan) {
+      // The step's stage values and both ends stay positive by more than
+      // their spread: w cannot reach zero inside (a parabola through them
+      // dips at most 0.26 of the spread below the lowest), so the step end
+      // is the only sample needed.
+      const FollowSample end = follow_witness(tb, true);
+      const double lo = std::min({following_ode.w_min, follow_hist.back().w, end.w});
+      const double hi = std::max({following_ode.w_max, follow_hist.back().w, end.w});
+      if (lo > hi - lo) {
+        ++diag.filtered_steps;
+        follow_hist.push_back(end);
+        if (follow_hist.size() > 2) follow_hist.erase(follow_hist.begin());
+        return std::nullopt;
+      }
+    }
     for (int i = 1; i <= kScanPoints; ++i) {
       const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
-      const FollowSample cur = follow_witness(ti);
+      const FollowSample cur = follow_witness(ti, i == kScanPoints);
       const FollowSample prev = follow_hist.back();
       if (cur.w <= 0) return locate_root(w, prev.t, cur.t, prev.w, cur.w);
       if (follow_hist.size() >= 2) {
@@ -486,7 +531,11 @@ struct ClearanceSimulator::Impl {
   void advance_to(double t_end) {
     while (t < t_end) {
       double tb = integ->current_time();
-      if (tb <= t) tb = integ->step(t_end);  // else: the rest of an earlier step is still unused
+      if (tb <= t) {
+        following_ode.clear();
+        free_ode.clear();
+        tb = integ->step(t_end);
+      }  // else: the rest of an earlier step is still unused
       const double ta = t;
       tb = std::min(tb, t_end);
       ++diag.steps;
@@ -513,6 +562,7 @@ struct ClearanceSimulator::Impl {
     rev_dir = c.speed_rad_s < 0 ? -1 : 1;
     following_ode.s = this;
     free_ode.s = this;
+    stage_filter = integ->stages_inside_step();
     diag.energy_scale_J = energy_scale;
   }
 

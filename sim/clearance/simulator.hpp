@@ -78,6 +78,7 @@ struct RevolutionRecord {
 struct ClearanceDiagnostics {
   std::size_t steps = 0, impacts = 0, touches = 0, contact_losses = 0, settles = 0;
   std::size_t degenerate_impacts = 0, energy_gaining_impacts = 0;
+  std::size_t filtered_steps = 0;       ///< steps cleared of events by their Runge–Kutta stage values alone
   double max_contact_circle_error = 0;  ///< max ||e| − ξ|/ξ in following mode
   double max_contact_normal_speed_m_s = 0;  ///< max |n·ė| in following mode
   double max_penetration = 0;           ///< max (|e| − ξ)/ξ in free flight (0 if never out)
