@@ -227,11 +227,18 @@ struct ClearanceSimulator::Impl {
             tmin = locate_root(spd, prev.t, cur.t, prev.speed, cur.speed);
             pmin = pen(tmin);
           }
-          armed = true;
-          if (cur.pen >= 0) {
-            if (pmin < 0) return locate_root(pen, tmin, cur.t, pmin, cur.pen);
+          if (cur.pen < 0) {
+            armed = true;  // coming back from inside: the crossing ahead is an impact
+          } else if (pmin < -arm_depth) {
+            armed = true;
+            return locate_root(pen, tmin, cur.t, pmin, cur.pen);
+          } else if (cur.pen > arm_depth) {
+            armed = true;
             return tmin;  // the pin never left the wall beyond round-off: a touch
           }
+          // Else still on the wall within round-off (|pen| ≤ arm depth), e.g.
+          // just after a contact loss at N = −N_guard: a touch here would
+          // restart the same state at the same time, so wait.
         }
         prev = cur;
         continue;
