@@ -12,6 +12,7 @@
 #include "common/units.hpp"
 #include "sim/clearance/run.hpp"
 #include "sim/clearance/simulator.hpp"
+#include "sim/clearance/run_turns.hpp"
 
 namespace fourbar {
 namespace {
@@ -26,28 +27,8 @@ ClearanceSettings settings(double e, IntegratorKind k = IntegratorKind::cvode, d
   return s;
 }
 
-struct RunResult {
-  ClearanceDiagnostics d;
-  std::vector<ImpactRecord> impacts;
-  std::vector<ClearanceSample> samples;
-  ContactMode final_mode;
-};
-
-RunResult run_turns(const Rig& rig, double xi, double rpm, double start_deg, double turns, const ClearanceSettings& s,
-              int samples_per_turn = 0) {
-  const ClearanceModel model(rig, xi);
-  const ConstantSpeedCrank crank(units::deg_to_rad(start_deg), units::rpm_to_rad_s(rpm));
-  ClearanceSimulator sim(model, crank, s);
-  const double period = units::kTwoPi / std::abs(units::rpm_to_rad_s(rpm));
-  if (samples_per_turn > 0) {
-    std::vector<double> t;
-    for (int i = 0; i <= turns * samples_per_turn; ++i) t.push_back(i * period / samples_per_turn);
-    sim.set_sample_times(t);
-  }
-  sim.start_nominal(0.0);
-  sim.advance_to(turns * period);
-  return {sim.diagnostics(), sim.impacts(), sim.samples(), sim.mode()};
-}
+using testing::RunResult;
+using testing::run_turns;
 
 TEST(ClearanceSimulator, InvariantsOverTenTurns) {
   for (double e : {1.0, 0.5}) {
@@ -222,18 +203,12 @@ namespace fourbar {
 namespace {
 
 Scene clearance_scene(double e, bool steady, int max_revolutions) {
-  Scene s;
-  s.rig = std::make_shared<const Rig>(thesis_rig());
-  s.model = Model::clearance;
-  s.crank_speed_rad_s = units::rpm_to_rad_s(350);
-  s.revolutions = 1;
-  s.samples_per_revolution = 36;
-  s.outputs = {"alpha3_rad_s2", "mode"};
-  s.clearance.restitution = e;
-  s.clearance.steady_state = steady;
-  s.clearance.max_revolutions = max_revolutions;
-  s.clearance.tolerance = 1e-8;
-  return s;
+  ClearanceSettings c;
+  c.restitution = e;
+  c.steady_state = steady;
+  c.max_revolutions = max_revolutions;
+  c.tolerance = 1e-8;
+  return testing::thesis_clearance_scene(c, {"alpha3_rad_s2", "mode"});
 }
 
 TEST(ClearanceRun, SteadyStateSearchIsBoundedAndReported) {

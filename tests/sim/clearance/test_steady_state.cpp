@@ -10,6 +10,7 @@
 
 #include "common/units.hpp"
 #include "sim/clearance/run.hpp"
+#include "sim/clearance/run_turns.hpp"
 #include "sim/clearance/stationarity.hpp"
 
 namespace fourbar {
@@ -30,39 +31,15 @@ ClearanceSettings wall_friction(double e, double mu, bool following, IntegratorK
 }
 
 Scene scene(const ClearanceSettings& cs, int max_revolutions) {
-  Scene s;
-  s.rig = std::make_shared<const Rig>(thesis_rig());
-  s.model = Model::clearance;
-  s.crank_speed_rad_s = units::rpm_to_rad_s(350);
-  s.revolutions = 1;
-  s.samples_per_revolution = 36;
-  s.outputs = {"alpha3_rad_s2"};
-  s.clearance = cs;
+  Scene s = testing::thesis_clearance_scene(cs, {"alpha3_rad_s2"});
   s.clearance.radial_clearance_m = kXi;
   s.clearance.steady_state = true;
   s.clearance.max_revolutions = max_revolutions;
   return s;
 }
 
-struct Turns {
-  ClearanceDiagnostics d;
-  std::vector<ClearanceSample> samples;
-  std::vector<ImpactRecord> impacts;
-};
-
-Turns run_turns(const ClearanceSettings& s, double turns, int per_turn = 0) {
-  const ClearanceModel model(thesis_rig(), kXi);
-  const ConstantSpeedCrank crank(0.0, units::rpm_to_rad_s(350));
-  ClearanceSimulator sim(model, crank, s);
-  const double period = units::kTwoPi / units::rpm_to_rad_s(350);
-  if (per_turn > 0) {
-    std::vector<double> t;
-    for (int i = 0; i <= turns * per_turn; ++i) t.push_back(i * period / per_turn);
-    sim.set_sample_times(t);
-  }
-  sim.start_nominal(0.0);
-  sim.advance_to(turns * period);
-  return {sim.diagnostics(), sim.samples(), sim.impacts()};
+testing::RunResult run_turns(const ClearanceSettings& s, double turns, int per_turn = 0) {
+  return testing::run_turns(thesis_rig(), kXi, 350, 0, turns, s, per_turn);
 }
 
 TEST(WallFriction, ZeroMuIsTheFrictionlessModelBitForBit) {
@@ -71,8 +48,8 @@ TEST(WallFriction, ZeroMuIsTheFrictionlessModelBitForBit) {
   ClearanceSettings smooth;
   smooth.restitution = 0.5;
   smooth.tolerance = 1e-9;
-  const Turns a = run_turns(smooth, 3, 360);
-  const Turns b = run_turns(wall_friction(0.5, 0.0, true, IntegratorKind::odeint, 1e-9), 3, 360);
+  const auto a = run_turns(smooth, 3, 360);
+  const auto b = run_turns(wall_friction(0.5, 0.0, true, IntegratorKind::odeint, 1e-9), 3, 360);
   ASSERT_EQ(a.samples.size(), b.samples.size());
   ASSERT_GT(a.impacts.size(), 30u);
   ASSERT_EQ(a.impacts.size(), b.impacts.size());
@@ -88,7 +65,7 @@ TEST(WallFriction, ZeroMuIsTheFrictionlessModelBitForBit) {
 TEST(WallFriction, EnergyBooksCloseOverTenTurns) {
   for (double e : {0.5, 1.0}) {
     for (IntegratorKind k : {IntegratorKind::odeint, IntegratorKind::cvode}) {
-      const Turns r = run_turns(wall_friction(e, 0.2, true, k), 10);
+      const auto r = run_turns(wall_friction(e, 0.2, true, k), 10);
       const ClearanceDiagnostics& d = r.d;
       SCOPED_TRACE("e=" + std::to_string(e) + " " + to_string(k));
       EXPECT_GT(d.friction_loss_J, 1e4 * std::abs(d.energy_residual_J));  // friction really dissipates ...
@@ -104,7 +81,7 @@ TEST(WallFriction, EnergyBooksCloseOverTenTurns) {
 
 TEST(WallFriction, BearingForceStaysInsideTheFrictionCone) {
   // Sampled bearing force: tangential part ≤ μ × normal part (to round-off).
-  const Turns r = run_turns(wall_friction(0.5, 0.2, true), 4, 720);
+  const auto r = run_turns(wall_friction(0.5, 0.2, true), 4, 720);
   int following = 0;
   for (const auto& s : r.samples) {
     if (s.mode != ContactMode::following) continue;
