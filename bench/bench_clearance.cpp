@@ -11,11 +11,13 @@
 // 360°–390° that holds the first impact burst.
 //
 //   bench_clearance [--quick] [--csv FILE]
+//   bench_clearance --profile E INTEGRATOR TOL N   (N untimed runs of one case, for a profiler)
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -91,6 +93,25 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv_path = argv[++i];
+    else if (!std::strcmp(argv[i], "--profile") && i + 4 < argc) {
+      const double e = std::atof(argv[i + 1]);
+      const IntegratorKind kind = std::strcmp(argv[i + 2], "cvode") ? IntegratorKind::odeint : IntegratorKind::cvode;
+      const double tol = std::atof(argv[i + 3]);
+      const int n = std::atoi(argv[i + 4]);
+      const Rig rig = thesis_rig();
+      std::size_t steps = 0;
+      double best = 1e300;
+      for (int r = 0; r < n; ++r) {
+        const auto t0 = std::chrono::steady_clock::now();
+        steps = simulate(rig, e, kind, tol, false).steps;
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      }
+      const Trial ref = simulate(rig, e, IntegratorKind::cvode, 1e-13, true);
+      const double err = rel_rms(simulate(rig, e, kind, tol, true).alpha3, ref.alpha3, kSamplesPerTurn);
+      std::printf("%d runs, %zu steps each, fastest %.3f ms/turn, alpha3 rel. RMS error over turn 1 %.2e\n", n, steps,
+                  1e3 * best / 2, err);
+      return 0;
+    }
   }
   const Rig rig = thesis_rig();
   const std::vector<double> tols = quick ? std::vector<double>{1e-6, 1e-9}

@@ -35,13 +35,19 @@ std::string outputs_help() {
   s += help_line("restitution", "Newton coefficient of restitution e in [0, 1] (required)");
   s += help_line("contact", "\"smooth\" (default), \"rough\" (no slip) or \"stick-slip\" (Coulomb)");
   s += help_line("friction_coefficient", "Coulomb μ >= 0, required with and only with stick-slip");
+  s += help_line("following_friction",
+                 "true: μ also acts while the pin follows the wall (slide/stick; default false = thesis)");
   s += help_line("tolerance", "relative integration tolerance (default 1e-10)");
   s += help_line("integrator", "\"odeint\" (Dormand-Prince 5, default) or \"cvode\" (SUNDIALS Adams)");
   s += help_line("settle_speed_mm_s", "normal speed below which contact is resting (default 0.001)");
-  s += help_line("steady_state", "true: run turns until the state repeats, then output (default false)");
+  s += help_line("steady_state", "true: run turns until the motion is steady, then output (default false)");
+  s += help_line("steady_criterion",
+                 "\"periodic\" (state repeats), \"statistical\" (window means agree) or \"either\" (default)");
   s += help_line("max_revolutions", "bound on the turns run to reach steady state (default 200)");
   s += help_line("steady_tolerance", "repeat tolerance of the scaled turn-start state (default 1e-6)");
   s += help_line("max_period", "longest period in turns looked for (default 8)");
+  s += help_line("statistical_window", "W: turns per window of the statistical criterion (default 20)");
+  s += help_line("statistical_tolerance", "relative agreement of the two windows' means (default 0.05)");
   s += help_line("tables", "extra CSV files: [\"impacts\", \"revolutions\"] (default none)");
   return s;
 }
@@ -93,13 +99,13 @@ PendingFile write_revolutions(const std::filesystem::path& path, const Provenanc
                               double start_angle_rad, double direction) {
   auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
                 {"crank_deg", "revolution", "impacts", "sum_normal_impulse_Ns", "impact_index_Ns", "contact_losses",
-                 "following_share", "free_flight_share"});
+                 "following_share", "free_flight_share", "alpha3_deviation_rms_rad_s2"});
   for (const RevolutionRecord& r : run.revolutions) {
     const double span = r.end_time_s - r.start_time_s;
     const double row[] = {units::rad_to_deg(start_angle_rad + direction * units::kTwoPi * r.index),
                           static_cast<double>(r.index), static_cast<double>(r.impacts), r.sum_normal_impulse_Ns,
                           r.impacts ? r.sum_normal_impulse_Ns / r.impacts : 0.0, static_cast<double>(r.contact_losses),
-                          r.following_time_s / span, r.free_time_s / span};
+                          r.following_time_s / span, r.free_time_s / span, r.alpha3_deviation_rms_rad_s2};
     csv->row(row);
   }
   return csv;
@@ -113,13 +119,40 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
                    {"restitution", c.restitution},
                    {"contact", to_string(c.contact)},
                    {"friction_coefficient", c.friction_coefficient},
+                   {"following_friction", c.following_friction},
                    {"tolerance", c.tolerance},
                    {"integrator", to_string(c.integrator)},
                    {"settle_speed_mm_s", c.settle_speed_m_s * 1e3},
                    {"steady_state", c.steady_state},
+                   {"steady_criterion", to_string(c.steady_criterion)},
+                   {"statistical_window", c.statistical_window},
+                   {"statistical_tolerance", c.statistical_tolerance},
                    {"max_revolutions", c.max_revolutions}};
+  // Which criterion fired: "periodic with period k", "statistically steady
+  // after N turns", or none within max_revolutions.
+  const StationarityResult& st = run.statistics;
+  const bool compared = st.worst_relative_difference < 1e300;
+  nlohmann::json windows = nlohmann::json::object();
+  if (compared)
+    for (std::size_t q = 0; q < TurnQuantities::kCount; ++q)
+      windows[TurnQuantities::kNames[q]] = {{"earlier_mean", st.earlier_mean[q]}, {"later_mean", st.later_mean[q]}};
+  std::string verdict = "none within max_revolutions";
+  if (run.steady_found == SteadyFound::periodic)
+    verdict = "periodic with period " + std::to_string(run.steady_period) + " after " +
+              std::to_string(run.first_output_revolution) + " turns";
+  if (run.steady_found == SteadyFound::statistical)
+    verdict = "statistically steady after " + std::to_string(run.first_output_revolution) + " turns";
   j["steady_state"] = {{"requested", c.steady_state},
                        {"reached", run.steady_state_reached},
+                       {"criterion_fired", to_string(run.steady_found)},
+                       {"verdict", c.steady_state ? verdict : "not requested"},
+                       {"statistical",
+                        {{"window_revolutions", c.statistical_window},
+                         {"worst_relative_difference", compared ? nlohmann::json(st.worst_relative_difference)
+                                                                : nlohmann::json(nullptr)},
+                         {"worst_relative_standard_error", compared ? nlohmann::json(st.worst_relative_standard_error)
+                                                                    : nlohmann::json(nullptr)},
+                         {"window_means", windows}}},
                        {"period_revolutions", run.steady_period},
                        {"last_difference", c.steady_state ? run.steady_difference : 0.0},
                        {"first_output_revolution", run.first_output_revolution},
@@ -130,8 +163,11 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
                  {"settles_into_following", d.settles},
                  {"impacts_without_solution_of_law", d.degenerate_impacts},
                  {"impacts_gaining_energy", d.energy_gaining_impacts},
+                 {"wall_sticks", d.sticks},
+                 {"wall_slip_stops", d.slip_stops},
                  {"integrator_steps", d.steps}};
   j["time_share"] = {{"following", d.time_following_s / (d.time_following_s + d.time_free_s)},
+                     {"stuck_on_wall", d.time_stuck_s / (d.time_following_s + d.time_free_s)},
                      {"free_flight", d.time_free_s / (d.time_following_s + d.time_free_s)}};
   j["drift"] = {{"max_contact_circle_error_rel", d.max_contact_circle_error},
                 {"max_contact_normal_speed_m_s", d.max_contact_normal_speed_m_s},
@@ -141,6 +177,7 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
                  {"crank_work_J", d.crank_work_J},
                  {"motor_impulse_work_J", d.motor_impulse_work_J},
                  {"impact_loss_J", d.impact_loss_J},
+                 {"friction_loss_J", d.friction_loss_J},
                  {"residual_J", d.energy_residual_J},
                  {"max_residual_J", d.max_energy_residual_J},
                  {"scale_J", d.energy_scale_J},

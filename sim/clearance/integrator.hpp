@@ -57,6 +57,10 @@ class DenseIntegrator {
   }
   std::size_t steps() const { return steps_; }
   virtual const char* name() const = 0;
+  /// True when every right-hand-side call during step() lies inside the
+  /// interval of the step taken or of a longer rejected trial of it (one-step
+  /// Runge–Kutta methods), so those calls sample the step for events.
+  virtual bool stages_inside_step() const { return false; }
 
  protected:
   virtual void do_reset(double t0, const OdeState& y0) = 0;

@@ -4,9 +4,20 @@
 #include <cassert>
 #include <cmath>
 
+#include <string>
+
+#include "common/error.hpp"
 #include "sim/nominal/kinetostatics.hpp"
 
 namespace fourbar {
+
+namespace {
+
+/// |v| without std::hypot's overflow care (mechanism lengths are far from
+/// overflow; hypot cost 12 % of a run, bench_clearance --profile).
+double length(Vec2 v) { return std::sqrt(dot(v, v)); }
+
+}  // namespace
 
 ClearanceModel::ClearanceModel(const Rig& rig, double clearance_m)
     : rig_(rig),
@@ -26,12 +37,15 @@ ClearanceModel::ClearanceModel(const Rig& rig, double clearance_m)
       branch_(rig.assembly_sign()) {}
 
 BearingState ClearanceModel::bearing(const CrankState& crank, const LinkMotion& m) const {
-  const Vec2 u2 = unit(crank.angle_rad);
+  return bearing(crank, unit(crank.angle_rad), m);
+}
+
+BearingState ClearanceModel::bearing(const CrankState& crank, Vec2 u2, const LinkMotion& m) const {
   // e = A + l3·u3 − O4 − l4·u4, summed so that the large terms cancel first.
   const Vec2 e{(l2_ * u2.x - l1_) + (l3_ * m.u3.x - l4_ * m.u4.x), l2_ * u2.y + (l3_ * m.u3.y - l4_ * m.u4.y)};
   BearingState b;
   b.eccentricity_m = e;
-  const double r = e.norm();
+  const double r = length(e);
   b.gap_m = xi_ - r;
   b.normal = r > 0 ? e * (1.0 / r) : Vec2{1.0, 0.0};
   // Relative velocity of the pin (coupler point B) and the rocker's material
@@ -97,7 +111,7 @@ LinkMotion ClearanceModel::following_links(const CrankState& crank, Vec2 u2, Vec
   // Loop A + l3·u3 = O4' + l4·u4 with the shifted pivot O4' = O4 + ξ·n:
   // B on the circles of radius l3 about A and l4 about O4'.
   const Vec2 v{(l1_ - l2_ * u2.x) + xi_ * n.x, -l2_ * u2.y + xi_ * n.y};  // O4' − A
-  const double r = v.norm();
+  const double r = length(v);
   assert(r > 0);
   const double cos_phi = std::clamp((l3_ * l3_ + r * r - l4_ * l4_) / (2.0 * l3_ * r), -1.0, 1.0);
   const double sin_phi = branch_ * std::sqrt(std::max(0.0, 1.0 - cos_phi * cos_phi));
@@ -111,7 +125,8 @@ LinkMotion ClearanceModel::following_links(const CrankState& crank, Vec2 u2, Vec
   return m;
 }
 
-FollowingMotion ClearanceModel::following(const CrankState& crank, double eta, double eta_rate) const {
+FollowingMotion ClearanceModel::following(const CrankState& crank, double eta, double eta_rate,
+                                          const WallFriction& friction) const {
   FollowingMotion f;
   const Vec2 u2 = unit(crank.angle_rad);
   const Vec2 n = unit(eta);
@@ -133,16 +148,57 @@ FollowingMotion ClearanceModel::following(const CrankState& crank, double eta, d
   double fa3, fa4;
   free_accelerations(crank, u2, m, fa3, fa4);
   const double f3 = I3_ * fa3, f4 = I4_ * fa4;
+  // Generalised force of a unit normal force: c = (−l3·u3⊥·n, l4·u4⊥·n) (pin force −N·n).
+  const double c3 = -l3_ * dot(m.u3.perp(), n), c4 = l4_ * dot(m.u4.perp(), n);
+  f.slip_speed_m_s = xi_ * (eta_rate - w4);
+  if (friction.mu > 0) {
+    following_with_friction(friction, m, n, G3, G4, k3, k4, f3, f4, c3, c4, f);
+    f.crank_torque_Nm = crank_torque_Nm(crank, u2, m, f.alpha3_rad_s2, f.pin_force());
+    return f;
+  }
   // Lagrange on the manifold: Gᵀ·(M·(G·η̈ + k) − f) = 0 (the normal force does no virtual work).
   f.eta_accel_rad_s2 = (G3 * (f3 - I3_ * k3) + G4 * (f4 - I4_ * k4)) / (I3_ * G3 * G3 + I4_ * G4 * G4);
   f.alpha3_rad_s2 = G3 * f.eta_accel_rad_s2 + k3;
   f.alpha4_rad_s2 = G4 * f.eta_accel_rad_s2 + k4;
-  // Constraint forces Q = M·α − f = N·c with c = (−l3·u3⊥·n, l4·u4⊥·n) (pin force −N·n).
+  // Constraint forces Q = M·α − f = N·c.
   const double q3 = I3_ * f.alpha3_rad_s2 - f3, q4 = I4_ * f.alpha4_rad_s2 - f4;
-  const double c3 = -l3_ * dot(m.u3.perp(), n), c4 = l4_ * dot(m.u4.perp(), n);
   f.normal_force_N = (q3 * c3 + q4 * c4) / (c3 * c3 + c4 * c4);
   f.crank_torque_Nm = crank_torque_Nm(crank, u2, m, f.alpha3_rad_s2, -f.normal_force_N * n);
   return f;
+}
+
+void ClearanceModel::following_with_friction(const WallFriction& fr, const LinkMotion& m, Vec2 n, double G3,
+                                             double G4, double k3, double k4, double f3, double f4, double c3,
+                                             double c4, FollowingMotion& f) const {
+  // Generalised force of a unit tangential force on the pin along t (−t on
+  // the rocker at B, arm (B − O4) = l4·u4 + ξ·n): d = (l3·u3⊥·t, −(l4·u4⊥·t + ξ)).
+  const Vec2 t = n.perp();
+  const double d3 = l3_ * dot(m.u3.perp(), t), d4 = -(l4_ * dot(m.u4.perp(), t) + xi_);
+  // Link equations M·(G·η̈ + k) − f_applied = N·c + f_t·d, with r = M·k − f_applied.
+  const double r3 = I3_ * k3 - f3, r4 = I4_ * k4 - f4;
+  if (fr.slip != 0) {
+    // Sliding: f_t = −s·N with s = slip·μ; unknowns η̈ and N (Cramer).
+    const double s = fr.slip * fr.mu;
+    const double e3 = c3 - s * d3, e4 = c4 - s * d4;
+    const double det = e3 * I4_ * G4 - I3_ * G3 * e4;
+    const double det0 = c3 * I4_ * G4 - I3_ * G3 * c4;  // the frictionless one
+    if (!(det / det0 > 1e-3))
+      throw RunError("following-mode friction: mu = " + std::to_string(fr.mu) +
+                     " makes the sliding pin's equations singular (Painleve's paradox); lower "
+                     "[clearance] friction_coefficient or set following_friction = false");
+    f.eta_accel_rad_s2 = (r3 * e4 - e3 * r4) / det;
+    f.normal_force_N = (r3 * I4_ * G4 - I3_ * G3 * r4) / det;
+    f.tangential_force_N = -s * f.normal_force_N;
+  } else {
+    // Stuck: d/dt(η̇ − ω4) = 0 gives η̈ = α4 = G4·η̈ + k4; then (N, f_t) from c, d.
+    f.eta_accel_rad_s2 = k4 / (1.0 - G4);
+    const double q3 = I3_ * (G3 * f.eta_accel_rad_s2) + r3, q4 = I4_ * (G4 * f.eta_accel_rad_s2) + r4;
+    const double det = c3 * d4 - c4 * d3;
+    f.normal_force_N = (q3 * d4 - q4 * d3) / det;
+    f.tangential_force_N = (c3 * q4 - c4 * q3) / det;
+  }
+  f.alpha3_rad_s2 = G3 * f.eta_accel_rad_s2 + k3;
+  f.alpha4_rad_s2 = G4 * f.eta_accel_rad_s2 + k4;
 }
 
 double ClearanceModel::kinetic_energy_J(const CrankState& crank, const LinkMotion& m) const {

@@ -38,14 +38,29 @@ struct BearingState {
   double tangential_speed_m_s = 0;  ///< t·(v_B3 − v_B4): slip of pin over bushing
 };
 
+/// Coulomb friction of the pin sliding on the bushing wall in the following
+/// mode (an extension of the thesis, whose following mode is frictionless).
+/// The tangential force f on the pin (along t = n⊥, −f on the rocker at B)
+/// opposes the slip speed v_t = t·(v_B3 − v_B4) = ξ·(η̇ − ω4):
+///   sliding (slip = ±1 = sign of v_t): f = −slip·μ·N;
+///   stuck (slip = 0): η̇ = ω4 is held, f is whatever that needs (|f| ≤ μ·N
+///   is the simulator's business).
+struct WallFriction {
+  double mu = 0;  ///< μ; 0 = the thesis's frictionless following mode
+  int slip = 1;   ///< +1 / −1 sliding with v_t of that sign, 0 stuck
+};
+
 /// Everything of the following mode at one instant (thesis ch. 3).
 struct FollowingMotion {
   LinkMotion links;
   double alpha3_rad_s2 = 0, alpha4_rad_s2 = 0;
   double eta_accel_rad_s2 = 0;  ///< η̈ of the clearance link
   double normal_force_N = 0;    ///< N ≥ 0 compressive: force on the pin is −N·n
+  double tangential_force_N = 0;  ///< f: friction force on the pin along t = n⊥ (0 without friction)
+  double slip_speed_m_s = 0;    ///< v_t = ξ·(η̇ − ω4): pin sliding over the bushing wall
   Vec2 normal;                  ///< n
   double crank_torque_Nm = 0;
+  Vec2 pin_force() const { return -normal_force_N * normal + tangential_force_N * normal.perp(); }
 };
 
 class ClearanceModel {
@@ -59,6 +74,8 @@ class ClearanceModel {
 
   /// Bearing geometry and relative velocity of pin and bushing.
   BearingState bearing(const CrankState& crank, const LinkMotion& m) const;
+  /// The same with the crank direction u2 = (cos θ2, sin θ2) already known.
+  BearingState bearing(const CrankState& crank, Vec2 u2, const LinkMotion& m) const;
 
   /// Free-flight angular accelerations (no contact force).
   void free_accelerations(const CrankState& crank, const LinkMotion& m, double& alpha3, double& alpha4) const;
@@ -75,7 +92,12 @@ class ClearanceModel {
   /// in closed form on the rig's assembly branch; rates and accelerations
   /// from its derivatives; η̈ from Lagrange's equations projected on the
   /// constraint manifold; N from the remaining (normal) component.
-  FollowingMotion following(const CrankState& crank, double eta_rad, double eta_rate_rad_s) const;
+  /// With `friction.mu > 0` the wall friction enters both (η̈ and N from
+  /// one 2×2 solve when sliding; η̈ = α4 and (N, f) from the link equations
+  /// when stuck); RunError when sliding friction makes that solve singular or
+  /// flips its sign (Painlevé's paradox: μ too large for this geometry).
+  FollowingMotion following(const CrankState& crank, double eta_rad, double eta_rate_rad_s,
+                            const WallFriction& friction = {}) const;
 
   /// Positions and rates only (no dynamics).
   LinkMotion following_links(const CrankState& crank, double eta_rad, double eta_rate_rad_s) const;
@@ -91,6 +113,8 @@ class ClearanceModel {
 
  private:
   LinkMotion following_links(const CrankState& crank, Vec2 u2, Vec2 n, double eta_rate) const;
+  void following_with_friction(const WallFriction& fr, const LinkMotion& m, Vec2 n, double G3, double G4, double k3,
+                               double k4, double f3, double f4, double c3, double c4, FollowingMotion& f) const;
 
   Rig rig_;
   double xi_;

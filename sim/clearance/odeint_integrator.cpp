@@ -18,6 +18,7 @@ class OdeintIntegrator final : public DenseIntegrator {
   explicit OdeintIntegrator(double tol)
       : stepper_(odeint::make_dense_output(tol, tol, odeint::runge_kutta_dopri5<OdeState>())) {}
   const char* name() const override { return "odeint"; }
+  bool stages_inside_step() const override { return true; }
 
  protected:
   void do_reset(double t0, const OdeState& y0) override {

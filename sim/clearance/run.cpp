@@ -10,6 +10,9 @@ namespace fourbar {
 
 namespace {
 
+/// α3-deviation samples per turn for the per-turn statistics (every 1°).
+constexpr int kStatisticsPerTurn = 360;
+
 double unwrap(double angle, double previous) {
   return angle - units::kTwoPi * std::round((angle - previous) / units::kTwoPi);
 }
@@ -52,43 +55,76 @@ double clearance_column_value(const ClearanceOutputSpec& spec, const ClearanceSa
   }
 }
 
+const char* to_string(SteadyFound f) {
+  switch (f) {
+    case SteadyFound::none: return "none";
+    case SteadyFound::periodic: return "periodic";
+    case SteadyFound::statistical: return "statistical";
+  }
+  return "?";
+}
+
 ClearanceRun run_clearance(const Scene& scene) {
+  return run_clearance(scene, ConstantSpeedCrank(scene.start_angle_rad, scene.crank_speed_rad_s));
+}
+
+ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank) {
+  using Criterion = ClearanceSettings::SteadyCriterion;
   const ClearanceSettings& cs = scene.clearance;
   ClearanceRun out;
   out.clearance_m = scene.clearance_m();
   const ClearanceModel model(*scene.rig, out.clearance_m);
-  const ConstantSpeedCrank crank(scene.start_angle_rad, scene.crank_speed_rad_s);
   ClearanceSimulator sim(model, crank, cs);
-  const double dir = scene.crank_speed_rad_s > 0 ? 1.0 : -1.0;
-  auto turn_time = [&](double turns) { return crank.time_at_angle(scene.start_angle_rad + dir * units::kTwoPi * turns); };
+  const CrankState c0 = crank.at(0.0);
+  const double dir = c0.speed_rad_s > 0 ? 1.0 : -1.0;
+  auto turn_time = [&](double turns) { return crank.time_at_angle(c0.angle_rad + dir * units::kTwoPi * turns); };
 
-  sim.set_revolution_origin(scene.start_angle_rad);
+  sim.set_revolution_origin(c0.angle_rad);
+  const bool statistical = cs.steady_state && cs.steady_criterion != Criterion::periodic;
+  if (statistical || cs.write_revolutions) sim.set_revolution_statistics(kStatisticsPerTurn);
   sim.start_nominal(0.0);
 
-  // Steady state: one turn at a time until the turn-start state repeats.
+  // Steady state: one turn at a time until the turn-start state repeats
+  // (periodic) or the windows' means agree (statistical).
   int first = 0;
+  out.statistics.worst_relative_difference = 1e300;
   if (cs.steady_state) {
+    std::vector<TurnQuantities> turns;
     for (int n = 1; n <= cs.max_revolutions; ++n) {
       sim.advance_to(turn_time(n));
+      first = n;
       const auto& revs = sim.revolutions();
       if (static_cast<int>(revs.size()) <= n) continue;
-      double best = 1e300;
-      for (int k = 1; k <= cs.max_period && n - 2 * k + 1 >= 0; ++k) {
-        // Converged when each of the last k turn starts repeats the one k turns earlier.
-        double worst = 0;
-        for (int j = 0; j < k; ++j) worst = std::max(worst, state_difference(revs[n - j], revs[n - j - k]));
-        best = std::min(best, worst);
-        if (worst <= cs.steady_tolerance) {
-          out.steady_state_reached = true;
-          out.steady_period = k;
+      if (cs.steady_criterion != Criterion::statistical) {
+        double best = 1e300;
+        for (int k = 1; k <= cs.max_period && n - 2 * k + 1 >= 0; ++k) {
+          // Converged when each of the last k turn starts repeats the one k turns earlier.
+          double worst = 0;
+          for (int j = 0; j < k; ++j) worst = std::max(worst, state_difference(revs[n - j], revs[n - j - k]));
+          best = std::min(best, worst);
+          if (worst <= cs.steady_tolerance) {
+            out.steady_found = SteadyFound::periodic;
+            out.steady_period = k;
+            break;
+          }
+        }
+        out.steady_difference = best;
+        if (out.steady_found != SteadyFound::none) break;
+      }
+      if (statistical) {
+        const RevolutionRecord& r = revs[n - 1];  // the turn just completed
+        const double span = r.end_time_s - r.start_time_s;
+        turns.push_back({{static_cast<double>(r.impacts), r.sum_normal_impulse_Ns, r.following_time_s / span,
+                          r.alpha3_deviation_rms_rad_s2}});
+        out.statistics = compare_windows(turns, cs.statistical_window, cs.statistical_tolerance);
+        if (out.statistics.steady) {
+          out.steady_found = SteadyFound::statistical;
           break;
         }
       }
-      out.steady_difference = best;
-      first = n;
-      if (out.steady_state_reached) break;
     }
   }
+  out.steady_state_reached = out.steady_found != SteadyFound::none;
   out.first_output_revolution = first;
 
   // Output samples: revolutions × samples_per_revolution + 1, uniform in crank angle.

@@ -3,17 +3,24 @@
 // three-mode simulator; the requested per-sample series (uniform in crank
 // angle), the impact and revolution records, and the run's diagnostics.
 // With steady_state, turns are simulated until the state at the start of a
-// turn repeats that of k turns before (k ≤ max_period), and the `revolutions`
-// requested are those that follow.
+// turn repeats that of k turns before (k ≤ max_period: periodic), or the
+// per-turn quantities' means over two consecutive windows of W turns agree
+// (statistical), as `steady_criterion` allows, at most max_revolutions turns;
+// the `revolutions` requested are those that follow.
 
 #include <vector>
 
 #include "sim/clearance/simulator.hpp"
+#include "sim/clearance/stationarity.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/outputs.hpp"
 #include "sim/scene.hpp"
 
 namespace fourbar {
+
+/// Which steady state ended the search, if any.
+enum class SteadyFound { none, periodic, statistical };
+const char* to_string(SteadyFound f);
 
 struct ClearanceRun {
   SeriesTable series;
@@ -24,11 +31,18 @@ struct ClearanceRun {
   int revolutions_simulated = 0;
   int first_output_revolution = 0;  ///< turn index of the first output sample
   bool steady_state_reached = false;
-  int steady_period = 0;            ///< k (turns), when reached
+  SteadyFound steady_found = SteadyFound::none;
+  int steady_period = 0;            ///< k (turns), when periodic
   double steady_difference = 0;     ///< the scaled state difference found at the last check
+  /// Statistical criterion at the last check: the two windows' means and
+  /// their worst relative difference (1e300 before 2W turns).
+  StationarityResult statistics;
 };
 
 ClearanceRun run_clearance(const Scene& scene);
+/// The same at a given crank motion (e.g. a MeasuredSpeedCrank) instead of
+/// the scene's constant speed; turns count from the crank angle at t = 0.
+ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank);
 
 /// Column value of one sample for a clearance output (see sim/outputs.hpp).
 double clearance_column_value(const ClearanceOutputSpec& spec, const ClearanceSample& s, double theta3_cont,

@@ -17,6 +17,15 @@ const char* to_string(ContactLaw c) {
 
 const char* to_string(IntegratorKind k) { return k == IntegratorKind::cvode ? "cvode" : "odeint"; }
 
+const char* to_string(ClearanceSettings::SteadyCriterion c) {
+  switch (c) {
+    case ClearanceSettings::SteadyCriterion::periodic: return "periodic";
+    case ClearanceSettings::SteadyCriterion::statistical: return "statistical";
+    case ClearanceSettings::SteadyCriterion::either: return "either";
+  }
+  return "?";
+}
+
 ClearanceSettings read_clearance_settings(TomlSection& s, double rig_clearance_m) {
   ClearanceSettings c;
   if (s.has("radial_mm")) {
@@ -41,6 +50,9 @@ ClearanceSettings read_clearance_settings(TomlSection& s, double rig_clearance_m
   } else if (c.contact == ContactLaw::stick_slip) {
     s.fail("friction_coefficient", "is required with contact = \"stick-slip\" (Coulomb coefficient μ >= 0)");
   }
+  c.following_friction = s.boolean("following_friction", false);
+  if (c.following_friction && c.contact != ContactLaw::stick_slip)
+    s.fail("following_friction", "needs contact = \"stick-slip\" and its friction_coefficient (the wall's Coulomb mu)");
   c.tolerance = s.in_range("tolerance", 1e-14, 1e-3, 1e-10);
   c.integrator = s.choice("integrator", {"cvode", "odeint"}, "odeint") == "cvode" ? IntegratorKind::cvode
                                                                                : IntegratorKind::odeint;
@@ -49,6 +61,12 @@ ClearanceSettings read_clearance_settings(TomlSection& s, double rig_clearance_m
   c.max_revolutions = static_cast<int>(s.integer("max_revolutions", 1, 1'000'000, 200));
   c.steady_tolerance = s.in_range("steady_tolerance", 1e-14, 1.0, 1e-6);
   c.max_period = static_cast<int>(s.integer("max_period", 1, 64, 8));
+  const std::string criterion = s.choice("steady_criterion", {"periodic", "statistical", "either"}, "either");
+  c.steady_criterion = criterion == "periodic"      ? ClearanceSettings::SteadyCriterion::periodic
+                       : criterion == "statistical" ? ClearanceSettings::SteadyCriterion::statistical
+                                                    : ClearanceSettings::SteadyCriterion::either;
+  c.statistical_window = static_cast<int>(s.integer("statistical_window", 2, 100'000, 20));
+  c.statistical_tolerance = s.in_range("statistical_tolerance", 1e-6, 1.0, 0.05);
   if (s.has("tables")) {
     for (const auto& t : s.strings("tables")) {
       if (t == "impacts") c.write_impacts = true;

@@ -73,11 +73,12 @@ struct ClearanceSimulator::Impl {
   bool armed = true;         // free flight: the pin has left the wall since the segment start
   double segment_start = 0;  // start time of the current smooth segment
   int zeno_count = 0;
+  bool stage_filter = false;  // the integrator's right-hand-side calls lie inside its steps
   double last_event = -1e300;
 
   // Witness samples carried across steps of one segment.
   struct FreeSample { double t, pen, speed; };
-  struct FollowSample { double t, w; };
+  struct FollowSample { double t, w, slip; };
   FreeSample free_prev{};
   std::vector<FollowSample> follow_hist;
 
@@ -88,10 +89,20 @@ struct ClearanceSimulator::Impl {
   std::vector<ImpactRecord> impacts;
   std::vector<RevolutionRecord> revolutions;
   bool revolutions_on = false;
+  int stats_per_turn = 0;        // α3-deviation samples per turn (0 = off)
+  long long next_stat = 0;       // index of the next one, counted from the revolution origin
   double rev_origin = 0;
   int rev_dir = 1;
   ClearanceDiagnostics diag;
   double work_impulse = 0, loss = 0;
+  // Following-mode wall friction (settings.following_friction): μ and the
+  // sliding direction (+1/−1) or 0 while stuck; the slip witness is armed
+  // once the pin slides faster than slip_arm_speed after a start from rest.
+  WallFriction wall;
+  bool slip_armed = true;
+  double slip_arm_speed = 0;    // m/s
+  double slip_force_per_speed = 0;  // N per m/s: slip speed in the witness's force units
+  double friction_loss = 0;     // dissipated by wall friction in closed following segments
 
   // ---- state conversion -------------------------------------------------
 
@@ -122,10 +133,29 @@ struct ClearanceSimulator::Impl {
     return y;
   }
 
-  // Following: y = (η, η̇/|ω2|, W/E, 0, 0).
+  // Following: y = (η, η̇/|ω2|, W/E, D/E, 0) with D the wall-friction loss of the segment.
   double eta_of(const OdeState& y) const { return y[0]; }
   double eta_rate_of(const OdeState& y) const { return y[1] * speed_scale; }
   double work_of(const OdeState& y) const { return (mode == ContactMode::following ? y[2] : y[4]) * energy_scale; }
+  /// Friction loss up to now: closed segments plus the open following one.
+  double friction_of(const OdeState& y) const {
+    return friction_loss + (mode == ContactMode::following ? y[3] * energy_scale : 0.0);
+  }
+
+  /// The following mode's event witness (N): N + N_guard, and with wall
+  /// friction also the slip speed times its sliding direction (sliding) or
+  /// μ·N − |f| (stuck), whichever is smaller.
+  double follow_value(const FollowingMotion& f) const {
+    double w = f.normal_force_N + force_guard;
+    if (wall.mu > 0) {
+      if (wall.slip != 0) {
+        if (slip_armed) w = std::min(w, wall.slip * f.slip_speed_m_s * slip_force_per_speed);
+      } else {
+        w = std::min(w, wall.mu * (f.normal_force_N + force_guard) - std::abs(f.tangential_force_N));
+      }
+    }
+    return w;
+  }
 
   LinkMotion links_at(double time, const OdeState& y) const {
     if (mode == ContactMode::following) return model.following_links(crank.at(time), eta_of(y), eta_rate_of(y));
@@ -136,22 +166,38 @@ struct ClearanceSimulator::Impl {
 
   struct FollowingOde final : OdeSystem {
     Impl* s;
+    /// Range of N + N_guard over the right-hand-side calls since the last
+    /// clear(): with a Runge–Kutta integrator these are its stage values
+    /// inside the step (and inside rejected, longer trial steps).
+    double w_min = 0, w_max = 0;
+    void clear() { w_min = 1e300, w_max = -1e300; }
     void rhs(double time, const OdeState& y, OdeState& dy) override {
       const CrankState c = s->crank.at(time);
-      const FollowingMotion f = s->model.following(c, s->eta_of(y), s->eta_rate_of(y));
+      const FollowingMotion f = s->model.following(c, s->eta_of(y), s->eta_rate_of(y), s->wall);
+      const double w = s->follow_value(f);
+      w_min = std::min(w_min, w);
+      w_max = std::max(w_max, w);
       dy[0] = s->eta_rate_of(y);
       dy[1] = f.eta_accel_rad_s2 / s->speed_scale;
       dy[2] = f.crank_torque_Nm * c.speed_rad_s / s->energy_scale;
-      dy[3] = dy[4] = 0;
+      dy[3] = s->wall.mu > 0 ? -f.tangential_force_N * f.slip_speed_m_s / s->energy_scale : 0.0;
+      dy[4] = 0;
     }
   } following_ode;
 
   struct FreeOde final : OdeSystem {
     Impl* s;
+    /// Largest and smallest penetration |e| − ξ over the right-hand-side
+    /// calls since the last clear() (see FollowingOde::w_min).
+    double pen_min = 0, pen_max = 0;
+    void clear() { pen_min = 1e300, pen_max = -1e300; }
     void rhs(double time, const OdeState& y, OdeState& dy) override {
       const CrankState c = s->crank.at(time);
       NominalMotion nm;
       const LinkMotion m = s->free_links(time, y, &nm);
+      const double pen = -s->model.bearing(c, nm.pose.u2, m).gap_m;
+      pen_min = std::min(pen_min, pen);
+      pen_max = std::max(pen_max, pen);
       double a3, a4;
       s->model.free_accelerations(c, nm.pose.u2, m, a3, a4);
       const double rate_scale = s->delta_scale * s->speed_scale;
@@ -172,13 +218,16 @@ struct ClearanceSimulator::Impl {
     return {time, -b.gap_m, b.normal_speed_m_s};
   }
 
-  FollowSample follow_witness(double time) {
+  /// N + N_guard at `time`; with `check_drift` also the contact-circle
+  /// error (done once per step: it is round-off by construction).
+  FollowSample follow_witness(double time, bool check_drift = false) {
     OdeState y;
     integ->interpolate(time, y);
     const CrankState c = crank.at(time);
-    const FollowingMotion f = model.following(c, eta_of(y), eta_rate_of(y));
-    monitor(model.bearing(c, f.links));
-    return {time, f.normal_force_N + force_guard};
+    const FollowingMotion f = model.following(c, eta_of(y), eta_rate_of(y), wall);
+    if (check_drift) monitor(model.bearing(c, f.links));
+    if (!slip_armed && wall.slip * f.slip_speed_m_s > slip_arm_speed) slip_armed = true;
+    return {time, follow_value(f), f.slip_speed_m_s};
   }
 
   /// Scans the free-flight step [ta, tb] for the first impact; returns its time.
@@ -187,6 +236,18 @@ struct ClearanceSimulator::Impl {
     auto spd = [this](double x) { return free_witness(x).speed; };
     FreeSample prev = free_prev;
     if (prev.t != ta) prev = free_witness(ta);
+    if (armed && stage_filter && !settings.full_event_scan) {
+      // As in scan_following: the pin stays inside by more than the spread
+      // of the step's stage and end penetrations.
+      const FreeSample end = free_witness(tb);
+      const double lo = std::min({free_ode.pen_min, prev.pen, end.pen});
+      const double hi = std::max({free_ode.pen_max, prev.pen, end.pen});
+      if (-hi > hi - lo) {
+        ++diag.filtered_steps;
+        free_prev = end;
+        return std::nullopt;
+      }
+    }
     for (int i = 1; i <= kScanPoints; ++i) {
       const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
       const FreeSample cur = free_witness(ti);
@@ -200,11 +261,18 @@ struct ClearanceSimulator::Impl {
             tmin = locate_root(spd, prev.t, cur.t, prev.speed, cur.speed);
             pmin = pen(tmin);
           }
-          armed = true;
-          if (cur.pen >= 0) {
-            if (pmin < 0) return locate_root(pen, tmin, cur.t, pmin, cur.pen);
+          if (cur.pen < 0) {
+            armed = true;  // coming back from inside: the crossing ahead is an impact
+          } else if (pmin < -arm_depth) {
+            armed = true;
+            return locate_root(pen, tmin, cur.t, pmin, cur.pen);
+          } else if (cur.pen > arm_depth) {
+            armed = true;
             return tmin;  // the pin never left the wall beyond round-off: a touch
           }
+          // Else still on the wall within round-off (|pen| ≤ arm depth), e.g.
+          // just after a contact loss at N = −N_guard: a touch here would
+          // restart the same state at the same time, so wait.
         }
         prev = cur;
         continue;
@@ -229,9 +297,24 @@ struct ClearanceSimulator::Impl {
       follow_hist.clear();
       follow_hist.push_back(follow_witness(ta));
     }
+    if (stage_filter && !settings.full_event_scan) {
+      // The step's stage values and both ends stay positive by more than
+      // their spread: w cannot reach zero inside (a parabola through them
+      // dips at most 0.26 of the spread below the lowest), so the step end
+      // is the only sample needed.
+      const FollowSample end = follow_witness(tb, true);
+      const double lo = std::min({following_ode.w_min, follow_hist.back().w, end.w});
+      const double hi = std::max({following_ode.w_max, follow_hist.back().w, end.w});
+      if (lo > hi - lo) {
+        ++diag.filtered_steps;
+        follow_hist.push_back(end);
+        if (follow_hist.size() > 2) follow_hist.erase(follow_hist.begin());
+        return std::nullopt;
+      }
+    }
     for (int i = 1; i <= kScanPoints; ++i) {
       const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
-      const FollowSample cur = follow_witness(ti);
+      const FollowSample cur = follow_witness(ti, i == kScanPoints);
       const FollowSample prev = follow_hist.back();
       if (cur.w <= 0) return locate_root(w, prev.t, cur.t, prev.w, cur.w);
       if (follow_hist.size() >= 2) {
@@ -244,8 +327,11 @@ struct ClearanceSimulator::Impl {
           const double slope_mid = d1 + 0.5 * curv * h1;  // slope at prev
           const double dip = prev.w - slope_mid * slope_mid / (2 * curv);
           if (dip <= 0.5 * prev.w) {
-            const auto [tmin, wmin] = boost::math::tools::brent_find_minima(w, a.t, cur.t, 40);
-            if (wmin <= 0) return locate_root(w, a.t, tmin, a.w, wmin);
+            // Search only where the dense output is valid: the current step.
+            const double lo = std::max(a.t, integ->previous_time());
+            const double wlo = lo == a.t ? a.w : w(lo);
+            const auto [tmin, wmin] = boost::math::tools::brent_find_minima(w, lo, cur.t, 40);
+            if (wmin <= 0) return locate_root(w, lo, tmin, wlo, wmin);
           }
         }
       }
@@ -263,8 +349,8 @@ struct ClearanceSimulator::Impl {
     integ->reset(following_ode, time, y);
     t = segment_start = time;
     follow_hist.clear();
-    FollowingMotion f = model.following(crank.at(time), eta, eta_rate);
-    follow_hist.push_back({time, f.normal_force_N + force_guard});
+    FollowingMotion f = model.following(crank.at(time), eta, eta_rate, wall);
+    follow_hist.push_back({time, follow_value(f), f.slip_speed_m_s});
   }
 
   void begin_free(double time, const LinkMotion& links, double work) {
@@ -305,7 +391,8 @@ struct ClearanceSimulator::Impl {
     loss += settle.energy_loss_J;
     double eta, eta_rate;
     to_following(time, settle.after, eta, eta_rate);
-    const FollowingMotion f = model.following(c, eta, eta_rate);
+    choose_slip(c, eta, eta_rate);
+    const FollowingMotion f = model.following(c, eta, eta_rate, wall);
     if (f.normal_force_N > -force_guard) {
       begin_following(time, eta, eta_rate, work);
     } else {
@@ -313,6 +400,36 @@ struct ClearanceSimulator::Impl {
       armed = false;
     }
     return mode;
+  }
+
+  /// With wall friction, entering the following mode at (η, η̇): slide in the
+  /// direction of the slip speed; at (nearly) zero slip stick if μ·N can
+  /// hold the pin (η̇ is then set to ω4 exactly, the tiny kinetic energy
+  /// change booked as friction loss), else slide the way the needed friction
+  /// force cannot hold.
+  void choose_slip(const CrankState& c, double eta, double& eta_rate) {
+    if (wall.mu == 0) return;
+    const LinkMotion m = model.following_links(c, eta, eta_rate);
+    const double v_t = model.clearance_m() * (eta_rate - m.omega4_rad_s);
+    if (std::abs(v_t) > slip_arm_speed) {
+      wall.slip = v_t > 0 ? 1 : -1;
+      slip_armed = true;
+      return;
+    }
+    // ω4 is affine in η̇: the rate with zero slip solves η̇ = ω4(η̇).
+    const double h4 = model.following_links(c, eta, 0.0).omega4_rad_s;
+    const double g4 = model.following_links(c, eta, 1.0).omega4_rad_s - h4;
+    const double stuck_rate = h4 / (1.0 - g4);
+    const FollowingMotion f = model.following(c, eta, stuck_rate, {wall.mu, 0});
+    if (std::abs(f.tangential_force_N) <= wall.mu * f.normal_force_N) {
+      friction_loss += energy_of_links(c, m) - energy_of_links(c, f.links);
+      eta_rate = stuck_rate;
+      wall.slip = 0;
+      ++diag.sticks;
+    } else {
+      wall.slip = f.tangential_force_N > 0 ? -1 : 1;
+      slip_armed = false;
+    }
   }
 
   ImpactResult resolve_settle(const CrankState& c, const LinkMotion& links) const {
@@ -325,8 +442,8 @@ struct ClearanceSimulator::Impl {
 
   // ---- books -------------------------------------------------------------------
 
-  double energy(double time, const LinkMotion& m) const {
-    const CrankState c = crank.at(time);
+  double energy(double time, const LinkMotion& m) const { return energy_of_links(crank.at(time), m); }
+  double energy_of_links(const CrankState& c, const LinkMotion& m) const {
     return model.kinetic_energy_J(c, m) + model.potential_energy_J(c, m);
   }
 
@@ -351,6 +468,7 @@ struct ClearanceSimulator::Impl {
   /// Mode time and revolution boundaries over [ta, tb] of the current segment.
   void book_interval(double ta, double tb) {
     (mode == ContactMode::following ? diag.time_following_s : diag.time_free_s) += tb - ta;
+    if (mode == ContactMode::following && wall.mu > 0 && wall.slip == 0) diag.time_stuck_s += tb - ta;
     if (!revolutions_on) return;
     int k = std::max(0, revolution_of(ta));
     double a = ta;
@@ -379,6 +497,32 @@ struct ClearanceSimulator::Impl {
     r.has_start_state = true;
   }
 
+  double stat_time(long long i) const {
+    return crank.time_at_angle(rev_origin + rev_dir * units::kTwoPi * static_cast<double>(i) / stats_per_turn);
+  }
+
+  /// α3 − α3,nominal at the statistics grid points up to `up_to`, booked per turn.
+  void emit_statistics(double up_to) {
+    if (stats_per_turn <= 0) return;
+    for (double ts = stat_time(next_stat); ts <= up_to; ts = stat_time(++next_stat)) {
+      if (ts < segment_start) continue;  // before the start
+      OdeState y;
+      integ->interpolate(ts, y);
+      const CrankState c = crank.at(ts);
+      double a3, a4;
+      if (mode == ContactMode::following) {
+        a3 = model.following(c, eta_of(y), eta_rate_of(y), wall).alpha3_rad_s2;
+      } else {
+        model.free_accelerations(c, free_links(ts, y), a3, a4);
+      }
+      const double d = a3 - solve_motion(model.rig(), c).alpha3_rad_s2;
+      RevolutionRecord& r = revolution(static_cast<int>(next_stat / stats_per_turn));
+      r.alpha3_deviation_sum_sq += d * d;
+      ++r.alpha3_deviation_samples;
+      r.alpha3_deviation_rms_rad_s2 = std::sqrt(r.alpha3_deviation_sum_sq / r.alpha3_deviation_samples);
+    }
+  }
+
   void emit_samples(double up_to) {
     while (next_sample < sample_times.size() && sample_times[next_sample] <= up_to) {
       samples.push_back(sample(sample_times[next_sample]));
@@ -394,11 +538,11 @@ struct ClearanceSimulator::Impl {
     s.crank = crank.at(time);
     s.mode = mode;
     if (mode == ContactMode::following) {
-      const FollowingMotion f = model.following(s.crank, eta_of(y), eta_rate_of(y));
+      const FollowingMotion f = model.following(s.crank, eta_of(y), eta_rate_of(y), wall);
       s.links = f.links;
       s.alpha3_rad_s2 = f.alpha3_rad_s2;
       s.alpha4_rad_s2 = f.alpha4_rad_s2;
-      s.bearing_force_N = -f.normal_force_N * f.normal;
+      s.bearing_force_N = f.pin_force();
       s.crank_torque_Nm = f.crank_torque_Nm;
     } else {
       s.links = free_links(time, y);
@@ -424,8 +568,8 @@ struct ClearanceSimulator::Impl {
     }
   }
 
-  void check_energy(double time, const LinkMotion& m, double work) {
-    const double r = energy(time, m) - diag.energy_start_J - work - work_impulse + loss;
+  void check_energy(double time, const LinkMotion& m, double work, double friction) {
+    const double r = energy(time, m) - diag.energy_start_J - work - work_impulse + loss + friction;
     diag.max_energy_residual_J = std::max(diag.max_energy_residual_J, std::abs(r));
   }
 
@@ -447,7 +591,7 @@ struct ClearanceSimulator::Impl {
     const CrankState c = crank.at(time);
     const BearingState b = model.bearing(c, before);
     monitor(b);
-    check_energy(time, before, work);
+    check_energy(time, before, work, friction_loss);
     ImpactRecord rec;
     rec.time_s = time;
     rec.crank_angle_rad = c.angle_rad;
@@ -474,7 +618,8 @@ struct ClearanceSimulator::Impl {
     integ->interpolate(time, y);
     const double work = work_of(y);
     const LinkMotion m = model.following_links(crank.at(time), eta_of(y), eta_rate_of(y));
-    check_energy(time, m, work);
+    check_energy(time, m, work, friction_of(y));
+    friction_loss = friction_of(y);
     ++diag.contact_losses;
     if (revolutions_on) {
       const int k = revolution_of(time);
@@ -484,23 +629,51 @@ struct ClearanceSimulator::Impl {
     armed = false;
   }
 
+  /// A following-mode event: contact loss, or with wall friction the slip
+  /// speed reaching zero (stick or reverse) or the stuck pin's friction
+  /// reaching μ·N (slide).
+  void handle_following_event(double time) {
+    OdeState y;
+    integ->interpolate(time, y);
+    const CrankState c = crank.at(time);
+    double eta = eta_of(y), eta_rate = eta_rate_of(y);
+    const FollowingMotion f = model.following(c, eta, eta_rate, wall);
+    if (wall.mu == 0 || f.normal_force_N + force_guard <= follow_value(f)) return handle_loss(time);
+    const double work = work_of(y);
+    check_energy(time, f.links, work, friction_of(y));
+    friction_loss = friction_of(y);
+    if (wall.slip != 0) {
+      ++diag.slip_stops;
+      choose_slip(c, eta, eta_rate);
+    } else {
+      wall.slip = f.tangential_force_N > 0 ? -1 : 1;  // friction at μ·N cannot hold: slide
+      slip_armed = false;
+    }
+    begin_following(time, eta, eta_rate, work);
+  }
+
   // ---- the main loop -----------------------------------------------------------------
 
   void advance_to(double t_end) {
     while (t < t_end) {
       double tb = integ->current_time();
-      if (tb <= t) tb = integ->step(t_end);  // else: the rest of an earlier step is still unused
+      if (tb <= t) {
+        following_ode.clear();
+        free_ode.clear();
+        tb = integ->step(t_end);
+      }  // else: the rest of an earlier step is still unused
       const double ta = t;
       tb = std::min(tb, t_end);
       ++diag.steps;
       const std::optional<double> ev = mode == ContactMode::following ? scan_following(ta, tb) : scan_free(ta, tb);
       const double t_stop = ev ? *ev : tb;
       emit_samples(t_stop);
+      emit_statistics(t_stop);
       book_interval(ta, t_stop);
       t = t_stop;
       if (!ev) continue;
       zeno_guard(t_stop);
-      if (mode == ContactMode::following) handle_loss(t_stop);
+      if (mode == ContactMode::following) handle_following_event(t_stop);
       else handle_impact(t_stop);
     }
   }
@@ -513,9 +686,13 @@ struct ClearanceSimulator::Impl {
     if (!(energy_scale > 0)) energy_scale = 1.0;  // a rig at rest without gravity
     force_guard = 1e-9 * model.force_scale_N(c.speed_rad_s);
     arm_depth = 1e-11 * model.clearance_m();
+    wall = {settings.following_friction ? settings.friction_coefficient : 0.0, 1};
+    slip_arm_speed = 1e-9 * model.clearance_m() * speed_scale;
+    slip_force_per_speed = model.force_scale_N(c.speed_rad_s) / (model.clearance_m() * speed_scale);
     rev_dir = c.speed_rad_s < 0 ? -1 : 1;
     following_ode.s = this;
     free_ode.s = this;
+    stage_filter = integ->stages_inside_step();
     diag.energy_scale_J = energy_scale;
   }
 
@@ -536,6 +713,11 @@ ClearanceSimulator::~ClearanceSimulator() = default;
 void ClearanceSimulator::set_sample_times(std::vector<double> times) {
   impl_->sample_times = std::move(times);
   impl_->next_sample = 0;
+}
+
+void ClearanceSimulator::set_revolution_statistics(int samples_per_turn) {
+  impl_->stats_per_turn = samples_per_turn;
+  impl_->next_stat = 0;
 }
 
 void ClearanceSimulator::set_revolution_origin(double crank_angle_rad) {
@@ -560,9 +742,11 @@ void ClearanceSimulator::start_nominal(double t0) {
   auto rel = [&](double time) { return eta0 + std::remainder(direction(time) - eta0, units::kTwoPi); };
   const double rate = (rel(t0 - 2 * h) - 8 * rel(t0 - h) + 8 * rel(t0 + h) - rel(t0 + 2 * h)) / (12 * h);
   const CrankState c = s.crank.at(t0);
-  const FollowingMotion f = s.model.following(c, eta0, rate);
+  double eta_rate = rate;
+  s.choose_slip(c, eta0, eta_rate);
+  const FollowingMotion f = s.model.following(c, eta0, eta_rate, s.wall);
   if (f.normal_force_N > -s.force_guard) {
-    s.begin_following(t0, eta0, rate, 0.0);
+    s.begin_following(t0, eta0, eta_rate, 0.0);
   } else {
     s.begin_free(t0, f.links, 0.0);
     s.armed = false;
@@ -572,7 +756,9 @@ void ClearanceSimulator::start_nominal(double t0) {
 
 void ClearanceSimulator::start_following(double t0, double eta_rad, double eta_rate_rad_s) {
   impl_->prepare(t0);
-  impl_->begin_following(t0, eta_rad, eta_rate_rad_s, 0.0);
+  double eta_rate = eta_rate_rad_s;
+  impl_->choose_slip(impl_->crank.at(t0), eta_rad, eta_rate);
+  impl_->begin_following(t0, eta_rad, eta_rate, 0.0);
   impl_->after_start(t0);
 }
 
@@ -603,13 +789,15 @@ ClearanceDiagnostics ClearanceSimulator::diagnostics() {
   s.integ->interpolate(s.t, y);
   const LinkMotion m = s.links_at(s.t, y);
   const double work = s.work_of(y);
-  s.check_energy(s.t, m, work);
+  const double friction = s.friction_of(y);
+  s.check_energy(s.t, m, work, friction);
   ClearanceDiagnostics d = s.diag;
   d.crank_work_J = work;
   d.motor_impulse_work_J = s.work_impulse;
   d.impact_loss_J = s.loss;
   d.energy_end_J = s.energy(s.t, m);
-  d.energy_residual_J = d.energy_end_J - d.energy_start_J - work - s.work_impulse + s.loss;
+  d.friction_loss_J = friction;
+  d.energy_residual_J = d.energy_end_J - d.energy_start_J - work - s.work_impulse + s.loss + friction;
   d.steps = s.integ->steps();
   return d;
 }

@@ -69,6 +69,11 @@ struct RevolutionRecord {
   double sum_normal_impulse_Ns = 0;  ///< ΣF over those impacts
   int contact_losses = 0;
   double following_time_s = 0, free_time_s = 0;
+  /// RMS of α3 − α3,nominal over the turn (uniform in crank angle), when
+  /// set_revolution_statistics() asked for it; 0 otherwise.
+  double alpha3_deviation_rms_rad_s2 = 0;
+  double alpha3_deviation_sum_sq = 0;  ///< running Σ(α3 − α3,nom)² of those samples
+  int alpha3_deviation_samples = 0;
   /// State at the start of the turn, scaled (δ3, δ4 by ξ/l3; rates by |ω2|·ξ/l3) + mode.
   std::array<double, 4> start_state{};
   ContactMode start_mode = ContactMode::following;
@@ -78,17 +83,22 @@ struct RevolutionRecord {
 struct ClearanceDiagnostics {
   std::size_t steps = 0, impacts = 0, touches = 0, contact_losses = 0, settles = 0;
   std::size_t degenerate_impacts = 0, energy_gaining_impacts = 0;
+  std::size_t filtered_steps = 0;       ///< steps cleared of events by their Runge–Kutta stage values alone
   double max_contact_circle_error = 0;  ///< max ||e| − ξ|/ξ in following mode
   double max_contact_normal_speed_m_s = 0;  ///< max |n·ė| in following mode
   double max_penetration = 0;           ///< max (|e| − ξ)/ξ in free flight (0 if never out)
   double crank_work_J = 0;              ///< ∫τ·ω2 dt in the smooth phases
   double motor_impulse_work_J = 0;      ///< Σ ω2·τ̂ at impacts
   double impact_loss_J = 0;             ///< Σ energy dissipated at impacts and settles
+  double friction_loss_J = 0;           ///< dissipated by wall friction in the following mode
   double energy_start_J = 0, energy_end_J = 0;
-  double energy_residual_J = 0;         ///< ΔE − work + losses at the end
+  double energy_residual_J = 0;         ///< ΔE − work + losses (impact and friction) at the end
   double max_energy_residual_J = 0;     ///< largest |residual| seen at any event or the end
   double energy_scale_J = 0;
   double time_following_s = 0, time_free_s = 0;
+  std::size_t sticks = 0;               ///< wall friction: times the pin stuck to the bushing
+  std::size_t slip_stops = 0;           ///< wall friction: slip speed reached zero while sliding
+  double time_stuck_s = 0;              ///< wall friction: time stuck (part of time_following_s)
 };
 
 class ClearanceSimulator {
@@ -110,6 +120,10 @@ class ClearanceSimulator {
   void set_sample_times(std::vector<double> times);
   /// Revolution boundaries: crank angle where turn 0 starts (turns follow every 2π).
   void set_revolution_origin(double crank_angle_rad);
+
+  /// Per-turn RMS of α3 − α3,nominal from `samples_per_turn` samples per
+  /// turn, uniform in crank angle (needs set_revolution_origin; 0 = off).
+  void set_revolution_statistics(int samples_per_turn);
 
   /// Runs until t_end (may be called again with a later time).
   void advance_to(double t_end);

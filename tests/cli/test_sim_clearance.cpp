@@ -35,6 +35,28 @@ TEST(SimClearanceCommand, ThesisSceneWritesAllTables) {
   EXPECT_LT(c.at("drift").at("max_penetration_rel").get<double>(), 1e-9);
 }
 
+TEST(SimClearanceCommand, WallFrictionSceneStopsAtItsPeriodicState) {
+  TempDir dir;
+  const auto r = run_fourbar("sim " FOURBAR_SOURCE_DIR "/data/scenes/wall_friction_steady_350rpm.toml --out " +
+                             dir.path().string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(dir.path() / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const auto& st = j.at("clearance").at("steady_state");
+  EXPECT_EQ(st.at("criterion_fired"), "periodic");
+  EXPECT_EQ(st.at("period_revolutions"), 1);
+  const int first = st.at("first_output_revolution");
+  EXPECT_LE(first, 8);
+  EXPECT_EQ(st.at("verdict"), "periodic with period 1 after " + std::to_string(first) + " turns");
+  EXPECT_EQ(st.at("revolutions_simulated"), first + 1);  // no more turns than needed
+  const auto& e = j.at("clearance").at("energy");
+  EXPECT_GT(e.at("friction_loss_J").get<double>(), 1e-3);
+  EXPECT_LT(e.at("residual_rel").get<double>(), 1e-8);
+  const std::string revs = testing::read_file(dir.path() / "revolutions.csv");
+  EXPECT_NE(revs.find(",alpha3_deviation_rms_rad_s2\n"), std::string::npos);
+  EXPECT_EQ(testing::count_lines(revs), 3 + 1 + first + 1);
+}
+
 TEST(SimClearanceCommand, BadValuesExitTwoAndWriteNothing) {
   const std::string base = testing::read_file(FOURBAR_SOURCE_DIR "/data/scenes/thesis_clearance_350rpm_e05.toml");
   for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{

@@ -73,6 +73,29 @@ TEST(ClearanceScene, RejectsBadValues) {
   has(error_of(kScene + "steady_state = true\nmax_revolutions = 0\n"), "max_revolutions");
   has(error_of(replaced(kScene, "model = \"clearance\"", "model = \"nominal\"")), "only model = \"clearance\"");
   has(error_of(replaced(kScene, "= 350", "= 0")), "crank_speed_rpm");
+  has(error_of(replaced(replaced(kScene, "contact = \"stick-slip\"", "contact = \"rough\""),
+                        "friction_coefficient = 0.2\n", "following_friction = true\n")),
+      "following_friction");
+  has(error_of(kScene + "steady_criterion = \"periodical\"\n"), "did you mean 'periodic'");
+  has(error_of(kScene + "statistical_window = 1\n"), "statistical_window");
+  has(error_of(kScene + "statistical_tolerance = 0\n"), "statistical_tolerance");
+}
+
+TEST(ClearanceScene, SteadyStateAndWallFrictionKeys) {
+  TempDir dir;
+  dir.write("r.toml", testing::thesis_rig_toml());
+  const Scene d = load_scene(dir.write("d.toml", kScene));
+  EXPECT_FALSE(d.clearance.following_friction);
+  EXPECT_EQ(d.clearance.steady_criterion, ClearanceSettings::SteadyCriterion::either);
+  EXPECT_EQ(d.clearance.statistical_window, 20);
+  EXPECT_EQ(d.clearance.statistical_tolerance, 0.05);
+  const Scene s = load_scene(dir.write("s.toml", kScene + "following_friction = true\nsteady_state = true\n"
+                                                          "steady_criterion = \"statistical\"\n"
+                                                          "statistical_window = 12\nstatistical_tolerance = 0.1\n"));
+  EXPECT_TRUE(s.clearance.following_friction);
+  EXPECT_EQ(s.clearance.steady_criterion, ClearanceSettings::SteadyCriterion::statistical);
+  EXPECT_EQ(s.clearance.statistical_window, 12);
+  EXPECT_EQ(s.clearance.statistical_tolerance, 0.1);
 }
 
 TEST(ClearanceScene, RejectsClearanceBeyondTheToggleMargin) {
