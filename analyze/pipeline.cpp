@@ -82,10 +82,12 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   // The channels, checked against the rig before the long passes.
   const AnalysisChannels channels = analysis_channels(manifest);
   if (options.conversion == ConversionMethod::full)
-    for (const auto& link : channels.links) {
-      if (link.tangential) resolve_mount(*manifest.rig, link.tangential->mount);
-      if (link.normal) resolve_mount(*manifest.rig, link.normal->mount);
-    }
+    for (const auto& link : channels.links)
+      for (const auto* ch : {&link.tangential, &link.normal}) try {
+          if (*ch) resolve_mount(*manifest.rig, (*ch)->mount);
+        } catch (const InputError& e) {
+          throw InputError(manifest.file.string() + ": " + e.what() + " (keys position_mm, offset_mm)");
+        }
   result.warnings = channels.warnings;
   // The filter corners against the sample rate, as far as they are given.
   {

@@ -40,5 +40,6 @@ int run_rig(const Invocation& inv);
 int run_sweep(const Invocation& inv);
 int run_acquire(const Invocation& inv);
 int run_virtual_rig(const Invocation& inv);
+int run_analyze(const Invocation& inv);
 
 }  // namespace fourbar::cli
