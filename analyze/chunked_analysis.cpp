@@ -97,6 +97,7 @@ ChunkedAnalysis::ChunkedAnalysis(RecordingAnalysis& result, const Manifest& mani
 ChunkedAnalysis::~ChunkedAnalysis() = default;
 
 void ChunkedAnalysis::on_plan(const AcquisitionReport& report) {
+  result_.acquisition = report;  // so far: pulses, speed statistics (complete after acquire)
   resolve_settings(report);
   planned_ = true;
   if (observer_) observer_->on_start(result_);
@@ -322,8 +323,9 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
       grids[j].omega_grid = grid.resample(omega);
     } else {
       grids[j] = analyzer.on_grid(lc.link, alpha,
-                                  o.integration == IntegrationMethod::spectral ? PeriodicMethod::spectral
-                                                                               : PeriodicMethod::closed_trapezoid);
+                                  o.integration == IntegrationMethod::closed_trapezoid ? PeriodicMethod::closed_trapezoid
+                                                                                       : PeriodicMethod::spectral,
+                                  o.integration == IntegrationMethod::spectral);
     }
     // The normal channel's ω².
     if (lc.normal) {

@@ -71,7 +71,8 @@ std::vector<double> RecordAnalyzer::converted(const AccelerometerMount& mount, s
   return x;
 }
 
-LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method) {
+LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method,
+                                  bool keep_slope) {
   LinkGrids out;
   const std::size_t N = grid_.points_per_rev();
   out.points_per_rev = N;
@@ -88,7 +89,7 @@ LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha
     const std::size_t at = r * N;
     for (std::size_t k = 0; k < N; ++k) psi_speed[k] = direction_ * speed_grid_[at + k];
     integrator.integrate(method, std::span(out.alpha_grid).subspan(at, N), psi_speed, turns,
-                         std::span(out.omega_grid).subspan(at, N));
+                         std::span(out.omega_grid).subspan(at, N), keep_slope);
   }
   return out;
 }
@@ -100,7 +101,7 @@ LinkAnalysis RecordAnalyzer::tangential(const AccelerometerMount& mount, std::sp
   out.link = mount.link;
   out.alpha_rad_s2 = converted(mount, reading);
   filter(opt.filter, opt.boundary, out.alpha_rad_s2);
-  static_cast<LinkGrids&>(out) = on_grid(mount.link, out.alpha_rad_s2, opt.integration);
+  static_cast<LinkGrids&>(out) = on_grid(mount.link, out.alpha_rad_s2, opt.integration, opt.keep_slope);
   out.alpha = guarded_average(out.alpha_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
   out.omega = guarded_average(out.omega_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
   return out;

@@ -17,6 +17,7 @@ const char* to_string(ConversionMethod m) { return m == ConversionMethod::full ?
 const char* to_string(IntegrationMethod m) {
   switch (m) {
     case IntegrationMethod::spectral: return "spectral";
+    case IntegrationMethod::periodic: return "periodic";
     case IntegrationMethod::closed_trapezoid: return "closed-trapezoid";
     case IntegrationMethod::trapezoid: return "trapezoid";
   }

@@ -74,9 +74,10 @@ BandType parse_band(const std::string& s) {
 
 IntegrationMethod parse_integration(const std::string& s) {
   if (s == "spectral") return IntegrationMethod::spectral;
+  if (s == "periodic") return IntegrationMethod::periodic;
   if (s == "closed-trapezoid") return IntegrationMethod::closed_trapezoid;
   if (s == "trapezoid") return IntegrationMethod::trapezoid;
-  throw InputError("analyze: --integration '" + s + "' is not one of spectral, closed-trapezoid, trapezoid");
+  throw InputError("analyze: --integration '" + s + "' is not one of spectral, periodic, closed-trapezoid, trapezoid");
 }
 
 const char* link_index(SensedLink l) { return l == SensedLink::coupler ? "3" : "4"; }
@@ -172,8 +173,9 @@ int run_analyze(const Invocation& inv) {
       "transition-hz", po::value(&transition),
       "transition width in Hz (default 0.15 x the crank frequency); 0: ideal bin-wise filter (rectangular)")(
       "integration", po::value(&integration),
-      "alpha to omega: spectral (default), closed-trapezoid (both per revolution, periodic), trapezoid (thesis: "
-      "running in time, drifts)")("points,n", po::value(&points),
+      "alpha to omega, each revolution on its own: spectral (default; keeps the revolution's mean slope, follows "
+      "crank-speed changes), periodic (strictly periodic, rejects a constant alpha offset), closed-trapezoid; or "
+      "trapezoid (thesis: running in time, drifts)")("points,n", po::value(&points),
                                   "crank angles per revolution N (default 720, more when the band needs it)")(
       "guard-revolutions", po::value(&guard), "revolutions left out of the averages at each end of a pulse-train "
                                               "segment (default 0)")(
