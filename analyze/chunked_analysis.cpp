@@ -182,7 +182,8 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
         static_cast<std::size_t>(std::ceil(std::min(double(chunk_revs_) * slowest, longest + 2.0) + 2.0 * double(overlap_ + half_kernel_))) + 16;
     alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, capacity, Boundary::zero);
     if (channels_.links.front().normal || channels_.links.back().normal)
-      normal_filter_block_ = std::make_unique<FftFilter>(normal_filter_, fs_, capacity, Boundary::zero);
+      normal_filter_block_ =
+          std::make_unique<FftFilter>(normal_filter_, fs_, capacity, Boundary::zero, alpha_filter_->transform());
   }
 
   // Spectrum segments: a power of two ≥ 8 revolutions, within the longest segment.

@@ -60,28 +60,30 @@ std::vector<double> zero_phase_response(const FilterSpec& spec, double fs, std::
   return h;
 }
 
-FftFilter::FftFilter(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary)
-    : length_(length), reflect_(boundary == Boundary::reflect), zero_(boundary == Boundary::zero), fft_(transform_size(spec, fs, length, boundary)) {
-  const std::size_t n = fft_.size();
+FftFilter::FftFilter(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary,
+                     std::shared_ptr<RealFft> shared)
+    : length_(length), reflect_(boundary == Boundary::reflect), zero_(boundary == Boundary::zero) {
+  const std::size_t n = transform_size(spec, fs, length, boundary);
+  fft_ = shared && shared->size() == n ? std::move(shared) : std::make_shared<RealFft>(n);
   if (spec.transition_hz == 0) {
     response_ = zero_phase_response(spec, fs, n);
   } else {
-    response_ = kernel_response(design_kernel(spec, fs), fft_);
+    response_ = kernel_response(design_kernel(spec, fs), *fft_);
   }
 }
 
 void FftFilter::apply(std::span<const double> in, std::span<double> out) {
   assert(out.size() == in.size() && (in.size() == length_ || (zero_ && in.size() <= length_)));
-  const std::size_t n = fft_.size(), len = in.size();
-  auto t = fft_.time();
+  const std::size_t n = fft_->size(), len = in.size();
+  auto t = fft_->time();
   std::copy(in.begin(), in.end(), t.begin());
   if (reflect_) std::reverse_copy(in.begin(), in.end(), t.begin() + len);
   else std::fill(t.begin() + len, t.end(), 0.0);
-  fft_.forward();
-  auto s = fft_.spectrum();
+  fft_->forward();
+  auto s = fft_->spectrum();
   const double scale = 1.0 / n;
   for (std::size_t k = 0; k < s.size(); ++k) s[k] *= response_[k] * scale;
-  fft_.inverse();
+  fft_->inverse();
   std::copy(t.begin(), t.begin() + len, out.begin());
 }
 

@@ -55,7 +55,10 @@ void RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary, std::span
   auto cached = std::find_if(filters_.begin(), filters_.end(),
                              [&](const CachedFilter& c) { return c.boundary == boundary && same(c.spec, spec); });
   if (cached == filters_.end()) {
-    filters_.push_back({spec, boundary, std::make_unique<FftFilter>(spec, fs_, crank_.size(), boundary)});
+    std::shared_ptr<RealFft> shared;  // another filter's transform, if of the same length
+    for (const CachedFilter& c : filters_)
+      if (c.boundary == boundary) shared = c.filter->transform();
+    filters_.push_back({spec, boundary, std::make_unique<FftFilter>(spec, fs_, crank_.size(), boundary, shared)});
     cached = filters_.end() - 1;
   }
   cached->filter->apply(x, x);
@@ -63,11 +66,8 @@ void RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary, std::span
 
 std::vector<double> RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const double> reading,
                                               std::span<const double> link_alpha) {
-  const LinkTable& table = (*tables_)[mount.link];
   std::vector<double> x(reading.size());
-  restore_dc_coupled_reading(rig_, mount, table, crank_, fs_, reading, x);
-  if (mount.axis == SensorAxis::tangential) angular_acceleration_from_tangential(rig_, mount, table, crank_, x, x);
-  else angular_speed_squared_from_normal(rig_, mount, table, crank_, x, link_alpha, x);
+  convert_reading(rig_, mount, (*tables_)[mount.link], crank_, fs_, reading, link_alpha, x);
   return x;
 }
 
