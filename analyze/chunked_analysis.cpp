@@ -168,18 +168,27 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   }
   grid_ = {N, offset_rad_, direction_};
 
-  // Chunks of about 2^19 samples, at least twice the overlap.
+  // Chunks of K revolutions. A chunk with its overlaps, or the periodic
+  // continuation at a segment end, is at most K revolutions + 2·overlap +
+  // half a kernel long (a segment's tail chunk takes what is left: less than
+  // K revolutions + overlap); its linear convolution needs half a kernel of
+  // zeros more. K is chosen so that this fits an FFT of 2^20 samples (more
+  // for very long kernels): the transforms then cost about 1.5× the chunk's
+  // own samples. The ideal filter (thesis) takes the chunk as one period.
+  const double slowest = fs_ * 60.0 / std::max(report.speed.min_rpm, 1e-9);  // samples in the slowest revolution
   chunk_revs_ = o.chunk_revolutions;
-  if (chunk_revs_ == 0)
-    chunk_revs_ = static_cast<std::size_t>(
-        std::max(1.0, std::ceil(std::max(double(std::size_t{1} << 19), 2.0 * double(overlap_)) / per_rev)));
-
-  // The windowed filters, planned once for the longest chunk (K revolutions
-  // at the slowest speed, the overlaps and the periodic continuations).
+  if (chunk_revs_ == 0) {
+    if (taps > 0) {
+      double fft = double(std::size_t{1} << 20);
+      while (fft < 8.0 * double(overlap_)) fft *= 2;
+      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::floor((fft - 4.0 * double(overlap_) - 64) / slowest)));
+    } else {
+      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::ceil(double(std::size_t{1} << 19) / per_rev)));
+    }
+  }
   if (taps > 0) {
-    const double slowest = fs_ * 60.0 / std::max(report.speed.min_rpm, 1e-9);
-    const auto capacity =
-        static_cast<std::size_t>(std::ceil(std::min(double(chunk_revs_) * slowest, longest + 2.0) + 2.0 * double(overlap_ + half_kernel_))) + 16;
+    const double longest_chunk = std::min(double(chunk_revs_) * slowest + 2.0 * double(overlap_), longest + 2.0);
+    const auto capacity = static_cast<std::size_t>(std::ceil(longest_chunk + double(half_kernel_))) + 16;
     alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, capacity, Boundary::zero);
     if (channels_.links.front().normal || channels_.links.back().normal)
       normal_filter_block_ =
@@ -377,19 +386,15 @@ void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::ve
     return;
   }
   const std::size_t pre = at_start ? half_kernel_ : 0, post = at_end ? half_kernel_ : 0;
-  std::vector<double> ext;
-  ext.reserve(pre + x.size() + post);
-  if (pre) ext = crank_periodic_extension(angle, x, pre, direction_, true);
-  ext.insert(ext.end(), x.begin(), x.end());
-  if (post) {
-    const std::vector<double> tail = crank_periodic_extension(angle, x, post, direction_, false);
-    ext.insert(ext.end(), tail.begin(), tail.end());
-  }
+  const std::vector<double> before = pre ? crank_periodic_extension(angle, x, pre, direction_, true) : std::vector<double>{};
+  const std::vector<double> after = post ? crank_periodic_extension(angle, x, post, direction_, false) : std::vector<double>{};
   FftFilter& block = normal ? *normal_filter_block_ : *alpha_filter_;
-  if (ext.size() <= block.length()) block.apply(ext, ext);
-  else FftFilter(spec, fs_, ext.size(), Boundary::zero).apply(ext, ext);  // a chunk longer than planned
-  std::copy(ext.begin() + static_cast<std::ptrdiff_t>(pre), ext.begin() + static_cast<std::ptrdiff_t>(pre + x.size()),
-            x.begin());
+  if (pre + x.size() + post <= block.length()) {
+    block.apply_between(before, x, after, x);
+    return;
+  }
+  // A chunk longer than planned (a revolution slower than acquire's slowest).
+  FftFilter(spec, fs_, pre + x.size() + post, Boundary::zero).apply_between(before, x, after, x);
 }
 
 void ChunkedAnalysis::accept(Pending&& rev) {

@@ -47,8 +47,15 @@ class FftFilter {
   /// Filters `in` (length() samples; with zero boundaries any length up to
   /// length()) into `out` of the same size (may be the same memory).
   void apply(std::span<const double> in, std::span<double> out);
+  /// Zero boundaries: filters the concatenation before + x + after (at most
+  /// length() samples) and writes the outputs at x's samples into `out`
+  /// (x.size()), without building the concatenation.
+  void apply_between(std::span<const double> before, std::span<const double> x, std::span<const double> after,
+                     std::span<double> out);
 
  private:
+  void filter_buffer();  // the transform buffer through the response
+
   std::size_t length_;
   bool reflect_, zero_;
   std::shared_ptr<RealFft> fft_;
