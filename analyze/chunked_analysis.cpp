@@ -306,19 +306,18 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
     const LinkChannels& lc = channels_.links[j];
     const auto reading = channel(*lc.tangential);
     // α per sample, its spectrum over the chunk's own samples, filtered.
-    std::vector<double> alpha;
-    if (o.conversion == ConversionMethod::full) {
-      alpha = analyzer.converted(lc.tangential->mount, reading);
-    } else {
-      alpha.resize(n);
+    // (Working arrays are members: reused, not allocated, chunk by chunk.)
+    work_alpha_.resize(n);
+    const std::span<double> alpha(work_alpha_);
+    if (o.conversion == ConversionMethod::full)
+      analyzer.converted(lc.tangential->mount, reading, {}, alpha);
+    else
       thesis_angular_acceleration(rig, lc.link, 1, mean_speed_rad_s_, crank.angle_rad, reading, alpha);
-    }
-    spectra_[j]->push(std::span<const double>(alpha).subspan(c0, c1 - c0));
+    spectra_[j]->push(alpha.subspan(c0, c1 - c0));
     // The normal channel's offset term takes α before the band-pass: its
     // low-pass then filters that term as the rest of ω², and each sample
     // needs α only there (no second overlap for the α filter).
-    std::vector<double> alpha_unfiltered;
-    if (lc.normal) alpha_unfiltered = alpha;
+    if (lc.normal) work_unfiltered_.assign(alpha.begin(), alpha.end());
     filter(false, crank.angle_rad, alpha, begin == 0, segment_end);
     // ω: per revolution on the grid, or the running trapezoid in time.
     if (o.integration == IntegrationMethod::trapezoid) {
@@ -339,9 +338,10 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
     }
     // The normal channel's ω².
     if (lc.normal) {
-      std::vector<double> w2 = analyzer.converted(lc.normal->mount, channel(*lc.normal), alpha_unfiltered);
-      filter(true, crank.angle_rad, w2, begin == 0, segment_end);
-      normal_grid[j] = grid.resample(w2);
+      work_w2_.resize(n);
+      analyzer.converted(lc.normal->mount, channel(*lc.normal), work_unfiltered_, work_w2_);
+      filter(true, crank.angle_rad, work_w2_, begin == 0, segment_end);
+      normal_grid[j] = grid.resample(work_w2_);
     }
   }
 
@@ -378,7 +378,7 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
   while (first_rev_ < rb) starts_.pop_front(), ++first_rev_;
 }
 
-void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::vector<double>& x, bool at_start,
+void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start,
                              bool at_end) {
   const FilterSpec& spec = normal ? normal_filter_ : filter_;
   if (half_kernel_ == 0) {  // ideal: the chunk as one period

@@ -67,8 +67,13 @@ void RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary, std::span
 std::vector<double> RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const double> reading,
                                               std::span<const double> link_alpha) {
   std::vector<double> x(reading.size());
-  convert_reading(rig_, mount, (*tables_)[mount.link], crank_, fs_, reading, link_alpha, x);
+  converted(mount, reading, link_alpha, x);
   return x;
+}
+
+void RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const double> reading,
+                               std::span<const double> link_alpha, std::span<double> out) {
+  convert_reading(rig_, mount, (*tables_)[mount.link], crank_, fs_, reading, link_alpha, out);
 }
 
 LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method,

@@ -104,6 +104,9 @@ class RecordAnalyzer {
   /// tangential mount, ω² for a normal one (`link_alpha_rad_s2` as in normal()).
   std::vector<double> converted(const AccelerometerMount& mount, std::span<const double> reading_m_s2,
                                 std::span<const double> link_alpha_rad_s2 = {});
+  /// The same into `out` (one value per sample; may alias the reading).
+  void converted(const AccelerometerMount& mount, std::span<const double> reading_m_s2,
+                 std::span<const double> link_alpha_rad_s2, std::span<double> out);
   /// Filters `x` (one value per sample) in place with a filter made once per
   /// spec and boundary.
   void filter(const FilterSpec& spec, Boundary boundary, std::span<double> x);
