@@ -221,3 +221,72 @@ TEST(AnalyzePipeline, NoDriftOver10000Revolutions) {
 
 }  // namespace
 }  // namespace fourbar
+
+namespace fourbar {
+namespace {
+
+// A clockwise crank (the manifest says crank_direction = "cw"): the grid runs
+// the other way, ω2 is negative, and α, ω match the truth as well.
+TEST(AnalyzePipeline, ClockwiseCrank) {
+  VirtualSetup v(-350.0);
+  testing::housing_sensors(v);
+  v.spec.noise_snr_db = 40;
+  v.spec.speed_fluctuation = 0.01;
+  v.spec.revolutions = 40;
+  const VirtualRigResult written = v.write("cw.wav", false);
+  AnalyzeOptions o;
+  o.progress = false;
+  o.keep_revolutions = true;
+  const RecordingAnalysis a = analyze_recording(written.recording, {}, o);
+  EXPECT_EQ(a.crank_direction, -1.0);
+  EXPECT_LT(a.mean_crank_speed_rad_s, 0.0);
+  EXPECT_DOUBLE_EQ(a.crank_deg[1], -0.5);
+  const GridTruth t = testing::grid_truth(v, written, a, a.revolution_numbers);
+  const Errors e = errors(a, t);
+  print("clockwise crank, 40 dB", e);
+  EXPECT_LT(e.alpha3, 0.005);
+  EXPECT_LT(e.omega3, 0.005);
+  EXPECT_LT(e.alpha4, 0.005);
+  EXPECT_LT(e.omega4, 0.005);
+}
+
+// A pulse train broken by seven missing pulses: two segments, each analysed
+// on its own (ends continued periodically), the revolutions across the gap
+// dropped by acquire.
+TEST(AnalyzePipeline, GapInThePulseTrainMakesTwoSegments) {
+  VirtualSetup v;
+  testing::housing_sensors(v);
+  v.spec.noise_snr_db = 40;
+  v.spec.revolutions = 60;
+  v.spec.pulse.missing = {28, 29, 30, 31, 32, 33, 34};
+  const VirtualRigResult written = v.write("gap.wav", false);
+  AnalyzeOptions o;
+  o.progress = false;
+  o.keep_revolutions = true;
+  const RecordingAnalysis a = analyze_recording(written.recording, {}, o);
+  ASSERT_EQ(a.acquisition.pulses.segments.size(), 2u);
+  EXPECT_EQ(a.revolutions, a.acquisition.revolutions);
+  EXPECT_GE(a.revolutions, 45u);
+  // Revolution numbers of the second segment continue after the first's.
+  for (std::size_t i = 1; i < a.revolution_numbers.size(); ++i)
+    EXPECT_EQ(a.revolution_numbers[i], a.revolution_numbers[i - 1] + 1);
+  // The truth needs the turn each revolution starts at: acquire numbers the
+  // kept revolutions only, so map them through the pulses it kept.
+  const CrankDrive drive = v.drive();
+  std::vector<std::size_t> turns;
+  for (const auto& seg : a.acquisition.pulses.segments)
+    for (std::size_t k = 0; k + 1 < seg.size(); ++k)
+      turns.push_back(static_cast<std::size_t>(
+          std::lround((drive.at(seg[k].time_s).angle_rad - drive.start_angle_rad - v.spec.pulse.angle_rad) /
+                      units::kTwoPi)) - 1);
+  std::vector<std::size_t> truth_revs;
+  for (std::size_t r : a.revolution_numbers) truth_revs.push_back(turns[r]);
+  const GridTruth t = testing::grid_truth(v, written, a, truth_revs);
+  const Errors e = errors(a, t);
+  print("two segments, 40 dB", e);
+  EXPECT_LT(e.alpha3, 0.005);
+  EXPECT_LT(e.omega3, 0.005);
+}
+
+}  // namespace
+}  // namespace fourbar
