@@ -12,13 +12,6 @@ namespace fourbar {
 
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(4);
-  os << v;
-  return os.str();
-}
-
 bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
 bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
 
@@ -50,6 +43,13 @@ AccelerometerMount mount_of(const ChannelSpec& c) {
 }
 
 }  // namespace
+
+std::string format_value(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
 
 AnalysisChannels analysis_channels(const Manifest& manifest) {
   AnalysisChannels out;
@@ -131,20 +131,20 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   try {
     validate_filter(f, fs_);
   } catch (const InputError& e) {
-    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + fmt(fs_) + " Hz)");
+    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + format_value(fs_) + " Hz)");
   }
   if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(shortest)) {
     // The kernel must not be longer than twice the shortest segment.
-    const std::string where = "the shortest pulse-train segment (" + fmt(shortest / fs_) + " s)";
+    const std::string where = "the shortest pulse-train segment (" + format_value(shortest / fs_) + " s)";
     if (s.transition_hz)
-      throw InputError("analyze: a " + fmt(f.transition_hz) + " Hz transition needs a kernel of " +
+      throw InputError("analyze: a " + format_value(f.transition_hz) + " Hz transition needs a kernel of " +
                        std::to_string(kernel_taps(f, fs_)) + " taps, longer than twice " + where +
                        "; give a wider --transition-hz, or --window rectangular --transition-hz 0 (ideal filter)");
     const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (shortest - 2.0) * 1.01;
     if (!(wider <= 0.8 * f_crank) || shortest < 4)
       throw InputError("analyze: " + where + " is too short for a windowed filter that keeps the crank frequency (" +
-                       fmt(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
-    result_.warnings.push_back("filter transition widened from " + fmt(f.transition_hz) + " Hz to " + fmt(wider) +
+                       format_value(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
+    result_.warnings.push_back("filter transition widened from " + format_value(f.transition_hz) + " Hz to " + format_value(wider) +
                                " Hz so that its kernel fits " + where);
     f.transition_hz = wider;
   }
@@ -162,9 +162,9 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
     N = 720;
     while (N < needed) N += 360;
   } else if (N < needed) {
-    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + fmt(0.5 * N) + " orders (" +
-                               fmt(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
-                               fmt(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
+    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + format_value(0.5 * N) + " orders (" +
+                               format_value(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
+                               format_value(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
   }
   grid_ = {N, offset_rad_, direction_};
 

@@ -10,82 +10,29 @@
 // Generation and analysis each run in a child process, so the peak resident
 // memory reported (getrusage of the child) is the analysis's alone.
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <string>
+#include <vector>
 
 #include "analyze/pipeline.hpp"
-#include "common/units.hpp"
-#include "sim/virtual_rig/virtual_rig.hpp"
+#include "long_recording.hpp"
 
 namespace {
 
 using namespace fourbar;
-
-struct ChildResult {
-  int status = -1;
-  double wall_s = 0, cpu_s = 0, peak_mb = 0;
-};
-
-ChildResult in_child(const std::function<int()>& work) {
-  std::fflush(stdout);
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid == 0) std::_Exit(work());
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  ChildResult r;
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.cpu_s = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-  r.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  return r;
-}
-
-// bench_acquire's recording: keep the two in step.
-struct Setup {
-  Scene scene;
-  RecordingSpec spec;
-  Setup(const std::filesystem::path& file, double seconds) {
-    scene.rig = std::make_shared<const Rig>(load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml"));
-    scene.source = file.parent_path() / "fourbar_bench_scene.toml";
-    scene.crank_speed_rad_s = units::rpm_to_rad_s(350);
-    spec.sample_rate_hz = 25600;
-    spec.duration_s = seconds;
-    spec.sample_format = "float";
-    spec.noise_snr_db = 50;
-    spec.hum_V = 0.002;
-    spec.speed_fluctuation = 0.02;
-    spec.speed_fluctuation_period_s = 3.0;
-    spec.pulse.width_rad = units::deg_to_rad(10);
-    spec.pulse.rise_s = 150e-6;
-    spec.pulse.jitter_s = 2e-6;
-    for (auto [name, role, pos] : {std::tuple{"coupler_t", ChannelRole::coupler_tangential, 0.309},
-                                   std::tuple{"rocker_t", ChannelRole::rocker_tangential, 0.312}}) {
-      ChannelSpec c;
-      c.name = name, c.role = role, c.position_m = pos, c.volts_per_m_s2 = 0.01;
-      c.index = static_cast<int>(spec.sensors.size());
-      spec.sensors.push_back(c);
-    }
-  }
-};
+using bench::ChildResult;
+using bench::in_child;
 
 /// Per-revolution errors against the nominal truth, for the revolutions in
 /// the first and the last `window` of the record.
 class DriftCheck final : public RevolutionObserver {
  public:
-  DriftCheck(const Setup& s, std::size_t window, std::size_t total)
-      : drive_(crank_drive(s.scene, s.spec)), motion_(s.scene.rig, drive_), window_(window), total_(total) {}
+  DriftCheck(const bench::LongRecording& s, std::size_t window, std::size_t total)
+      : drive_(s.drive()), motion_(s.scene.rig, drive_), window_(window), total_(total) {}
   void on_start(const RecordingAnalysis& a) override {
     n_ = a.points_per_rev;
     // Revolution 0 starts at acquire's first pulse: how many turns after the start.
@@ -130,23 +77,9 @@ int main(int argc, char** argv) {
     else args.emplace_back(argv[i]);
   }
   const double seconds = !args.empty() ? std::atof(args[0].c_str()) : 3600.0;
-  const std::filesystem::path file =
-      args.size() > 1 ? std::filesystem::path(args[1])
-                      : std::filesystem::temp_directory_path() /
-                            ("fourbar_bench_" + std::to_string(static_cast<long>(seconds)) + "s.wav");
-  const Setup setup(file, seconds);
-  if (!std::filesystem::exists(file)) {
-    std::printf("writing %s (%.0f s, 3 channels, 25.6 kHz float) ...\n", file.c_str(), seconds);
-    const ChildResult g = in_child([&] {
-      const CrankDrive drive = crank_drive(setup.scene, setup.spec);
-      const NominalMotionSource motion(setup.scene.rig, drive);
-      make_virtual_recording(setup.scene, setup.spec, drive, motion, file, Provenance{"bench_analyze_pipeline", {}},
-                             {false, true});
-      return 0;
-    });
-    if (g.status != 0) return 1;
-    std::printf("  virtual rig: %.1f s\n", g.wall_s);
-  }
+  const std::filesystem::path file = bench::long_recording_path(seconds, args.size() > 1 ? args[1].c_str() : nullptr);
+  if (!bench::ensure_long_recording(file, seconds, "bench_analyze_pipeline")) return 1;
+  const bench::LongRecording setup(file, seconds);
   const auto frames = static_cast<double>(std::llround(seconds * 25600));
   std::printf("file: %s, %.0f MB, %.0f frames\n", file.c_str(), double(std::filesystem::file_size(file)) / 1e6, frames);
   const std::size_t total_revs = static_cast<std::size_t>(seconds * 350 / 60);
