@@ -232,7 +232,7 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
     LinkResult r;
     r.link = l.link;
     r.channel = l.tangential->mount.channel;
-    if (l.normal) r.normal = NormalCheck{l.normal->mount.channel, l.normal->mount.high_pass_corner_hz > 0, {}, {}, 0.0};
+    if (l.normal) r.normal = NormalCheck{l.normal->mount.channel, l.normal->mount.high_pass_corner_hz > 0, {}, {}, {}, 0.0};
     (l.link == SensedLink::coupler ? result_.coupler : result_.rocker) = std::move(r);
   }
 }
@@ -484,6 +484,7 @@ void ChunkedAnalysis::finish() {
     lr.alpha_amplitude = spectra_[j]->amplitude();
     if (lr.normal) {
       lr.normal->omega_sq_rad2_s2 = normal_avg_[j].result();
+      for (double w2 : lr.normal->omega_sq_rad2_s2.mean) lr.normal->omega_abs_rad_s.push_back(std::sqrt(std::max(0.0, w2)));
       lr.normal->omega_sq_integrated_rad2_s2 = omega_sq_avg_[j].result().mean;
       std::vector<double> diff(r.points_per_rev);
       for (std::size_t k = 0; k < diff.size(); ++k)

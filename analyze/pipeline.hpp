@@ -105,6 +105,7 @@ struct NormalCheck {
   /// nominal model, so only the variation of ω² is measured.
   bool ac_coupled = false;
   AngleAverage omega_sq_rad2_s2;                  ///< ω² from the normal channel, per grid angle
+  std::vector<double> omega_abs_rad_s;            ///< √(mean ω²) from the normal channel (0 where the mean is negative)
   std::vector<double> omega_sq_integrated_rad2_s2;  ///< mean over the revolutions of (integrated ω)², per angle
   double rel_rms_difference = 0;                  ///< RMS(normal − integrated) / RMS(integrated) over the grid
 };

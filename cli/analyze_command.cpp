@@ -36,8 +36,10 @@ Writes into DIR:
                      alpha3_std_rad_s2, omega3_rad_s, omega3_std_rad_s, the
                      same for alpha4/omega4 (when the manifest has a
                      rocker_tangential channel), and per normal channel
-                     omegaN_sq_normal_rad2_s2, omegaN_sq_integrated_rad2_s2
-                     (mean over the revolutions; std = spread per angle)
+                     omegaN_sq_normal_rad2_s2, omegaN_sq_integrated_rad2_s2,
+                     omegaN_abs_normal_rad_s (the check: |omega| from the
+                     centripetal term); mean over the revolutions, std =
+                     spread per angle
   per_revolution.csv (--per-revolution) crank_deg, revolution, averaged
                      (0: a guard or clipped revolution), omega2_rad_s,
                      alpha3_rad_s2, omega3_rad_s, alpha4_rad_s2, omega4_rad_s
@@ -227,8 +229,10 @@ int run_analyze(const Invocation& inv) {
   for (const auto* l : {&a.coupler, &a.rocker}) {
     if (!*l || !(*l)->normal) continue;
     const std::string i = link_index((*l)->link);
-    cols.insert(cols.end(), {"omega" + i + "_sq_normal_rad2_s2", "omega" + i + "_sq_integrated_rad2_s2"});
-    series.insert(series.end(), {&(*l)->normal->omega_sq_rad2_s2.mean, &(*l)->normal->omega_sq_integrated_rad2_s2});
+    cols.insert(cols.end(), {"omega" + i + "_sq_normal_rad2_s2", "omega" + i + "_sq_integrated_rad2_s2",
+                             "omega" + i + "_abs_normal_rad_s"});
+    series.insert(series.end(), {&(*l)->normal->omega_sq_rad2_s2.mean, &(*l)->normal->omega_sq_integrated_rad2_s2,
+                                 &(*l)->normal->omega_abs_rad_s});
   }
   CsvWriter averaged(dir / "averaged.csv", prov.comment_lines(), cols);
   std::vector<double> row(series.size());

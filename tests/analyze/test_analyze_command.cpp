@@ -85,10 +85,18 @@ TEST_F(AnalyzeCommand, ExampleSceneEndToEnd) {
   const std::vector<std::string> cols{"crank_deg", "omega2_rad_s", "alpha3_rad_s2", "alpha3_std_rad_s2",
                                       "omega3_rad_s", "omega3_std_rad_s", "alpha4_rad_s2", "alpha4_std_rad_s2",
                                       "omega4_rad_s", "omega4_std_rad_s", "omega3_sq_normal_rad2_s2",
-                                      "omega3_sq_integrated_rad2_s2"};
+                                      "omega3_sq_integrated_rad2_s2", "omega3_abs_normal_rad_s"};
   EXPECT_EQ(avg.header, cols);
   ASSERT_EQ(avg.rows.size(), 720u);
   EXPECT_DOUBLE_EQ(avg.rows[1][0], 0.5);
+  // The normal channel's ω3² against the integrated ω3 squared at every
+  // angle (2 % of the peak), and its |ω3| column is the square root.
+  double peak = 0;
+  for (const auto& row : avg.rows) peak = std::max(peak, row[11]);
+  for (const auto& row : avg.rows) {
+    EXPECT_NEAR(row[10], row[11], 0.02 * peak);
+    EXPECT_NEAR(row[12] * row[12], std::max(0.0, row[10]), 1e-12 * peak);
+  }
   // The crank speed column is the scene's 350 rpm (±1 % fluctuation averaged).
   EXPECT_NEAR(avg.rows[0][1], 350 * 2 * M_PI / 60, 0.02 * 350 * 2 * M_PI / 60);
 
