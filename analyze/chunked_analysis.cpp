@@ -111,11 +111,11 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   mean_speed_rad_s_ = direction_ * units::rpm_to_rad_s(report.speed.mean_rpm);
   const double f_crank = report.speed.mean_rpm / 60.0, f_fastest = report.speed.max_rpm / 60.0;
   const double per_rev = report.samples_per_turn;
-  double shortest = INFINITY, longest = 0;  // pulse-train segments, in samples
+  double longest = 0;  // pulse-train segments, in samples
   for (const auto& seg : report.pulses.segments) {
     if (seg.size() < 2) continue;
     const double len = (seg.back().time_s - seg.front().time_s) * fs_;
-    shortest = std::min(shortest, len), longest = std::max(longest, len);
+    longest = std::max(longest, len);
   }
 
   // The α filter, defaults following the crank speed and the sample rate.
@@ -133,19 +133,20 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   } catch (const InputError& e) {
     throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + format_value(fs_) + " Hz)");
   }
-  if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(shortest)) {
-    // The kernel must not be longer than twice the shortest segment.
-    const std::string where = "the shortest pulse-train segment (" + format_value(shortest / fs_) + " s)";
+  if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(longest)) {
+    // The kernel must not be longer than twice the longest segment (shorter
+    // segments are left out, with a warning, in end_segment).
+    const std::string where = "the longest pulse-train segment (" + format_value(longest / fs_) + " s)";
     if (s.transition_hz)
       throw InputError("analyze: a " + format_value(f.transition_hz) + " Hz transition needs a kernel of " +
                        std::to_string(kernel_taps(f, fs_)) + " taps, longer than twice " + where +
                        "; give a wider --transition-hz, or --window rectangular --transition-hz 0 (ideal filter)");
-    const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (shortest - 2.0) * 1.01;
-    if (!(wider <= 0.8 * f_crank) || shortest < 4)
+    const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (longest - 2.0) * 1.01;
+    if (!(wider <= 0.8 * f_crank) || longest < 4)
       throw InputError("analyze: " + where + " is too short for a windowed filter that keeps the crank frequency (" +
                        format_value(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
-    result_.warnings.push_back("filter transition widened from " + format_value(f.transition_hz) + " Hz to " + format_value(wider) +
-                               " Hz so that its kernel fits " + where);
+    result_.warnings.push_back("filter transition widened from " + format_value(f.transition_hz) + " Hz to " +
+                               format_value(wider) + " Hz so that its kernel fits " + where);
     f.transition_hz = wider;
   }
   filter_ = f;
@@ -441,7 +442,13 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
 
 void ChunkedAnalysis::end_segment() {
   if (!in_segment_) return;
-  if (last_rev_ && static_cast<std::int64_t>(next_rev_) <= *last_rev_)
+  const bool too_short = half_kernel_ > 0 && end_ <= half_kernel_;  // never a chunk yet: end_ is the segment's length
+  if (too_short)
+    result_.warnings.push_back("pulse-train segment of " + format_value(double(end_) / fs_) + " s (revolutions " +
+                               std::to_string(first_rev_) + " to " + std::to_string(*last_rev_) +
+                               ") is shorter than half the filter kernel (" + format_value(double(half_kernel_) / fs_) +
+                               " s): not analysed");
+  else if (last_rev_ && static_cast<std::int64_t>(next_rev_) <= *last_rev_)
     process_chunk(static_cast<std::size_t>(*last_rev_) + 1, true);
   // The segment's last revolutions were guard revolutions.
   for (auto& p : guard_queue_) commit(*p, false);

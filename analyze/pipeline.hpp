@@ -69,7 +69,8 @@ struct FilterSettings {
   WindowSpec window{WindowType::kaiser, 8.0};
   /// Transition width of the windowed-sinc kernel. Default: 0.15 × the mean
   /// crank frequency, widened (with a warning) when the kernel would be
-  /// longer than twice the shortest pulse-train segment. 0: the ideal
+  /// longer than twice the longest pulse-train segment (shorter segments are
+  /// left out with a warning). 0: the ideal
   /// bin-wise filter of each chunk (rectangular window only; the thesis's).
   std::optional<double> transition_hz;
 };

@@ -288,5 +288,24 @@ TEST(AnalyzePipeline, GapInThePulseTrainMakesTwoSegments) {
   EXPECT_LT(e.omega3, 0.005);
 }
 
+// A segment of one revolution between two gaps is shorter than half the
+// filter kernel: left out with a warning, the others analysed.
+TEST(AnalyzePipeline, SegmentTooShortForTheFilterIsLeftOut) {
+  VirtualSetup v;
+  testing::housing_sensors(v);
+  v.spec.revolutions = 60;
+  v.spec.pulse.missing = {20, 21, 22, 23, 24, 25, 26, 29, 30, 31, 32, 33, 34, 35};
+  const VirtualRigResult written = v.write("short.wav", false);
+  AnalyzeOptions o;
+  o.progress = false;
+  const RecordingAnalysis a = analyze_recording(written.recording, {}, o);
+  ASSERT_EQ(a.acquisition.pulses.segments.size(), 3u);
+  ASSERT_EQ(a.acquisition.pulses.segments[1].size(), 2u);  // one revolution
+  EXPECT_EQ(a.revolutions, a.acquisition.revolutions - 1);
+  bool warned = false;
+  for (const auto& w : a.warnings) warned |= w.find("not analysed") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 }  // namespace
 }  // namespace fourbar
