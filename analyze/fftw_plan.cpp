@@ -34,6 +34,9 @@ namespace {
 // analyses in one process reuse a handful of lengths.
 class PlanCache {
  public:
+  // The planner's mutex is made first, so that it outlives the cache (the
+  // plans lock it when the cache is destroyed at exit).
+  PlanCache() { planner_mutex(); }
   std::shared_ptr<RealFft::Plans> get(std::size_t n, unsigned flags, double* real, fftw_complex* spec) {
     std::lock_guard lock(mutex_);
     for (auto it = plans_.begin(); it != plans_.end(); ++it)

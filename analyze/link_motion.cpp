@@ -60,14 +60,14 @@ LinkTable::LinkTable(const Rig& rig, SensedLink link) : rig_(rig), link_(link) {
   tangential_.shrink_to_fit(), normal_.shrink_to_fit();
 }
 
-LinkTable::Tangential LinkTable::exact_tangential(double theta2) const {
+LinkTable::TangentialRow LinkTable::exact_tangential(double theta2) const {
   const SensedLinkMotion k = nominal_link_motion(rig_, link_, {theta2, 1.0, 0.0});
   const double l2 = link_ == SensedLink::coupler ? rig_.crank.length_m : 0.0;
   const Vec2 u2{std::cos(theta2), std::sin(theta2)};
   return {k.omega_rad_s, k.u.x, l2 * dot(u2, k.u), l2 * cross(k.u, u2)};
 }
 
-LinkTable::Normal LinkTable::exact_normal(double theta2) const {
+LinkTable::NormalRow LinkTable::exact_normal(double theta2) const {
   const SensedLinkMotion k = nominal_link_motion(rig_, link_, {theta2, 1.0, 0.0});
   const double l2 = link_ == SensedLink::coupler ? rig_.crank.length_m : 0.0;
   const Vec2 u2{std::cos(theta2), std::sin(theta2)};
@@ -79,27 +79,24 @@ namespace {
 // Fills rows[i + 1] = exact(2πi/m) with the wrap-around rows, and returns the
 // largest interpolation error half-way between the points, relative to each
 // field's largest magnitude.
-template <class Row, class Exact, class Interpolate>
-double tabulate(std::vector<Row>& rows, std::size_t m, Exact exact, Interpolate interpolate) {
-  constexpr std::size_t fields = sizeof(Row) / sizeof(double);
+template <std::size_t F, class Exact, class Interpolate>
+double tabulate(std::vector<std::array<double, F>>& rows, std::size_t m, Exact exact, Interpolate interpolate) {
   rows.resize(m + 3);
   for (std::size_t i = 0; i < m; ++i) rows[i + 1] = exact(units::kTwoPi * static_cast<double>(i) / m);
   rows[0] = rows[m];      // θ2 = −2π/m
   rows[m + 1] = rows[1];  // 2π
   rows[m + 2] = rows[2];  // 2π + 2π/m
-  std::array<double, fields> peak{}, err{};
+  std::array<double, F> peak{}, err{};
   for (std::size_t i = 0; i < m; ++i) {
     const double theta2 = units::kTwoPi * (static_cast<double>(i) + 0.5) / m;
-    const Row e = exact(theta2), g = interpolate(theta2);
-    const auto* ev = reinterpret_cast<const double*>(&e);
-    const auto* gv = reinterpret_cast<const double*>(&g);
-    for (std::size_t f = 0; f < fields; ++f) {
-      peak[f] = std::max(peak[f], std::abs(ev[f]));
-      err[f] = std::max(err[f], std::abs(gv[f] - ev[f]));
+    const std::array<double, F> e = exact(theta2), g = interpolate(theta2);
+    for (std::size_t f = 0; f < F; ++f) {
+      peak[f] = std::max(peak[f], std::abs(e[f]));
+      err[f] = std::max(err[f], std::abs(g[f] - e[f]));
     }
   }
   double worst = 0;
-  for (std::size_t f = 0; f < fields; ++f)
+  for (std::size_t f = 0; f < F; ++f)
     if (peak[f] > 0) worst = std::max(worst, err[f] / peak[f]);
   return worst;
 }

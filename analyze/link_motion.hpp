@@ -88,10 +88,12 @@ class LinkTable {
   double max_error() const { return max_error_; }
 
  private:
-  Tangential exact_tangential(double theta2) const;
-  Normal exact_normal(double theta2) const;
-  template <class Row>
-  Row interpolate(const std::vector<Row>& rows, double theta2) const;
+  using TangentialRow = std::array<double, 4>;  // k, cos θ, p_n, q_n
+  using NormalRow = std::array<double, 5>;      // k, k', sin θ, p_u, q_u
+  TangentialRow exact_tangential(double theta2) const;
+  NormalRow exact_normal(double theta2) const;
+  template <std::size_t F>
+  std::array<double, F> interpolate(const std::vector<std::array<double, F>>& rows, double theta2) const;
   bool build(std::size_t m);
 
   Rig rig_;
@@ -99,16 +101,16 @@ class LinkTable {
   std::size_t m_ = 0, mask_ = 0;
   double scale_ = 0;  // m / 2π
   // rows[i + 1] at θ2 = 2πi/m, i = −1 … m + 1
-  std::vector<Tangential> tangential_;
-  std::vector<Normal> normal_;
+  std::vector<TangentialRow> tangential_;
+  std::vector<NormalRow> normal_;
   double max_error_ = 0;
 };
 
 // Inline: read once per sample in the conversion loops. 4-point Lagrange in
 // the crank angle, over every field of the row.
-template <class Row>
-inline Row LinkTable::interpolate(const std::vector<Row>& rows, double theta2) const {
-  constexpr std::size_t fields = sizeof(Row) / sizeof(double);
+template <std::size_t F>
+inline std::array<double, F> LinkTable::interpolate(const std::vector<std::array<double, F>>& rows,
+                                                    double theta2) const {
   const double x = theta2 * scale_;
   long long q = static_cast<long long>(x);  // floor without a libm call
   if (x < static_cast<double>(q)) --q;
@@ -120,22 +122,23 @@ inline Row LinkTable::interpolate(const std::vector<Row>& rows, double theta2) c
   const double tm1 = t - 1, tm2 = t - 2, tp1 = t + 1;
   const double w0 = -sixth * t * tm1 * tm2, w1 = 0.5 * tp1 * tm1 * tm2, w2 = -0.5 * tp1 * t * tm2,
                w3 = sixth * tp1 * t * tm1;
-  const double* a = reinterpret_cast<const double*>(&rows[i]);
-  const double* b = a + fields;
-  const double* c = b + fields;
-  const double* d = c + fields;
-  Row r;
-  double* out = reinterpret_cast<double*>(&r);
-  for (std::size_t f = 0; f < fields; ++f) out[f] = w0 * a[f] + w1 * b[f] + w2 * c[f] + w3 * d[f];
+  const std::array<double, F>& a = rows[i];
+  const std::array<double, F>& b = rows[i + 1];
+  const std::array<double, F>& c = rows[i + 2];
+  const std::array<double, F>& d = rows[i + 3];
+  std::array<double, F> r;
+  for (std::size_t f = 0; f < F; ++f) r[f] = w0 * a[f] + w1 * b[f] + w2 * c[f] + w3 * d[f];
   return r;
 }
 
 inline LinkTable::Tangential LinkTable::tangential(double theta2) const {
-  return m_ == 0 ? exact_tangential(theta2) : interpolate(tangential_, theta2);
+  const TangentialRow r = m_ == 0 ? exact_tangential(theta2) : interpolate(tangential_, theta2);
+  return {r[0], r[1], r[2], r[3]};
 }
 
 inline LinkTable::Normal LinkTable::normal(double theta2) const {
-  return m_ == 0 ? exact_normal(theta2) : interpolate(normal_, theta2);
+  const NormalRow r = m_ == 0 ? exact_normal(theta2) : interpolate(normal_, theta2);
+  return {r[0], r[1], r[2], r[3], r[4]};
 }
 
 inline SensedLinkMotion LinkTable::motion(const CrankState& crank) const {
