@@ -234,15 +234,12 @@ TEST(AnalyzePipeline, ClockwiseCrank) {
   v.spec.speed_fluctuation = 0.01;
   v.spec.revolutions = 40;
   const VirtualRigResult written = v.write("cw.wav", false);
-  AnalyzeOptions o;
-  o.progress = false;
-  o.keep_revolutions = true;
-  const RecordingAnalysis a = analyze_recording(written.recording, {}, o);
+  const AnalysisRun run = analyse(v, written, AnalyzeOptions{});
+  const RecordingAnalysis& a = run.analysis;
   EXPECT_EQ(a.crank_direction, -1.0);
   EXPECT_LT(a.mean_crank_speed_rad_s, 0.0);
   EXPECT_DOUBLE_EQ(a.crank_deg[1], -0.5);
-  const GridTruth t = testing::grid_truth(v, written, a, a.revolution_numbers);
-  const Errors e = errors(a, t);
+  const Errors& e = run.errors;
   print("clockwise crank, 40 dB", e);
   EXPECT_LT(e.alpha3, 0.005);
   EXPECT_LT(e.omega3, 0.005);
