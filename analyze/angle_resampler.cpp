@@ -10,6 +10,19 @@
 
 namespace fourbar {
 
+namespace {
+
+// 4-point Lagrange weights at x for nodes p0 … p3 (one division per weight).
+void lagrange_weights(double x, double p0, double p1, double p2, double p3, double* w) {
+  const double d0 = x - p0, d1 = x - p1, d2 = x - p2, d3 = x - p3;
+  w[0] = d1 * d2 * d3 / ((p0 - p1) * (p0 - p2) * (p0 - p3));
+  w[1] = d0 * d2 * d3 / ((p1 - p0) * (p1 - p2) * (p1 - p3));
+  w[2] = d0 * d1 * d3 / ((p2 - p0) * (p2 - p1) * (p2 - p3));
+  w[3] = d0 * d1 * d2 / ((p3 - p0) * (p3 - p1) * (p3 - p2));
+}
+
+}  // namespace
+
 RevolutionResampler::RevolutionResampler(std::span<const double> angle, std::size_t n, double start,
                                          double direction)
     : n_(n), samples_(angle.size()), start_(start), direction_(direction < 0 ? -1.0 : 1.0) {
@@ -46,12 +59,7 @@ RevolutionResampler::RevolutionResampler(std::span<const double> angle, std::siz
     // Stencil j−1 … j+2, kept inside the record.
     const std::size_t b = std::min(j > 0 ? j - 1 : 0, angle.size() - 4);
     base_[g] = b;
-    for (int a = 0; a < 4; ++a) {
-      double w = 1;
-      for (int c = 0; c < 4; ++c)
-        if (c != a) w *= (psi - d * angle[b + c]) / (d * angle[b + a] - d * angle[b + c]);
-      weights_[4 * g + a] = w;
-    }
+    lagrange_weights(psi, d * angle[b], d * angle[b + 1], d * angle[b + 2], d * angle[b + 3], &weights_[4 * g]);
   }
 }
 
@@ -83,14 +91,9 @@ double lagrange_at(std::span<const double> psi, std::span<const double> v, doubl
   const auto it = std::upper_bound(psi.begin(), psi.end(), x);
   const std::size_t j = it == psi.begin() ? 0 : static_cast<std::size_t>(it - psi.begin()) - 1;
   const std::size_t b = std::min(j > 0 ? j - 1 : 0, n - 4);
-  double sum = 0;
-  for (std::size_t a = 0; a < 4; ++a) {
-    double w = 1;
-    for (std::size_t c = 0; c < 4; ++c)
-      if (c != a) w *= (x - psi[b + c]) / (psi[b + a] - psi[b + c]);
-    sum += w * v[b + a];
-  }
-  return sum;
+  double w[4];
+  lagrange_weights(x, psi[b], psi[b + 1], psi[b + 2], psi[b + 3], w);
+  return w[0] * v[b] + w[1] * v[b + 1] + w[2] * v[b + 2] + w[3] * v[b + 3];
 }
 
 }  // namespace

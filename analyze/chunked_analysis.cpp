@@ -12,13 +12,6 @@ namespace fourbar {
 
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(4);
-  os << v;
-  return os.str();
-}
-
 bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
 bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
 
@@ -50,6 +43,13 @@ AccelerometerMount mount_of(const ChannelSpec& c) {
 }
 
 }  // namespace
+
+std::string format_value(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
 
 AnalysisChannels analysis_channels(const Manifest& manifest) {
   AnalysisChannels out;
@@ -97,6 +97,7 @@ ChunkedAnalysis::ChunkedAnalysis(RecordingAnalysis& result, const Manifest& mani
 ChunkedAnalysis::~ChunkedAnalysis() = default;
 
 void ChunkedAnalysis::on_plan(const AcquisitionReport& report) {
+  result_.acquisition = report;  // so far: pulses, speed statistics (complete after acquire)
   resolve_settings(report);
   planned_ = true;
   if (observer_) observer_->on_start(result_);
@@ -110,11 +111,11 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   mean_speed_rad_s_ = direction_ * units::rpm_to_rad_s(report.speed.mean_rpm);
   const double f_crank = report.speed.mean_rpm / 60.0, f_fastest = report.speed.max_rpm / 60.0;
   const double per_rev = report.samples_per_turn;
-  double shortest = INFINITY, longest = 0;  // pulse-train segments, in samples
+  double longest = 0;  // pulse-train segments, in samples
   for (const auto& seg : report.pulses.segments) {
     if (seg.size() < 2) continue;
     const double len = (seg.back().time_s - seg.front().time_s) * fs_;
-    shortest = std::min(shortest, len), longest = std::max(longest, len);
+    longest = std::max(longest, len);
   }
 
   // The α filter, defaults following the crank speed and the sample rate.
@@ -130,21 +131,22 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   try {
     validate_filter(f, fs_);
   } catch (const InputError& e) {
-    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + fmt(fs_) + " Hz)");
+    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + format_value(fs_) + " Hz)");
   }
-  if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(shortest)) {
-    // The kernel must not be longer than twice the shortest segment.
-    const std::string where = "the shortest pulse-train segment (" + fmt(shortest / fs_) + " s)";
+  if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(longest)) {
+    // The kernel must not be longer than twice the longest segment (shorter
+    // segments are left out, with a warning, in end_segment).
+    const std::string where = "the longest pulse-train segment (" + format_value(longest / fs_) + " s)";
     if (s.transition_hz)
-      throw InputError("analyze: a " + fmt(f.transition_hz) + " Hz transition needs a kernel of " +
+      throw InputError("analyze: a " + format_value(f.transition_hz) + " Hz transition needs a kernel of " +
                        std::to_string(kernel_taps(f, fs_)) + " taps, longer than twice " + where +
                        "; give a wider --transition-hz, or --window rectangular --transition-hz 0 (ideal filter)");
-    const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (shortest - 2.0) * 1.01;
-    if (!(wider <= 0.8 * f_crank) || shortest < 4)
+    const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (longest - 2.0) * 1.01;
+    if (!(wider <= 0.8 * f_crank) || longest < 4)
       throw InputError("analyze: " + where + " is too short for a windowed filter that keeps the crank frequency (" +
-                       fmt(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
-    result_.warnings.push_back("filter transition widened from " + fmt(f.transition_hz) + " Hz to " + fmt(wider) +
-                               " Hz so that its kernel fits " + where);
+                       format_value(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
+    result_.warnings.push_back("filter transition widened from " + format_value(f.transition_hz) + " Hz to " +
+                               format_value(wider) + " Hz so that its kernel fits " + where);
     f.transition_hz = wider;
   }
   filter_ = f;
@@ -161,27 +163,37 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
     N = 720;
     while (N < needed) N += 360;
   } else if (N < needed) {
-    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + fmt(0.5 * N) + " orders (" +
-                               fmt(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
-                               fmt(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
+    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + format_value(0.5 * N) + " orders (" +
+                               format_value(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
+                               format_value(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
   }
   grid_ = {N, offset_rad_, direction_};
 
-  // Chunks of about 2^19 samples, at least twice the overlap.
+  // Chunks of K revolutions. A chunk with its overlaps, or the periodic
+  // continuation at a segment end, is at most K revolutions + 2·overlap +
+  // half a kernel long (a segment's tail chunk takes what is left: less than
+  // K revolutions + overlap); its linear convolution needs half a kernel of
+  // zeros more. K is chosen so that this fits an FFT of 2^20 samples (more
+  // for very long kernels): the transforms then cost about 1.5× the chunk's
+  // own samples. The ideal filter (thesis) takes the chunk as one period.
+  const double slowest = fs_ * 60.0 / std::max(report.speed.min_rpm, 1e-9);  // samples in the slowest revolution
   chunk_revs_ = o.chunk_revolutions;
-  if (chunk_revs_ == 0)
-    chunk_revs_ = static_cast<std::size_t>(
-        std::max(1.0, std::ceil(std::max(double(std::size_t{1} << 19), 2.0 * double(overlap_)) / per_rev)));
-
-  // The windowed filters, planned once for the longest chunk (K revolutions
-  // at the slowest speed, the overlaps and the periodic continuations).
+  if (chunk_revs_ == 0) {
+    if (taps > 0) {
+      double fft = double(std::size_t{1} << 20);
+      while (fft < 8.0 * double(overlap_)) fft *= 2;
+      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::floor((fft - 4.0 * double(overlap_) - 64) / slowest)));
+    } else {
+      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::ceil(double(std::size_t{1} << 19) / per_rev)));
+    }
+  }
   if (taps > 0) {
-    const double slowest = fs_ * 60.0 / std::max(report.speed.min_rpm, 1e-9);
-    const auto capacity =
-        static_cast<std::size_t>(std::ceil(std::min(double(chunk_revs_) * slowest, longest + 2.0) + 2.0 * double(overlap_ + half_kernel_))) + 16;
+    const double longest_chunk = std::min(double(chunk_revs_) * slowest + 2.0 * double(overlap_), longest + 2.0);
+    const auto capacity = static_cast<std::size_t>(std::ceil(longest_chunk + double(half_kernel_))) + 16;
     alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, capacity, Boundary::zero);
     if (channels_.links.front().normal || channels_.links.back().normal)
-      normal_filter_block_ = std::make_unique<FftFilter>(normal_filter_, fs_, capacity, Boundary::zero);
+      normal_filter_block_ =
+          std::make_unique<FftFilter>(normal_filter_, fs_, capacity, Boundary::zero, alpha_filter_->transform());
   }
 
   // Spectrum segments: a power of two ≥ 8 revolutions, within the longest segment.
@@ -221,7 +233,7 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
     LinkResult r;
     r.link = l.link;
     r.channel = l.tangential->mount.channel;
-    if (l.normal) r.normal = NormalCheck{l.normal->mount.channel, l.normal->mount.high_pass_corner_hz > 0, {}, {}, 0.0};
+    if (l.normal) r.normal = NormalCheck{l.normal->mount.channel, l.normal->mount.high_pass_corner_hz > 0, {}, {}, {}, 0.0};
     (l.link == SensedLink::coupler ? result_.coupler : result_.rocker) = std::move(r);
   }
 }
@@ -295,19 +307,18 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
     const LinkChannels& lc = channels_.links[j];
     const auto reading = channel(*lc.tangential);
     // α per sample, its spectrum over the chunk's own samples, filtered.
-    std::vector<double> alpha;
-    if (o.conversion == ConversionMethod::full) {
-      alpha = analyzer.converted(lc.tangential->mount, reading);
-    } else {
-      alpha.resize(n);
+    // (Working arrays are members: reused, not allocated, chunk by chunk.)
+    work_alpha_.resize(n);
+    const std::span<double> alpha(work_alpha_);
+    if (o.conversion == ConversionMethod::full)
+      analyzer.converted(lc.tangential->mount, reading, {}, alpha);
+    else
       thesis_angular_acceleration(rig, lc.link, 1, mean_speed_rad_s_, crank.angle_rad, reading, alpha);
-    }
-    spectra_[j]->push(std::span<const double>(alpha).subspan(c0, c1 - c0));
+    spectra_[j]->push(alpha.subspan(c0, c1 - c0));
     // The normal channel's offset term takes α before the band-pass: its
     // low-pass then filters that term as the rest of ω², and each sample
     // needs α only there (no second overlap for the α filter).
-    std::vector<double> alpha_unfiltered;
-    if (lc.normal) alpha_unfiltered = alpha;
+    if (lc.normal) work_unfiltered_.assign(alpha.begin(), alpha.end());
     filter(false, crank.angle_rad, alpha, begin == 0, segment_end);
     // ω: per revolution on the grid, or the running trapezoid in time.
     if (o.integration == IntegrationMethod::trapezoid) {
@@ -322,14 +333,16 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
       grids[j].omega_grid = grid.resample(omega);
     } else {
       grids[j] = analyzer.on_grid(lc.link, alpha,
-                                  o.integration == IntegrationMethod::spectral ? PeriodicMethod::spectral
-                                                                               : PeriodicMethod::closed_trapezoid);
+                                  o.integration == IntegrationMethod::closed_trapezoid ? PeriodicMethod::closed_trapezoid
+                                                                                       : PeriodicMethod::spectral,
+                                  o.integration == IntegrationMethod::spectral);
     }
     // The normal channel's ω².
     if (lc.normal) {
-      std::vector<double> w2 = analyzer.converted(lc.normal->mount, channel(*lc.normal), alpha_unfiltered);
-      filter(true, crank.angle_rad, w2, begin == 0, segment_end);
-      normal_grid[j] = grid.resample(w2);
+      work_w2_.resize(n);
+      analyzer.converted(lc.normal->mount, channel(*lc.normal), work_unfiltered_, work_w2_);
+      filter(true, crank.angle_rad, work_w2_, begin == 0, segment_end);
+      normal_grid[j] = grid.resample(work_w2_);
     }
   }
 
@@ -366,7 +379,7 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
   while (first_rev_ < rb) starts_.pop_front(), ++first_rev_;
 }
 
-void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::vector<double>& x, bool at_start,
+void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start,
                              bool at_end) {
   const FilterSpec& spec = normal ? normal_filter_ : filter_;
   if (half_kernel_ == 0) {  // ideal: the chunk as one period
@@ -374,19 +387,15 @@ void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::ve
     return;
   }
   const std::size_t pre = at_start ? half_kernel_ : 0, post = at_end ? half_kernel_ : 0;
-  std::vector<double> ext;
-  ext.reserve(pre + x.size() + post);
-  if (pre) ext = crank_periodic_extension(angle, x, pre, direction_, true);
-  ext.insert(ext.end(), x.begin(), x.end());
-  if (post) {
-    const std::vector<double> tail = crank_periodic_extension(angle, x, post, direction_, false);
-    ext.insert(ext.end(), tail.begin(), tail.end());
-  }
+  const std::vector<double> before = pre ? crank_periodic_extension(angle, x, pre, direction_, true) : std::vector<double>{};
+  const std::vector<double> after = post ? crank_periodic_extension(angle, x, post, direction_, false) : std::vector<double>{};
   FftFilter& block = normal ? *normal_filter_block_ : *alpha_filter_;
-  if (ext.size() <= block.length()) block.apply(ext, ext);
-  else FftFilter(spec, fs_, ext.size(), Boundary::zero).apply(ext, ext);  // a chunk longer than planned
-  std::copy(ext.begin() + static_cast<std::ptrdiff_t>(pre), ext.begin() + static_cast<std::ptrdiff_t>(pre + x.size()),
-            x.begin());
+  if (pre + x.size() + post <= block.length()) {
+    block.apply_between(before, x, after, x);
+    return;
+  }
+  // A chunk longer than planned (a revolution slower than acquire's slowest).
+  FftFilter(spec, fs_, pre + x.size() + post, Boundary::zero).apply_between(before, x, after, x);
 }
 
 void ChunkedAnalysis::accept(Pending&& rev) {
@@ -433,7 +442,13 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
 
 void ChunkedAnalysis::end_segment() {
   if (!in_segment_) return;
-  if (last_rev_ && static_cast<std::int64_t>(next_rev_) <= *last_rev_)
+  const bool too_short = half_kernel_ > 0 && end_ <= half_kernel_;  // never a chunk yet: end_ is the segment's length
+  if (too_short)
+    result_.warnings.push_back("pulse-train segment of " + format_value(double(end_) / fs_) + " s (revolutions " +
+                               std::to_string(first_rev_) + " to " + std::to_string(*last_rev_) +
+                               ") is shorter than half the filter kernel (" + format_value(double(half_kernel_) / fs_) +
+                               " s): not analysed");
+  else if (last_rev_ && static_cast<std::int64_t>(next_rev_) <= *last_rev_)
     process_chunk(static_cast<std::size_t>(*last_rev_) + 1, true);
   // The segment's last revolutions were guard revolutions.
   for (auto& p : guard_queue_) commit(*p, false);
@@ -476,6 +491,7 @@ void ChunkedAnalysis::finish() {
     lr.alpha_amplitude = spectra_[j]->amplitude();
     if (lr.normal) {
       lr.normal->omega_sq_rad2_s2 = normal_avg_[j].result();
+      for (double w2 : lr.normal->omega_sq_rad2_s2.mean) lr.normal->omega_abs_rad_s.push_back(std::sqrt(std::max(0.0, w2)));
       lr.normal->omega_sq_integrated_rad2_s2 = omega_sq_avg_[j].result().mean;
       std::vector<double> diff(r.points_per_rev);
       for (std::size_t k = 0; k < diff.size(); ++k)

@@ -41,6 +41,9 @@ struct AnalysisChannels {
   std::vector<std::string> warnings;
 };
 
+/// A value for a message: six significant digits.
+std::string format_value(double v);
+
 /// Picks the channels (the first of each role; InputError when the manifest
 /// has no coupler_tangential channel). Mounts in SI, axis sign +1 (acquire
 /// applies the manifest's sign).
@@ -67,7 +70,7 @@ class ChunkedAnalysis final : public AcquisitionSink {
   void end_segment();
   /// Filters one chunk's values in place; a segment end is continued
   /// periodically in the crank angle first (crank_periodic_extension).
-  void filter(bool normal, std::span<const double> angle, std::vector<double>& x, bool at_start, bool at_end);
+  void filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start, bool at_end);
   void accept(Pending&& rev);
   void commit(Pending& rev, bool averaged);
   std::size_t rev_start(std::size_t rev) const;
@@ -84,6 +87,7 @@ class ChunkedAnalysis final : public AcquisitionSink {
   FilterSpec filter_, normal_filter_;
   std::size_t half_kernel_ = 0, overlap_ = 0, chunk_revs_ = 0;
   std::unique_ptr<FftFilter> alpha_filter_, normal_filter_block_;  // windowed: linear convolution, made once
+  std::vector<double> work_alpha_, work_unfiltered_, work_w2_;      // one chunk's working arrays
   std::shared_ptr<const RigTables> tables_;
   std::vector<std::size_t> used_;  // acquire channel indices buffered, in order
 

@@ -116,11 +116,6 @@ auto from_track(std::span<const SensedLinkMotion> nominal) {
   return [nominal](std::size_t i) { return nominal[i]; };
 }
 
-auto from_table(const LinkTable& table, const CrankTrack& crank) {
-  check_crank_track(crank);
-  return [&table, crank](std::size_t i) { return table.motion(crank.at(i)); };
-}
-
 void check_table(const AccelerometerMount& mount, const LinkTable& table) {
   if (table.link() != mount.link)
     throw InputError("channel '" + mount.channel + "' is on the " + to_string(mount.link) + " but the table is the " +
@@ -147,25 +142,62 @@ void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount,
   restore(rig, mount, nominal.size(), from_track(nominal), sample_rate_hz, reading, restored);
 }
 
-void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
-                                          const CrankTrack& crank, std::span<const double> reading,
-                                          std::span<double> alpha) {
+void convert_reading(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table, const CrankTrack& crank,
+                     double fs, std::span<const double> reading, std::span<const double> link_alpha,
+                     std::span<double> out) {
   check_table(mount, table);
-  tangential(rig, mount, crank.size(), from_table(table, crank), reading, alpha);
-}
-
-void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
-                                       const CrankTrack& crank, std::span<const double> reading,
-                                       std::span<const double> link_alpha, std::span<double> omega_sq) {
-  check_table(mount, table);
-  normal(rig, mount, crank.size(), from_table(table, crank), reading, link_alpha, omega_sq);
-}
-
-void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
-                                const CrankTrack& crank, double sample_rate_hz, std::span<const double> reading,
-                                std::span<double> restored) {
-  check_table(mount, table);
-  restore(rig, mount, crank.size(), from_table(table, crank), sample_rate_hz, reading, restored);
+  check_crank_track(crank);
+  const ResolvedMount r = resolve_mount(rig, mount);
+  const std::size_t n = crank.size();
+  check_lengths(mount, n, reading.size(), out.size());
+  const bool tangential = r.axis == SensorAxis::tangential;
+  if (!tangential && r.h_m != 0 && link_alpha.size() != n) {
+    std::ostringstream os;
+    os << "channel '" << mount.channel << "': the sensor is offset " << r.h_m * 1e3
+       << " mm from the link line, so its normal reading needs the link's angular acceleration per sample";
+    throw InputError(os.str());
+  }
+  if (n == 0) return;
+  // AC-coupled: the sensor's high-pass undone with a zero mean first; the
+  // model's mean (restore_dc_coupled_reading) is summed in the same pass.
+  const bool ac = r.high_pass_corner_hz > 0;
+  if (ac) undo_sensor_high_pass(reading, fs, r.high_pass_corner_hz, 0.0, out);
+  const std::span<const double> x = ac ? std::span<const double>(out) : reading;
+  const double s = r.sign, h = r.h_m, inv_r = 1.0 / r.r_m, g = rig.gravity_m_s2;
+  // The formulas of angular_acceleration_from_tangential and
+  // angular_speed_squared_from_normal, with the reading's known part c
+  // shared by the conversion and the model of the reading.
+  double model_sum = 0;
+  if (tangential) {
+    //   α = (s·m − c)/r, c = a_J·n − h·ω² + g·cos θ;  model m = s·(c + r·ᾱ).
+    for (std::size_t i = 0; i < n; ++i) {
+      const LinkTable::Tangential t = table.tangential(crank.angle_rad[i]);
+      const double w2 = crank.speed_rad_s[i], w2sq = w2 * w2, a2 = crank.accel_rad_s2[i];
+      const double c = a2 * t.p_n - w2sq * (t.q_n + h * t.k * t.k) + g * t.cos_theta;
+      model_sum += c;
+      out[i] = (s * x[i] - c) * inv_r;
+    }
+    if (ac) {
+      const SensedLinkMotion first = table.motion(crank.at(0)), last = table.motion(crank.at(n - 1));
+      const double mean_alpha =
+          ((last.omega_rad_s - first.omega_rad_s) * fs + 0.5 * (first.alpha_rad_s2 + last.alpha_rad_s2)) / n;
+      model_sum = s * (model_sum + r.r_m * mean_alpha * n);
+    }
+  } else {
+    //   ω² = (d − h·α − s·m)/r, d = a_J·u + g·sin θ;  model m = s·(d − r·ω² − h·α) at the nominal ω, α.
+    for (std::size_t i = 0; i < n; ++i) {
+      const LinkTable::Normal t = table.normal(crank.angle_rad[i]);
+      const double w2 = crank.speed_rad_s[i], w2sq = w2 * w2, a2 = crank.accel_rad_s2[i];
+      const double d = a2 * t.p_u - w2sq * t.q_u + g * t.sin_theta;
+      if (ac) model_sum += s * (d - r.r_m * w2sq * t.k * t.k - h * (a2 * t.k + w2sq * t.k_prime));
+      out[i] = (d - h * (link_alpha.empty() ? 0.0 : link_alpha[i]) - s * x[i]) * inv_r;
+    }
+  }
+  if (!ac) return;
+  // The restored reading's constant (the model's mean), through the
+  // conversion's slope ±s/r.
+  const double shift = (tangential ? s : -s) * (model_sum / n) * inv_r;
+  for (double& v : out) v += shift;
 }
 
 void thesis_angular_acceleration(const Rig& rig, SensedLink link, int axis_sign, double crank_speed_rad_s,

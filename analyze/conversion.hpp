@@ -77,18 +77,16 @@ void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount,
                                 double sample_rate_hz, std::span<const double> reading_m_s2,
                                 std::span<double> restored_m_s2);
 
-/// The three whole-channel functions above with the nominal motion read
-/// from a table at the measured crank states (`crank`, one per sample)
-/// instead of a stored track: no per-sample memory, one table read per sample.
-void angular_acceleration_from_tangential(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
-                                          const CrankTrack& crank, std::span<const double> reading_m_s2,
-                                          std::span<double> alpha_rad_s2);
-void angular_speed_squared_from_normal(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
-                                       const CrankTrack& crank, std::span<const double> reading_m_s2,
-                                       std::span<const double> link_alpha_rad_s2, std::span<double> omega_sq_rad2_s2);
-void restore_dc_coupled_reading(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table,
-                                const CrankTrack& crank, double sample_rate_hz, std::span<const double> reading_m_s2,
-                                std::span<double> restored_m_s2);
+/// Restore (AC-coupled mount) and convert in one pass, the nominal motion
+/// read from a table at the measured crank states (`crank`, one per sample):
+/// α for a tangential mount, ω² for a normal one (`link_alpha_rad_s2` as in
+/// angular_speed_squared_from_normal). Equals restore_dc_coupled_reading
+/// followed by the conversion — the conversion is affine in the reading, so
+/// the restored constant is added to the result at the end — with one table
+/// read per sample and no per-sample memory. `out` may alias `reading_m_s2`.
+void convert_reading(const Rig& rig, const AccelerometerMount& mount, const LinkTable& table, const CrankTrack& crank,
+                     double sample_rate_hz, std::span<const double> reading_m_s2,
+                     std::span<const double> link_alpha_rad_s2, std::span<double> out);
 
 /// The thesis conversion as printed (eq. 7.2.1-6 coupler, 7.2.2-1 rocker),
 /// for comparison: sensor assumed at the far joint (r = l), constant crank

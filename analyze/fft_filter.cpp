@@ -60,29 +60,48 @@ std::vector<double> zero_phase_response(const FilterSpec& spec, double fs, std::
   return h;
 }
 
-FftFilter::FftFilter(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary)
-    : length_(length), reflect_(boundary == Boundary::reflect), zero_(boundary == Boundary::zero), fft_(transform_size(spec, fs, length, boundary)) {
-  const std::size_t n = fft_.size();
+FftFilter::FftFilter(const FilterSpec& spec, double fs, std::size_t length, Boundary boundary,
+                     std::shared_ptr<RealFft> shared)
+    : length_(length), reflect_(boundary == Boundary::reflect), zero_(boundary == Boundary::zero) {
+  const std::size_t n = transform_size(spec, fs, length, boundary);
+  fft_ = shared && shared->size() == n ? std::move(shared) : std::make_shared<RealFft>(n);
   if (spec.transition_hz == 0) {
     response_ = zero_phase_response(spec, fs, n);
   } else {
-    response_ = kernel_response(design_kernel(spec, fs), fft_);
+    response_ = kernel_response(design_kernel(spec, fs), *fft_);
   }
 }
 
 void FftFilter::apply(std::span<const double> in, std::span<double> out) {
   assert(out.size() == in.size() && (in.size() == length_ || (zero_ && in.size() <= length_)));
-  const std::size_t n = fft_.size(), len = in.size();
-  auto t = fft_.time();
+  const std::size_t len = in.size();
+  auto t = fft_->time();
   std::copy(in.begin(), in.end(), t.begin());
   if (reflect_) std::reverse_copy(in.begin(), in.end(), t.begin() + len);
   else std::fill(t.begin() + len, t.end(), 0.0);
-  fft_.forward();
-  auto s = fft_.spectrum();
-  const double scale = 1.0 / n;
-  for (std::size_t k = 0; k < s.size(); ++k) s[k] *= response_[k] * scale;
-  fft_.inverse();
+  filter_buffer();
   std::copy(t.begin(), t.begin() + len, out.begin());
+}
+
+void FftFilter::apply_between(std::span<const double> before, std::span<const double> x,
+                              std::span<const double> after, std::span<double> out) {
+  assert(zero_ && before.size() + x.size() + after.size() <= length_ && out.size() == x.size());
+  auto t = fft_->time();
+  auto at = std::copy(before.begin(), before.end(), t.begin());
+  at = std::copy(x.begin(), x.end(), at);
+  at = std::copy(after.begin(), after.end(), at);
+  std::fill(at, t.end(), 0.0);
+  filter_buffer();
+  const auto from = t.begin() + static_cast<std::ptrdiff_t>(before.size());
+  std::copy(from, from + static_cast<std::ptrdiff_t>(x.size()), out.begin());
+}
+
+void FftFilter::filter_buffer() {
+  fft_->forward();
+  auto s = fft_->spectrum();
+  const double scale = 1.0 / static_cast<double>(fft_->size());
+  for (std::size_t k = 0; k < s.size(); ++k) s[k] *= response_[k] * scale;
+  fft_->inverse();
 }
 
 namespace {

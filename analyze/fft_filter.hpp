@@ -15,6 +15,7 @@
 // OverlapSaveFilter streams a record of any length through the windowed
 // kernel in blocks, in memory bounded by the FFT block.
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -28,23 +29,36 @@ enum class Boundary { periodic, zero, reflect };
 class FftFilter {
  public:
   /// Validates the spec (InputError). `length` ≥ 1 samples; a periodic
-  /// windowed kernel must not be longer than the record.
-  FftFilter(const FilterSpec& spec, double sample_rate_hz, std::size_t length, Boundary boundary = Boundary::periodic);
+  /// windowed kernel must not be longer than the record. `shared`: another
+  /// filter's transform, used when its length fits (making an FFTW plan of
+  /// a million points costs about as much as three transforms: its twiddle
+  /// factors), so filters of one record share it.
+  FftFilter(const FilterSpec& spec, double sample_rate_hz, std::size_t length, Boundary boundary = Boundary::periodic,
+            std::shared_ptr<RealFft> shared = nullptr);
 
   std::size_t length() const { return length_; }
   /// Transform length (the record length; longer for zero, 2N for reflect).
-  std::size_t fft_size() const { return fft_.size(); }
+  std::size_t fft_size() const { return fft_->size(); }
+  /// The transform, to share with another filter of the same length.
+  const std::shared_ptr<RealFft>& transform() const { return fft_; }
   /// The real (zero-phase) response at bin k, frequency k·fs/fft_size().
   std::span<const double> response() const { return response_; }
 
   /// Filters `in` (length() samples; with zero boundaries any length up to
   /// length()) into `out` of the same size (may be the same memory).
   void apply(std::span<const double> in, std::span<double> out);
+  /// Zero boundaries: filters the concatenation before + x + after (at most
+  /// length() samples) and writes the outputs at x's samples into `out`
+  /// (x.size()), without building the concatenation.
+  void apply_between(std::span<const double> before, std::span<const double> x, std::span<const double> after,
+                     std::span<double> out);
 
  private:
+  void filter_buffer();  // the transform buffer through the response
+
   std::size_t length_;
   bool reflect_, zero_;
-  RealFft fft_;
+  std::shared_ptr<RealFft> fft_;
   std::vector<double> response_;
 };
 

@@ -1,12 +1,15 @@
 #pragma once
 // A real-to-complex / complex-to-real FFTW plan pair for one transform
 // length, with its own aligned buffers: made once, executed many times.
-// FFTW's planner is not thread-safe; construction is serialised here.
+// The plans of the last few lengths are cached and shared between
+// instances (each executes them on its own buffers). FFTW's planner is not
+// thread-safe; planning is serialised here.
 
 #include <fftw3.h>
 
 #include <complex>
 #include <cstddef>
+#include <memory>
 #include <span>
 
 namespace fourbar {
@@ -27,15 +30,17 @@ class RealFft {
   /// Frequency-domain buffer (n/2 + 1 bins, bin k at k/n cycles per sample).
   std::span<std::complex<double>> spectrum() { return {reinterpret_cast<std::complex<double>*>(spec_), bins()}; }
   /// time → spectrum (unnormalised DFT).
-  void forward() { fftw_execute(forward_); }
+  void forward();
   /// spectrum → time, times n (unnormalised); overwrites the spectrum.
-  void inverse() { fftw_execute(inverse_); }
+  void inverse();
+
+  struct Plans;  // one length's plan pair, shared (see fftw_plan.cpp)
 
  private:
   std::size_t n_;
   double* real_ = nullptr;
   fftw_complex* spec_ = nullptr;
-  fftw_plan forward_ = nullptr, inverse_ = nullptr;
+  std::shared_ptr<Plans> plans_;
 };
 
 /// Smallest n' ≥ n whose factors are only 2, 3, 5 and 7 (fast FFTW sizes).

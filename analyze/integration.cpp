@@ -37,7 +37,8 @@ int link_turns_per_crank_turn(const Rig& rig, SensedLink link) {
 PeriodicIntegrator::PeriodicIntegrator(std::size_t n) : n_(n), fft_(n), g_(n) { assert(n >= 4); }
 
 void PeriodicIntegrator::integrate(PeriodicMethod method, std::span<const double> alpha,
-                                   std::span<const double> crank_speed, double turns, std::span<double> omega) {
+                                   std::span<const double> crank_speed, double turns, std::span<double> omega,
+                                   bool keep_slope) {
   assert(alpha.size() == n_ && crank_speed.size() == n_ && omega.size() == n_);
   const double dtheta = units::kTwoPi / n_;
   for (std::size_t k = 0; k < n_; ++k) g_[k] = alpha[k] / crank_speed[k];  // dω/dθ2
@@ -48,11 +49,14 @@ void PeriodicIntegrator::integrate(PeriodicMethod method, std::span<const double
     auto s = fft_.spectrum();
     // ω_m = G_m/(j·m) in the angle variable (harmonic m per turn); the mean
     // and, for even N, the Nyquist harmonic (no defined derivative) are 0.
+    const double slope = s[0].real() / double(n_);  // mean dω/dθ2 over the revolution
     s[0] = 0;
     for (std::size_t m = 1; m < s.size(); ++m) s[m] = s[m] / std::complex<double>(0.0, double(m)) / double(n_);
     if (n_ % 2 == 0) s[n_ / 2] = 0;
     fft_.inverse();
     std::copy(t.begin(), t.end(), omega.begin());
+    if (keep_slope)
+      for (std::size_t k = 0; k < n_; ++k) omega[k] += slope * dtheta * (double(k) - 0.5 * double(n_ - 1));
   } else {
     // Trapezoid round the closed revolution; the closing error (non-zero
     // only through noise and discretisation) spread linearly.
@@ -62,7 +66,8 @@ void PeriodicIntegrator::integrate(PeriodicMethod method, std::span<const double
       acc += 0.5 * dtheta * (g_[k - 1] + g_[k % n_]);
       if (k < n_) omega[k] = acc;
     }
-    for (std::size_t k = 0; k < n_; ++k) omega[k] -= acc * double(k) / n_;
+    if (!keep_slope)
+      for (std::size_t k = 0; k < n_; ++k) omega[k] -= acc * double(k) / n_;
   }
   // Constant: mean over the turn of ω/ω2 = turns.
   double mean_ratio = 0, mean_inv = 0;

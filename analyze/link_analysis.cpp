@@ -55,7 +55,10 @@ void RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary, std::span
   auto cached = std::find_if(filters_.begin(), filters_.end(),
                              [&](const CachedFilter& c) { return c.boundary == boundary && same(c.spec, spec); });
   if (cached == filters_.end()) {
-    filters_.push_back({spec, boundary, std::make_unique<FftFilter>(spec, fs_, crank_.size(), boundary)});
+    std::shared_ptr<RealFft> shared;  // another filter's transform, if of the same length
+    for (const CachedFilter& c : filters_)
+      if (c.boundary == boundary) shared = c.filter->transform();
+    filters_.push_back({spec, boundary, std::make_unique<FftFilter>(spec, fs_, crank_.size(), boundary, shared)});
     cached = filters_.end() - 1;
   }
   cached->filter->apply(x, x);
@@ -63,15 +66,18 @@ void RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary, std::span
 
 std::vector<double> RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const double> reading,
                                               std::span<const double> link_alpha) {
-  const LinkTable& table = (*tables_)[mount.link];
   std::vector<double> x(reading.size());
-  restore_dc_coupled_reading(rig_, mount, table, crank_, fs_, reading, x);
-  if (mount.axis == SensorAxis::tangential) angular_acceleration_from_tangential(rig_, mount, table, crank_, x, x);
-  else angular_speed_squared_from_normal(rig_, mount, table, crank_, x, link_alpha, x);
+  converted(mount, reading, link_alpha, x);
   return x;
 }
 
-LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method) {
+void RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const double> reading,
+                               std::span<const double> link_alpha, std::span<double> out) {
+  convert_reading(rig_, mount, (*tables_)[mount.link], crank_, fs_, reading, link_alpha, out);
+}
+
+LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method,
+                                  bool keep_slope) {
   LinkGrids out;
   const std::size_t N = grid_.points_per_rev();
   out.points_per_rev = N;
@@ -88,7 +94,7 @@ LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha
     const std::size_t at = r * N;
     for (std::size_t k = 0; k < N; ++k) psi_speed[k] = direction_ * speed_grid_[at + k];
     integrator.integrate(method, std::span(out.alpha_grid).subspan(at, N), psi_speed, turns,
-                         std::span(out.omega_grid).subspan(at, N));
+                         std::span(out.omega_grid).subspan(at, N), keep_slope);
   }
   return out;
 }
@@ -100,7 +106,7 @@ LinkAnalysis RecordAnalyzer::tangential(const AccelerometerMount& mount, std::sp
   out.link = mount.link;
   out.alpha_rad_s2 = converted(mount, reading);
   filter(opt.filter, opt.boundary, out.alpha_rad_s2);
-  static_cast<LinkGrids&>(out) = on_grid(mount.link, out.alpha_rad_s2, opt.integration);
+  static_cast<LinkGrids&>(out) = on_grid(mount.link, out.alpha_rad_s2, opt.integration, opt.keep_slope);
   out.alpha = guarded_average(out.alpha_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
   out.omega = guarded_average(out.omega_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
   return out;

@@ -32,6 +32,7 @@ struct ChannelOptions {
   FilterSpec filter;                        ///< per sample (default all-pass)
   Boundary boundary = Boundary::periodic;   ///< whole-record filter boundary
   PeriodicMethod integration = PeriodicMethod::spectral;
+  bool keep_slope = false;                  ///< see PeriodicIntegrator::integrate
   /// Revolutions left out of the average at each end of the record (they
   /// stay in the per-revolution grids): the filter rings there, mostly from
   /// mains hum that the record cuts off mid-period. Measured on the thesis rig
@@ -103,12 +104,16 @@ class RecordAnalyzer {
   /// tangential mount, ω² for a normal one (`link_alpha_rad_s2` as in normal()).
   std::vector<double> converted(const AccelerometerMount& mount, std::span<const double> reading_m_s2,
                                 std::span<const double> link_alpha_rad_s2 = {});
+  /// The same into `out` (one value per sample; may alias the reading).
+  void converted(const AccelerometerMount& mount, std::span<const double> reading_m_s2,
+                 std::span<const double> link_alpha_rad_s2, std::span<double> out);
   /// Filters `x` (one value per sample) in place with a filter made once per
   /// spec and boundary.
   void filter(const FilterSpec& spec, Boundary boundary, std::span<double> x);
   /// α per sample (filtered) of `link` onto the grid, each revolution
   /// integrated to ω (periodic, the constant from the mechanism's topology).
-  LinkGrids on_grid(SensedLink link, std::span<const double> alpha_rad_s2, PeriodicMethod method);
+  LinkGrids on_grid(SensedLink link, std::span<const double> alpha_rad_s2, PeriodicMethod method,
+                    bool keep_slope = false);
 
  private:
   const Rig& rig_;

@@ -28,12 +28,6 @@ SensedLinkMotion link_part(const Rig& rig, SensedLink link, const NominalMotion&
   return out;
 }
 
-// 4-point Lagrange weights at fraction t ∈ [0, 1) for points −1, 0, 1, 2.
-std::array<double, 4> lagrange4(double t) {
-  return {-t * (t - 1) * (t - 2) / 6, (t + 1) * (t - 1) * (t - 2) / 2, -(t + 1) * t * (t - 2) / 2,
-          (t + 1) * t * (t - 1) / 6};
-}
-
 }  // namespace
 
 void check_crank_track(const CrankTrack& crank) {
@@ -57,73 +51,69 @@ std::vector<SensedLinkMotion> nominal_link_track(const Rig& rig, SensedLink link
   return track;
 }
 
-LinkTable::LinkTable(const Rig& rig, SensedLink link) : rig_(rig), link_(link), l2_(rig.crank.length_m) {
-  for (std::size_t m = std::size_t{1} << 14; m <= (std::size_t{1} << 20); m *= 2)
+LinkTable::LinkTable(const Rig& rig, SensedLink link) : rig_(rig), link_(link) {
+  for (std::size_t m = std::size_t{1} << 12; m <= (std::size_t{1} << 20); m *= 2)
     if (build(m)) return;
-  // Served exactly: motion() solves the mechanism per sample.
+  // Served exactly: the terms are solved per sample.
   m_ = 0;
-  rows_.clear();
-  rows_.shrink_to_fit();
+  tangential_.clear(), normal_.clear();
+  tangential_.shrink_to_fit(), normal_.shrink_to_fit();
 }
 
-LinkTable::Row LinkTable::exact_row(double theta2) const {
+LinkTable::TangentialRow LinkTable::exact_tangential(double theta2) const {
   const SensedLinkMotion k = nominal_link_motion(rig_, link_, {theta2, 1.0, 0.0});
-  return {k.u.x, k.u.y, k.omega_rad_s, k.alpha_rad_s2, std::cos(theta2), std::sin(theta2)};
+  const double l2 = link_ == SensedLink::coupler ? rig_.crank.length_m : 0.0;
+  const Vec2 u2{std::cos(theta2), std::sin(theta2)};
+  return {k.omega_rad_s, k.u.x, l2 * dot(u2, k.u), l2 * cross(k.u, u2)};
 }
 
-LinkTable::Row LinkTable::interpolated_row(double theta2) const {
-  const double x = theta2 * scale_;
-  const double fl = std::floor(x);
-  long long q = static_cast<long long>(fl) % static_cast<long long>(m_);
-  if (q < 0) q += static_cast<long long>(m_);
-  const auto i = static_cast<std::size_t>(q);
-  const std::array<double, 4> w = lagrange4(x - fl);
-  const Row& a = rows_[i];  // point i − 1
-  const Row& b = rows_[i + 1];
-  const Row& c = rows_[i + 2];
-  const Row& d = rows_[i + 3];
-  Row r;
-  for (std::size_t f = 0; f < r.size(); ++f) r[f] = w[0] * a[f] + w[1] * b[f] + w[2] * c[f] + w[3] * d[f];
-  return r;
+LinkTable::NormalRow LinkTable::exact_normal(double theta2) const {
+  const SensedLinkMotion k = nominal_link_motion(rig_, link_, {theta2, 1.0, 0.0});
+  const double l2 = link_ == SensedLink::coupler ? rig_.crank.length_m : 0.0;
+  const Vec2 u2{std::cos(theta2), std::sin(theta2)};
+  return {k.omega_rad_s, k.alpha_rad_s2, k.u.y, -l2 * cross(k.u, u2), l2 * dot(u2, k.u)};
 }
 
-bool LinkTable::build(std::size_t m) {
-  m_ = m;
-  scale_ = static_cast<double>(m) / units::kTwoPi;
-  rows_.resize(m + 3);
-  for (std::size_t i = 0; i < m; ++i) rows_[i + 1] = exact_row(units::kTwoPi * static_cast<double>(i) / m);
-  rows_[0] = rows_[m];          // θ2 = −2π/m
-  rows_[m + 1] = rows_[1];      // 2π
-  rows_[m + 2] = rows_[2];      // 2π + 2π/m
-  // Check half-way between the points against the exact solution.
-  Row peak{}, err{};
+namespace {
+
+// Fills rows[i + 1] = exact(2πi/m) with the wrap-around rows, and returns the
+// largest interpolation error half-way between the points, relative to each
+// field's largest magnitude.
+template <std::size_t F, class Exact, class Interpolate>
+double tabulate(std::vector<std::array<double, F>>& rows, std::size_t m, Exact exact, Interpolate interpolate) {
+  rows.resize(m + 3);
+  for (std::size_t i = 0; i < m; ++i) rows[i + 1] = exact(units::kTwoPi * static_cast<double>(i) / m);
+  rows[0] = rows[m];      // θ2 = −2π/m
+  rows[m + 1] = rows[1];  // 2π
+  rows[m + 2] = rows[2];  // 2π + 2π/m
+  std::array<double, F> peak{}, err{};
   for (std::size_t i = 0; i < m; ++i) {
     const double theta2 = units::kTwoPi * (static_cast<double>(i) + 0.5) / m;
-    const Row e = exact_row(theta2), g = interpolated_row(theta2);
-    for (std::size_t f = 0; f < e.size(); ++f) {
+    const std::array<double, F> e = exact(theta2), g = interpolate(theta2);
+    for (std::size_t f = 0; f < F; ++f) {
       peak[f] = std::max(peak[f], std::abs(e[f]));
       err[f] = std::max(err[f], std::abs(g[f] - e[f]));
     }
   }
-  max_error_ = 0;
-  for (std::size_t f = 0; f < peak.size(); ++f)
-    if (peak[f] > 0) max_error_ = std::max(max_error_, err[f] / peak[f]);
-  return max_error_ <= kTolerance;
+  double worst = 0;
+  for (std::size_t f = 0; f < F; ++f)
+    if (peak[f] > 0) worst = std::max(worst, err[f] / peak[f]);
+  return worst;
 }
 
-SensedLinkMotion LinkTable::motion(const CrankState& crank) const {
-  if (m_ == 0) return nominal_link_motion(rig_, link_, crank);
-  const Row r = interpolated_row(crank.angle_rad);
-  const double w2 = crank.speed_rad_s, a2 = crank.accel_rad_s2;
-  SensedLinkMotion out;
-  out.u = {r[0], r[1]};
-  out.omega_rad_s = w2 * r[2];
-  out.alpha_rad_s2 = a2 * r[2] + w2 * w2 * r[3];
-  if (link_ == SensedLink::coupler) {
-    const Vec2 u2{r[4], r[5]};
-    out.joint_accel_m_s2 = l2_ * (a2 * u2.perp() - w2 * w2 * u2);
-  }
-  return out;
+}  // namespace
+
+bool LinkTable::build(std::size_t m) {
+  m_ = m;
+  mask_ = m - 1;  // m is a power of two
+  scale_ = static_cast<double>(m) / units::kTwoPi;
+  const double et = tabulate(
+      tangential_, m, [&](double th) { return exact_tangential(th); },
+      [&](double th) { return interpolate(tangential_, th); });
+  const double en = tabulate(
+      normal_, m, [&](double th) { return exact_normal(th); }, [&](double th) { return interpolate(normal_, th); });
+  max_error_ = std::max(et, en);
+  return max_error_ <= kTolerance;
 }
 
 }  // namespace fourbar

@@ -17,6 +17,7 @@ const char* to_string(ConversionMethod m) { return m == ConversionMethod::full ?
 const char* to_string(IntegrationMethod m) {
   switch (m) {
     case IntegrationMethod::spectral: return "spectral";
+    case IntegrationMethod::periodic: return "periodic";
     case IntegrationMethod::closed_trapezoid: return "closed-trapezoid";
     case IntegrationMethod::trapezoid: return "trapezoid";
   }
@@ -34,16 +35,9 @@ AnalyzeOptions AnalyzeOptions::thesis_method() {
 
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
 void positive_if_set(const std::optional<double>& v, const char* option) {
   if (v && !(*v > 0 && std::isfinite(*v)))
-    throw InputError(std::string("analyze: ") + option + " " + fmt(*v) + " must be a positive frequency in Hz");
+    throw InputError(std::string("analyze: ") + option + " " + format_value(*v) + " must be a positive frequency in Hz");
 }
 
 }  // namespace
@@ -54,9 +48,9 @@ void validate_options(const AnalyzeOptions& o) {
   positive_if_set(o.filter.low_hz, "--low-hz");
   positive_if_set(o.filter.high_hz, "--high-hz");
   if (o.filter.transition_hz && !(*o.filter.transition_hz >= 0 && std::isfinite(*o.filter.transition_hz)))
-    throw InputError("analyze: --transition-hz " + fmt(*o.filter.transition_hz) + " must be >= 0 (0: ideal filter)");
+    throw InputError("analyze: --transition-hz " + format_value(*o.filter.transition_hz) + " must be >= 0 (0: ideal filter)");
   if (o.filter.mains_hz < 0 || !std::isfinite(o.filter.mains_hz))
-    throw InputError("analyze: --mains-hz " + fmt(o.filter.mains_hz) + " must be 50, 60 (or any positive frequency), or 0 for none");
+    throw InputError("analyze: --mains-hz " + format_value(o.filter.mains_hz) + " must be 50, 60 (or any positive frequency), or 0 for none");
   validate_window(o.filter.window, "--window");
   if (o.filter.transition_hz && *o.filter.transition_hz == 0 && o.filter.window.type != WindowType::rectangular)
     throw InputError("analyze: --transition-hz 0 (the ideal bin-wise filter) takes --window rectangular, not " +
@@ -82,10 +76,12 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   // The channels, checked against the rig before the long passes.
   const AnalysisChannels channels = analysis_channels(manifest);
   if (options.conversion == ConversionMethod::full)
-    for (const auto& link : channels.links) {
-      if (link.tangential) resolve_mount(*manifest.rig, link.tangential->mount);
-      if (link.normal) resolve_mount(*manifest.rig, link.normal->mount);
-    }
+    for (const auto& link : channels.links)
+      for (const auto* ch : {&link.tangential, &link.normal}) try {
+          if (*ch) resolve_mount(*manifest.rig, (*ch)->mount);
+        } catch (const InputError& e) {
+          throw InputError(manifest.file.string() + ": " + e.what() + " (keys position_mm, offset_mm)");
+        }
   result.warnings = channels.warnings;
   // The filter corners against the sample rate, as far as they are given.
   {
@@ -93,12 +89,12 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
     const double nyquist = 0.5 * fs;
     for (const auto& [v, option] : {std::pair{options.filter.low_hz, "--low-hz"}, std::pair{options.filter.high_hz, "--high-hz"}})
       if (v && *v >= nyquist)
-        throw InputError("analyze: " + std::string(option) + " " + fmt(*v) + " Hz lies at or above the Nyquist frequency " +
-                         fmt(nyquist) + " Hz of " + recording.string() + " (sample rate " + fmt(fs) +
+        throw InputError("analyze: " + std::string(option) + " " + format_value(*v) + " Hz lies at or above the Nyquist frequency " +
+                         format_value(nyquist) + " Hz of " + recording.string() + " (sample rate " + format_value(fs) +
                          " Hz); give a corner below it");
     if (options.filter.mains_hz >= nyquist)
-      throw InputError("analyze: --mains-hz " + fmt(options.filter.mains_hz) + " lies at or above the Nyquist frequency " +
-                       fmt(nyquist) + " Hz of " + recording.string());
+      throw InputError("analyze: --mains-hz " + format_value(options.filter.mains_hz) + " lies at or above the Nyquist frequency " +
+                       format_value(nyquist) + " Hz of " + recording.string());
   }
 
   ChunkedAnalysis analysis(result, manifest, channels, observer);

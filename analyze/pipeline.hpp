@@ -46,10 +46,13 @@ enum class ConversionMethod {
   thesis,  ///< thesis eq. 7.2.1-6 / 7.2.2-1: constant (mean) crank speed, sensor at the far joint, no gravity, as recorded
 };
 
-/// How α becomes ω.
+/// How α becomes ω. The first three integrate each revolution on its own in
+/// the crank angle (dω/dθ2 = α/ω2, the constant from the mechanism's
+/// topology): nothing carries over, so nothing drifts (integration.hpp).
 enum class IntegrationMethod {
-  spectral,          ///< per revolution in the crank angle, Fourier (default: exact for band-limited α)
-  closed_trapezoid,  ///< per revolution, trapezoid round the turn, closing error removed
+  spectral,          ///< Fourier, keeping the revolution's mean slope (follows crank-speed changes; default)
+  periodic,          ///< Fourier, strictly periodic (rejects a constant α offset; misses speed changes within a turn)
+  closed_trapezoid,  ///< trapezoid round the turn, closing error removed (periodic, second order)
   trapezoid,         ///< thesis eq. 7.2.1-8: running trapezoid in time from the nominal ω at a segment's first sample (drifts)
 };
 
@@ -66,7 +69,8 @@ struct FilterSettings {
   WindowSpec window{WindowType::kaiser, 8.0};
   /// Transition width of the windowed-sinc kernel. Default: 0.15 × the mean
   /// crank frequency, widened (with a warning) when the kernel would be
-  /// longer than twice the shortest pulse-train segment. 0: the ideal
+  /// longer than twice the longest pulse-train segment (shorter segments are
+  /// left out with a warning). 0: the ideal
   /// bin-wise filter of each chunk (rectangular window only; the thesis's).
   std::optional<double> transition_hz;
 };
@@ -102,6 +106,7 @@ struct NormalCheck {
   /// nominal model, so only the variation of ω² is measured.
   bool ac_coupled = false;
   AngleAverage omega_sq_rad2_s2;                  ///< ω² from the normal channel, per grid angle
+  std::vector<double> omega_abs_rad_s;            ///< √(mean ω²) from the normal channel (0 where the mean is negative)
   std::vector<double> omega_sq_integrated_rad2_s2;  ///< mean over the revolutions of (integrated ω)², per angle
   double rel_rms_difference = 0;                  ///< RMS(normal − integrated) / RMS(integrated) over the grid
 };
@@ -160,7 +165,8 @@ struct AnalyzedRevolution {
 class RevolutionObserver {
  public:
   virtual ~RevolutionObserver() = default;
-  /// Called once before the first revolution with the resolved settings (N, crank_deg, filters).
+  /// Called once before the first revolution with the resolved settings (N,
+  /// crank_deg, filters) and acquire's report so far (pulses, speed statistics).
   virtual void on_start(const RecordingAnalysis&) {}
   virtual void on_revolution(const AnalyzedRevolution&) = 0;
 };

@@ -75,18 +75,34 @@ void BM_AnalyzeChain3Channels(benchmark::State& state) {
 BENCHMARK(BM_AnalyzeChain3Channels)->Unit(benchmark::kMillisecond);
 
 // Parts, one channel each.
-void BM_ConvertTangential(benchmark::State& state) {
+void BM_ConvertTangentialExactTrack(benchmark::State& state) {
   const Fixture& f = fixture();
   std::vector<double> out(f.rec.angle.size());
   for (auto _ : state) {
-    // The nominal link track (once per record and link) and the conversion.
+    // The exact nominal link track (one closed-form solution per sample),
+    // the AC restore and the conversion, in two passes.
     const std::vector<SensedLinkMotion> track = nominal_link_track(f.rig.rig, SensedLink::coupler, f.rec.crank());
-    angular_acceleration_from_tangential(f.rig.rig, f.coupler_t, track, f.rec.channels[0].recorded, out);
+    restore_dc_coupled_reading(f.rig.rig, f.coupler_t, track, f.rig.sample_rate_hz, f.rec.channels[0].recorded, out);
+    angular_acceleration_from_tangential(f.rig.rig, f.coupler_t, track, out, out);
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(state.iterations() * out.size());
 }
-BENCHMARK(BM_ConvertTangential)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ConvertTangentialExactTrack)->Unit(benchmark::kMillisecond);
+
+void BM_ConvertTangentialTable(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const LinkTable table(f.rig.rig, SensedLink::coupler);  // once per rig
+  std::vector<double> out(f.rec.angle.size());
+  for (auto _ : state) {
+    // The same in one pass, the nominal motion read from the table.
+    convert_reading(f.rig.rig, f.coupler_t, table, f.rec.crank(), f.rig.sample_rate_hz, f.rec.channels[0].recorded, {},
+                    out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * out.size());
+}
+BENCHMARK(BM_ConvertTangentialTable)->Unit(benchmark::kMillisecond);
 
 void BM_FftFilterWholeRecord(benchmark::State& state) {
   const Fixture& f = fixture();

@@ -41,5 +41,6 @@ int run_sweep(const Invocation& inv);
 int run_acquire(const Invocation& inv);
 int run_virtual_rig(const Invocation& inv);
 int run_report(const Invocation& inv);
+int run_analyze(const Invocation& inv);
 
 }  // namespace fourbar::cli

@@ -14,6 +14,8 @@ std::span<const Command> commands() {
       Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
       Command{"virtual-rig", "write the recording (and manifest, truth) the sensors would give for a scene",
               run_virtual_rig},
+      Command{"analyze", "coupler and rocker angular acceleration and velocity from a recording, averaged",
+              run_analyze},
   };
   return table;
 }

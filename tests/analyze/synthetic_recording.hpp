@@ -1,12 +1,15 @@
 #pragma once
-// A small stand-in for the virtual rig (issue 4) for the analyze tests and
-// bench: the nominal thesis mechanism driven at a crank speed that wanders
-// slowly (±1 % by default), link-mounted accelerometers read through the
-// forward sensor model (specific force, sensor sign, offset, AC coupling as
-// a first-order high-pass in steady state), white noise at a given SNR and
-// mains hum. Exact closed forms throughout; seeded.
+// A record for the analyze tests and benches that work below acquire (plain
+// samples with their crank state, no file): the virtual rig's crank drive
+// (slow ±1 % speed wander by default) and nominal motion, its sensor model
+// (sim/virtual_rig/sensor_signal.hpp: specific force at the mounting point,
+// a formulation independent of analyze's conversion) times the axis sign,
+// an AC-coupled sensor as a first-order high-pass in steady state, white
+// noise at a given SNR and mains hum. Seeded. End-to-end tests go through
+// the virtual rig's recording files and acquire instead (virtual_session.hpp).
 
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -14,6 +17,8 @@
 #include "analyze/conversion.hpp"
 #include "analyze/filter_design.hpp"
 #include "common/units.hpp"
+#include "sim/virtual_rig/motion_source.hpp"
+#include "sim/virtual_rig/sensor_signal.hpp"
 
 namespace fourbar::testing {
 
@@ -33,23 +38,11 @@ struct SyntheticRig {
 
   double mean_speed_rad_s() const { return units::rpm_to_rad_s(speed_rpm); }
   double wobble_period_s() const { return wobble_period_revs * units::kTwoPi / mean_speed_rad_s(); }
-
-  CrankState crank_at(double t) const {
-    const double w0 = mean_speed_rad_s(), W = units::kTwoPi / wobble_period_s();
-    return {start_angle_rad + w0 * t - w0 * wobble / W * (std::cos(W * t) - 1.0),
-            w0 * (1.0 + wobble * std::sin(W * t)), w0 * wobble * W * std::cos(W * t)};
-  }
-  /// The time at which the crank reaches `angle` (Newton; the angle is monotonic).
-  double time_at(double angle) const {
-    double t = (angle - start_angle_rad) / mean_speed_rad_s();
-    for (int i = 0; i < 50; ++i) {
-      const CrankState c = crank_at(t);
-      const double dt = (c.angle_rad - angle) / c.speed_rad_s;
-      t -= dt;
-      if (std::abs(dt) < 1e-15) break;
-    }
-    return t;
-  }
+  CrankDrive drive() const { return {start_angle_rad, mean_speed_rad_s(), wobble, wobble_period_s()}; }
+  NominalMotionSource motion() const { return {std::make_shared<const Rig>(rig), drive()}; }
+  CrankState crank_at(double t) const { return drive().at(t); }
+  /// The time at which the crank reaches `angle`.
+  double time_at(double angle) const { return drive().time_at_turned(angle - start_angle_rad); }
 };
 
 struct SyntheticChannel {
@@ -68,6 +61,7 @@ inline SyntheticRecording make_recording(const SyntheticRig& s, const std::vecto
   const double fs = s.sample_rate_hz;
   const auto pre = static_cast<std::size_t>(s.preroll_s * fs);
   const auto n = static_cast<std::size_t>(s.duration_s * fs);
+  const NominalMotionSource motion = s.motion();
   SyntheticRecording rec;
   rec.angle.resize(n), rec.speed.resize(n), rec.accel.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -79,10 +73,15 @@ inline SyntheticRecording make_recording(const SyntheticRig& s, const std::vecto
   std::uniform_real_distribution<double> phase(0.0, units::kTwoPi);
   for (const AccelerometerMount& mount : mounts) {
     const ResolvedMount m = resolve_mount(s.rig, mount);
+    const ChannelRole role = m.link == SensedLink::coupler
+                                 ? (m.axis == SensorAxis::tangential ? ChannelRole::coupler_tangential
+                                                                     : ChannelRole::coupler_normal)
+                                 : (m.axis == SensorAxis::tangential ? ChannelRole::rocker_tangential
+                                                                     : ChannelRole::rocker_normal);
     std::vector<double> x(pre + n), y(pre + n);
     for (std::size_t i = 0; i < pre + n; ++i) {
       const double t = (static_cast<double>(i) - static_cast<double>(pre)) / fs;
-      x[i] = sensor_reading(s.rig, m, nominal_link_motion(s.rig, m.link, s.crank_at(t)));
+      x[i] = m.sign * specific_force(s.rig, motion.at(t), role, m.r_m, m.h_m);
     }
     if (m.high_pass_corner_hz > 0) apply_sensor_high_pass(x, fs, m.high_pass_corner_hz, 0.0, y);
     else y = x;
@@ -136,9 +135,14 @@ inline FilterSpec band_pass_with_mains_comb() {
   return {BandType::bandpass, 2.9, 300, 60, 1.0, {WindowType::kaiser, 8.0}, 0.8};
 }
 
-/// Nominal α and ω of `link` at crank angle `angle` of the synthetic motion.
-inline SensedLinkMotion truth_at_angle(const SyntheticRig& s, SensedLink link, double angle) {
-  return nominal_link_motion(s.rig, link, s.crank_at(s.time_at(angle)));
+/// True α and ω of `link` at crank angle `angle` of the synthetic motion.
+struct LinkTruth {
+  double alpha_rad_s2, omega_rad_s;
+};
+inline LinkTruth truth_at_angle(const SyntheticRig& s, SensedLink link, double angle) {
+  const LinkState st = s.motion().at(s.time_at(angle));
+  return link == SensedLink::coupler ? LinkTruth{st.alpha3_rad_s2, st.omega3_rad_s}
+                                     : LinkTruth{st.alpha4_rad_s2, st.omega4_rad_s};
 }
 
 }  // namespace fourbar::testing

@@ -49,7 +49,7 @@ Truth grid_truth(const SyntheticRig& s, SensedLink link, const LinkAnalysis& a, 
   for (std::size_t r = 0; r < a.revolutions; ++r)
     for (std::size_t k = 0; k < N; ++k) {
       const double angle = grid_start + units::kTwoPi * (double(a.first_revolution + long(r)) + double(k) / N);
-      const SensedLinkMotion m = testing::truth_at_angle(s, link, angle);
+      const testing::LinkTruth m = testing::truth_at_angle(s, link, angle);
       t.alpha_rev.push_back(m.alpha_rad_s2);
       t.omega_rev.push_back(m.omega_rad_s);
       if (r < guard || r >= a.revolutions - guard) continue;

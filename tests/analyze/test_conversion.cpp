@@ -229,3 +229,75 @@ TEST(Conversion, BadMountsAreInputErrorsNamingTheChannel) {
 
 }  // namespace
 }  // namespace fourbar
+
+namespace fourbar {
+namespace {
+
+// The tabulated nominal motion against the exact one at random crank states
+// (any speed and acceleration, negative and large angles too).
+TEST(LinkTable, MatchesTheExactNominalMotion) {
+  const Rig rig = thesis_rig();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> angle(-50.0, 2000.0), speed(-60.0, 60.0), accel(-300.0, 300.0);
+  for (SensedLink link : {SensedLink::coupler, SensedLink::rocker}) {
+    const LinkTable table(rig, link);
+    EXPECT_GE(table.points(), 4096u);
+    EXPECT_LE(table.max_error(), LinkTable::kTolerance);
+    for (int i = 0; i < 2000; ++i) {
+      const CrankState c{angle(rng), speed(rng), accel(rng)};
+      const SensedLinkMotion e = nominal_link_motion(rig, link, c), t = table.motion(c);
+      const double w2 = c.speed_rad_s * c.speed_rad_s;
+      EXPECT_NEAR(t.u.x, e.u.x, 1e-10);
+      EXPECT_NEAR(t.u.y, e.u.y, 1e-10);
+      EXPECT_NEAR(t.omega_rad_s, e.omega_rad_s, 1e-10 * std::abs(c.speed_rad_s) * 3);
+      EXPECT_NEAR(t.alpha_rad_s2, e.alpha_rad_s2, 1e-10 * (w2 * 20 + std::abs(c.accel_rad_s2) * 3));
+      EXPECT_NEAR(t.joint_accel_m_s2.x, e.joint_accel_m_s2.x, 1e-10 * (w2 + std::abs(c.accel_rad_s2)));
+      EXPECT_NEAR(t.joint_accel_m_s2.y, e.joint_accel_m_s2.y, 1e-10 * (w2 + std::abs(c.accel_rad_s2)));
+    }
+  }
+}
+
+// convert_reading (one pass, table) equals restore_dc_coupled_reading followed
+// by the per-sample conversion with the exact track, for tangential and
+// normal mounts, DC- and AC-coupled, with offsets.
+TEST(LinkTable, OnePassConversionEqualsTheTwoStepExactOne) {
+  const Rig rig = thesis_rig();
+  const double fs = 5000, w0 = units::rpm_to_rad_s(350);
+  const std::size_t n = 20000;
+  std::vector<double> angle(n), speed(n), accel(n), reading(n), link_alpha(n);
+  std::mt19937 rng(9);
+  std::normal_distribution<double> noise(0, 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = i / fs;
+    angle[i] = 0.4 + w0 * t + 0.3 * std::sin(2.0 * t), speed[i] = w0 + 0.6 * std::cos(2.0 * t);
+    accel[i] = -1.2 * std::sin(2.0 * t);
+    reading[i] = 40 * std::sin(3 * angle[i]) + noise(rng);
+    link_alpha[i] = 200 * std::cos(angle[i]);
+  }
+  const CrankTrack crank{angle, speed, accel};
+  for (SensorAxis axis : {SensorAxis::tangential, SensorAxis::normal})
+    for (double corner : {0.0, 0.5}) {
+      AccelerometerMount m;
+      m.channel = "x";
+      m.link = SensedLink::coupler;
+      m.axis = axis;
+      m.distance_m = 0.25;
+      m.offset_m = 0.012;
+      m.axis_sign = -1;
+      m.high_pass_corner_hz = corner;
+      const LinkTable table(rig, m.link);
+      const std::vector<SensedLinkMotion> track = nominal_link_track(rig, m.link, crank);
+      std::vector<double> two_step(n), one_pass(n);
+      restore_dc_coupled_reading(rig, m, track, fs, reading, two_step);
+      if (axis == SensorAxis::tangential) angular_acceleration_from_tangential(rig, m, track, two_step, two_step);
+      else angular_speed_squared_from_normal(rig, m, track, two_step, link_alpha, two_step);
+      convert_reading(rig, m, table, crank, fs, reading, link_alpha, one_pass);
+      double peak = 0, diff = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        peak = std::max(peak, std::abs(two_step[i])), diff = std::max(diff, std::abs(one_pass[i] - two_step[i]));
+      EXPECT_LT(diff, 1e-9 * peak) << to_string(axis) << " corner " << corner;
+    }
+}
+
+}  // namespace
+}  // namespace fourbar

@@ -63,6 +63,35 @@ TEST(Integration, SpectralIsExactOnBandLimitedRevolutions) {
   }
 }
 
+// A crank speeding up through the revolution: the link's ω gains a net
+// change over the turn, ω = P(θ) + s·θ. Keeping the slope reproduces it
+// exactly; strict periodicity leaves the sawtooth s·(θ − π).
+TEST(Integration, KeepingTheSlopeFollowsASpeedChangeWithinTheTurn) {
+  const Motion m;
+  const double slope = 0.05;  // rad/s per radian of crank angle
+  for (std::size_t n : {64u, 720u}) {
+    PeriodicIntegrator integ(n);
+    std::vector<double> alpha(n), speed(n), omega(n), periodic(n), truth(n);
+    double turns = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double th = kTwoPi * k / n;
+      speed[k] = m.speed(th);
+      truth[k] = m.omega(th) + slope * th;
+      alpha[k] = speed[k] * (m.domega(th) + slope);
+      turns += truth[k] / speed[k] / n;
+    }
+    integ.integrate(PeriodicMethod::spectral, alpha, speed, turns, omega, true);
+    integ.integrate(PeriodicMethod::spectral, alpha, speed, turns, periodic, false);
+    double err = 0, err_periodic = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      err = std::max(err, std::abs(omega[k] - truth[k]));
+      err_periodic = std::max(err_periodic, std::abs(periodic[k] - truth[k]));
+    }
+    EXPECT_LT(err, 1e-11) << n;
+    EXPECT_GT(err_periodic, 0.8 * slope * units::kPi) << n;  // the sawtooth's half height
+  }
+}
+
 TEST(Integration, ClosedTrapezoidIsSecondOrder) {
   const Motion m;
   double prev = 0;

@@ -1,0 +1,320 @@
+// `fourbar analyze REC [--manifest M] --out DIR`: coupler and rocker angular
+// acceleration and velocity from a recording's accelerometers, averaged over
+// the revolutions with their spread, spectra and a JSON summary.
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "analyze/pipeline.hpp"
+#include "analyze/window.hpp"
+#include "cli/command.hpp"
+#include "common/atomic_output.hpp"
+#include "common/csv_writer.hpp"
+#include "common/error.hpp"
+#include "common/provenance.hpp"
+#include "common/units.hpp"
+
+namespace po = boost::program_options;
+
+namespace fourbar::cli {
+
+namespace {
+
+constexpr const char* kDetails = R"(Acquires the recording (as 'fourbar acquire': manifest, crank pulses, crank
+angle per sample) and turns its tangential accelerometers into the coupler's
+and rocker's angular acceleration: the measured crank speed and acceleration,
+the sensor position and offset, gravity and an AC-coupled sensor's high-pass
+are taken into account (README "Analysis"). Each channel is band-pass
+filtered (zero phase, FFT), put on a crank-angle grid of N points per
+revolution, integrated revolution by revolution to the angular velocity
+(periodic: no drift) and averaged over the revolutions. A normal channel on
+the same link checks |omega| independently. Long recordings are analysed in
+chunks of revolutions in bounded memory; the result does not depend on it.
+Writes into DIR:
+  averaged.csv       crank_deg, omega2_rad_s (crank speed), alpha3_rad_s2,
+                     alpha3_std_rad_s2, omega3_rad_s, omega3_std_rad_s, the
+                     same for alpha4/omega4 (when the manifest has a
+                     rocker_tangential channel), and per normal channel
+                     omegaN_sq_normal_rad2_s2, omegaN_sq_integrated_rad2_s2,
+                     omegaN_abs_normal_rad_s (the check: |omega| from the
+                     centripetal term); mean over the revolutions, std =
+                     spread per angle
+  per_revolution.csv (--per-revolution) crank_deg, revolution, averaged
+                     (0: a guard or clipped revolution), omega2_rad_s,
+                     alpha3_rad_s2, omega3_rad_s, alpha4_rad_s2, omega4_rad_s
+  spectra.csv        frequency_Hz, order (multiples of the mean crank
+                     frequency), filter_gain (the alpha filter's response),
+                     alpha3_amplitude_rad_s2, alpha4_amplitude_rad_s2:
+                     amplitude of the converted alpha before the filter
+                     (Hann segments, 50 % overlap, RMS-averaged)
+  summary.json       provenance, recording and acquisition summary (pulses,
+                     revolutions, rpm), settings (filter, kernel taps, grid,
+                     conversion, integration), RMS of the averaged curves and
+                     of their spread, normal-channel check, warnings
+Defaults: band-pass from half the mean crank frequency to 1000 Hz (at most
+0.4 x the sample rate), Kaiser window (beta 8), transition 0.15 x the crank
+frequency, no mains comb (give --mains-hz 50 or 60), N = 720 (more when the
+band needs it), spectral integration.
+--thesis: the thesis's processing for comparison (thesis eq. 7.2.1-6/7.2.2-1
+at the mean crank speed, sensor at the joint, no gravity, no AC correction;
+ideal rectangular band-pass; running trapezoid in time, eq. 7.2.1-8).
+Options given with --thesis override its settings.
+Errors (exit 2, nothing written): no coupler_tangential channel, a sensor
+outside its link, a corner at or above the Nyquist frequency, a window
+parameter out of range (tukey 0..1, kaiser 0..50), a record too short.
+)";
+
+BandType parse_band(const std::string& s) {
+  if (s == "bandpass") return BandType::bandpass;
+  if (s == "lowpass") return BandType::lowpass;
+  if (s == "highpass") return BandType::highpass;
+  if (s == "bandstop") return BandType::bandstop;
+  if (s == "none" || s == "allpass") return BandType::all_pass;
+  throw InputError("analyze: --band '" + s + "' is not one of bandpass, lowpass, highpass, bandstop, none");
+}
+
+IntegrationMethod parse_integration(const std::string& s) {
+  if (s == "spectral") return IntegrationMethod::spectral;
+  if (s == "periodic") return IntegrationMethod::periodic;
+  if (s == "closed-trapezoid") return IntegrationMethod::closed_trapezoid;
+  if (s == "trapezoid") return IntegrationMethod::trapezoid;
+  throw InputError("analyze: --integration '" + s + "' is not one of spectral, periodic, closed-trapezoid, trapezoid");
+}
+
+const char* link_index(SensedLink l) { return l == SensedLink::coupler ? "3" : "4"; }
+
+/// Streams per-revolution rows to per_revolution.csv as they are analysed.
+class RevolutionCsv final : public RevolutionObserver {
+ public:
+  RevolutionCsv(std::filesystem::path dir, Provenance prov) : dir_(std::move(dir)), prov_(std::move(prov)) {}
+  void on_start(const RecordingAnalysis& a) override {
+    ensure_output_dir(dir_);
+    crank_deg_ = a.crank_deg;
+    std::vector<std::string> cols{"crank_deg", "revolution", "averaged", "omega2_rad_s"};
+    for (const auto* l : {&a.coupler, &a.rocker})
+      if (*l) {
+        const std::string i = link_index((*l)->link);
+        cols.push_back("alpha" + i + "_rad_s2"), cols.push_back("omega" + i + "_rad_s");
+      }
+    row_.resize(cols.size());
+    csv_ = std::make_unique<CsvWriter>(dir_ / "per_revolution.csv", prov_.comment_lines(), std::move(cols));
+  }
+  void on_revolution(const AnalyzedRevolution& r) override {
+    for (std::size_t k = 0; k < crank_deg_.size(); ++k) {
+      std::size_t c = 0;
+      row_[c++] = crank_deg_[k];
+      row_[c++] = static_cast<double>(r.number);
+      row_[c++] = r.averaged ? 1.0 : 0.0;
+      row_[c++] = r.crank_speed_rad_s[k];
+      for (const auto* s : {&r.alpha3_rad_s2, &r.omega3_rad_s, &r.alpha4_rad_s2, &r.omega4_rad_s})
+        if (!s->empty()) row_[c++] = (*s)[k];
+      csv_->row(row_);
+    }
+  }
+  void commit() {
+    if (csv_) csv_->commit();
+  }
+
+ private:
+  std::filesystem::path dir_;
+  Provenance prov_;
+  std::vector<double> crank_deg_, row_;
+  std::unique_ptr<CsvWriter> csv_;
+};
+
+nlohmann::json link_json(const LinkResult& l) {
+  auto peak = [](const std::vector<double>& v) {
+    double m = 0;
+    for (double x : v) m = std::max(m, std::abs(x));
+    return m;
+  };
+  nlohmann::json j = {{"channel", l.channel},
+                      {"revolutions", l.alpha_rad_s2.revolutions},
+                      {"alpha_rms_rad_s2", l.alpha_rms_rad_s2},
+                      {"alpha_peak_rad_s2", peak(l.alpha_rad_s2.mean)},
+                      {"alpha_std_rms_rad_s2", l.alpha_std_rms_rad_s2},
+                      {"omega_rms_rad_s", l.omega_rms_rad_s},
+                      {"omega_peak_rad_s", peak(l.omega_rad_s.mean)},
+                      {"omega_std_rms_rad_s", l.omega_std_rms_rad_s}};
+  if (l.normal)
+    j["normal_check"] = {{"channel", l.normal->channel},
+                         {"ac_coupled", l.normal->ac_coupled},
+                         {"omega_sq_rel_rms_difference", l.normal->rel_rms_difference},
+                         {"note", l.normal->ac_coupled
+                                      ? "AC-coupled: the mean of omega^2 comes from the nominal model, only its "
+                                        "variation is measured"
+                                      : "omega^2 from the centripetal term, against the integrated omega squared"}};
+  return j;
+}
+
+nlohmann::json filter_json(const FilterSpec& f) {
+  return {{"description", describe(f)},  {"low_hz", f.low_hz},       {"high_hz", f.high_hz},
+          {"mains_hz", f.mains_hz},      {"mains_width_hz", f.mains_width_hz}, {"window", to_string(f.window)},
+          {"transition_hz", f.transition_hz}};
+}
+
+}  // namespace
+
+int run_analyze(const Invocation& inv) {
+  std::string recording, manifest_file, out_dir, band = "bandpass", window, integration;
+  double low = 0, high = 0, mains = 0, mains_width = 1, transition = 0;
+  std::size_t points = 0, guard = 0, spectrum_segment = 0, chunk = 0;
+  bool thesis = false, per_revolution = false;
+  po::options_description opts("options");
+  opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, ..., CSV)")(
+      "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
+      "out,o", po::value(&out_dir)->required(), "output folder")(
+      "band", po::value(&band), "filter band: bandpass (default), lowpass, highpass, bandstop, none")(
+      "low-hz", po::value(&low), "lower corner in Hz (default: half the mean crank frequency)")(
+      "high-hz", po::value(&high), "upper corner in Hz (default: 1000, at most 0.4 x the sample rate)")(
+      "mains-hz", po::value(&mains), "mains comb: notches at k x this frequency (50 or 60; default 0: none)")(
+      "mains-width-hz", po::value(&mains_width), "width of each mains notch in Hz (default 1)")(
+      "window", po::value(&window),
+      "kernel window: rectangular, hann, tukey:ALPHA (0..1), kaiser:BETA (0..50) (default kaiser:8)")(
+      "transition-hz", po::value(&transition),
+      "transition width in Hz (default 0.15 x the crank frequency); 0: ideal bin-wise filter (rectangular)")(
+      "integration", po::value(&integration),
+      "alpha to omega, each revolution on its own: spectral (default; keeps the revolution's mean slope, follows "
+      "crank-speed changes), periodic (strictly periodic, rejects a constant alpha offset), closed-trapezoid; or "
+      "trapezoid (thesis: running in time, drifts)")("points,n", po::value(&points),
+                                  "crank angles per revolution N (default 720, more when the band needs it)")(
+      "guard-revolutions", po::value(&guard), "revolutions left out of the averages at each end of a pulse-train "
+                                              "segment (default 0)")(
+      "per-revolution", po::bool_switch(&per_revolution), "also write per_revolution.csv (every revolution)")(
+      "spectrum-segment", po::value(&spectrum_segment),
+      "samples per spectrum segment (default: a power of two >= 8 revolutions)")(
+      "chunk-revolutions", po::value(&chunk), "revolutions per processing chunk (default: about 2^19 samples)")(
+      "thesis", po::bool_switch(&thesis), "the thesis's processing, for comparison (see below)");
+  po::positional_options_description pos;
+  pos.add("recording", 1);
+  po::variables_map vm;
+  if (!parse_arguments("analyze", "REC [--manifest M] --out DIR [options]", kDetails, opts, pos, inv, vm)) return 0;
+
+  AnalyzeOptions o = thesis ? AnalyzeOptions::thesis_method() : AnalyzeOptions{};
+  o.filter.band = parse_band(band);
+  if (vm.count("low-hz")) o.filter.low_hz = low;
+  if (vm.count("high-hz")) o.filter.high_hz = high;
+  o.filter.mains_hz = mains;
+  o.filter.mains_width_hz = mains_width;
+  if (vm.count("window")) o.filter.window = parse_window(window, "--window");
+  if (vm.count("transition-hz")) o.filter.transition_hz = transition;
+  if (vm.count("integration")) o.integration = parse_integration(integration);
+  o.points_per_rev = points;
+  o.guard_revolutions = guard;
+  o.spectrum_segment = spectrum_segment;
+  o.chunk_revolutions = chunk;
+  o.keep_revolutions = false;
+  validate_options(o);
+
+  const std::filesystem::path dir(out_dir);
+  Provenance prov{inv.command_line, {recording}};
+  RevolutionCsv per_rev(dir, prov);
+  RecordingAnalysis a = analyze_recording(recording, manifest_file, o, per_revolution ? &per_rev : nullptr);
+  prov.inputs = {recording, a.manifest_file, a.rig_file};
+  ensure_output_dir(dir);
+
+  // averaged.csv
+  const std::size_t N = a.points_per_rev;
+  std::vector<std::string> cols{"crank_deg", "omega2_rad_s"};
+  std::vector<const std::vector<double>*> series{&a.crank_deg, &a.crank_speed_rad_s.mean};
+  for (const auto* l : {&a.coupler, &a.rocker}) {
+    if (!*l) continue;
+    const LinkResult& r = **l;
+    const std::string i = link_index(r.link);
+    cols.insert(cols.end(), {"alpha" + i + "_rad_s2", "alpha" + i + "_std_rad_s2", "omega" + i + "_rad_s",
+                             "omega" + i + "_std_rad_s"});
+    series.insert(series.end(), {&r.alpha_rad_s2.mean, &r.alpha_rad_s2.std, &r.omega_rad_s.mean, &r.omega_rad_s.std});
+  }
+  for (const auto* l : {&a.coupler, &a.rocker}) {
+    if (!*l || !(*l)->normal) continue;
+    const std::string i = link_index((*l)->link);
+    cols.insert(cols.end(), {"omega" + i + "_sq_normal_rad2_s2", "omega" + i + "_sq_integrated_rad2_s2",
+                             "omega" + i + "_abs_normal_rad_s"});
+    series.insert(series.end(), {&(*l)->normal->omega_sq_rad2_s2.mean, &(*l)->normal->omega_sq_integrated_rad2_s2,
+                                 &(*l)->normal->omega_abs_rad_s});
+  }
+  CsvWriter averaged(dir / "averaged.csv", prov.comment_lines(), cols);
+  std::vector<double> row(series.size());
+  for (std::size_t k = 0; k < N; ++k) {
+    for (std::size_t c = 0; c < series.size(); ++c) row[c] = (*series[c])[k];
+    averaged.row(row);
+  }
+
+  // spectra.csv
+  std::vector<std::string> scols{"frequency_Hz", "order", "filter_gain"};
+  std::vector<const std::vector<double>*> sseries{&a.spectra.frequency_hz, &a.spectra.order, &a.spectra.filter_gain};
+  for (const auto* l : {&a.coupler, &a.rocker})
+    if (*l) {
+      scols.push_back(std::string("alpha") + link_index((*l)->link) + "_amplitude_rad_s2");
+      sseries.push_back(&(*l)->alpha_amplitude);
+    }
+  CsvWriter spectra(dir / "spectra.csv", prov.comment_lines(), scols);
+  if (a.spectra.segments > 0) {
+    std::vector<double> srow(sseries.size());
+    for (std::size_t k = 0; k < a.spectra.frequency_hz.size(); ++k) {
+      for (std::size_t c = 0; c < sseries.size(); ++c) srow[c] = (*sseries[c])[k];
+      spectra.row(srow);
+    }
+  }
+
+  // summary.json
+  const AcquisitionReport& rep = a.acquisition;
+  const RecordingInfo& ri = rep.recording;
+  nlohmann::json j;
+  j["provenance"] = prov.to_json();
+  j["recording"] = {{"file", ri.file.string()}, {"format", ri.format}, {"sample_format", ri.sample_format},
+                    {"channels", ri.channels}, {"sample_rate_hz", ri.sample_rate_hz}, {"frames", ri.frames},
+                    {"duration_s", ri.duration_s()}};
+  j["manifest"] = {{"file", a.manifest_file.string()}, {"rig", a.rig_file.string()},
+                   {"clearance_mm", units::m_to_mm(a.clearance_m)},
+                   {"crank_direction", a.crank_direction > 0 ? "ccw" : "cw"}};
+  j["acquisition"] = {{"revolutions_kept", rep.revolutions},
+                      {"revolutions_repaired", rep.revolutions_repaired},
+                      {"revolutions_clipped", rep.revolutions_clipped},
+                      {"revolutions_dropped_in_gaps", rep.revolutions_in_gaps},
+                      {"segments", rep.pulses.segments.size()},
+                      {"pulses_inserted", rep.pulses.inserted_s.size()},
+                      {"pulses_removed", rep.pulses.removed_s.size()},
+                      {"clipping_checked", rep.clipping_checked},
+                      {"speed_rpm",
+                       {{"mean", rep.speed.mean_rpm}, {"std", rep.speed.std_rpm}, {"min", rep.speed.min_rpm},
+                        {"max", rep.speed.max_rpm}}}};
+  j["settings"] = {{"conversion", to_string(o.conversion)},
+                   {"integration", to_string(o.integration)},
+                   {"points_per_rev", N},
+                   {"filter", filter_json(a.filter)},
+                   {"kernel_taps", a.kernel_taps},
+                   {"normal_filter", describe(a.normal_filter)},
+                   {"guard_revolutions", o.guard_revolutions},
+                   {"chunk_revolutions", a.chunk_revolutions},
+                   {"spectrum", {{"segment_length", a.spectra.segment_length},
+                                 {"segments", a.spectra.segments},
+                                 {"resolution_hz", ri.sample_rate_hz / double(a.spectra.segment_length)},
+                                 {"window", "hann"},
+                                 {"overlap", 0.5}}}};
+  j["revolutions"] = {{"averaged", a.revolutions}, {"clipped_left_out", a.revolutions_clipped}};
+  j["crank_speed"] = {{"mean_rad_s", a.mean_crank_speed_rad_s},
+                      {"mean_rpm", units::rad_s_to_rpm(std::abs(a.mean_crank_speed_rad_s))}};
+  j["links"] = nlohmann::json::object();
+  if (a.coupler) j["links"]["coupler"] = link_json(*a.coupler);
+  if (a.rocker) j["links"]["rocker"] = link_json(*a.rocker);
+  j["warnings"] = a.warnings;
+  j["outputs"] = nlohmann::json::array({"averaged.csv", "spectra.csv", "summary.json"});
+  if (per_revolution) j["outputs"].push_back("per_revolution.csv");
+
+  AtomicOutput summary(dir / "summary.json");
+  summary.stream() << j.dump(2) << "\n";
+  averaged.commit();
+  spectra.commit();
+  per_rev.commit();
+  summary.commit();
+
+  for (const auto& w : a.warnings) std::cerr << "fourbar: warning: " << w << "\n";
+  std::cout << "analysed " << a.revolutions << " revolutions (" << units::rad_s_to_rpm(std::abs(a.mean_crank_speed_rad_s))
+            << " rpm mean, " << N << " crank angles each) of " << recording << " into " << out_dir << ": alpha3 RMS "
+            << a.coupler->alpha_rms_rad_s2 << " rad/s^2, omega3 RMS " << a.coupler->omega_rms_rad_s << " rad/s\n";
+  return 0;
+}
+
+}  // namespace fourbar::cli

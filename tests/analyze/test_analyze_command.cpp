@@ -1,0 +1,175 @@
+// `fourbar analyze` as a user runs it: the example scene recorded by the
+// virtual rig, analysed into CSV + JSON; bad input failing with one line,
+// exit status 2 and nothing written.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/run_command.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::count_lines;
+using testing::read_file;
+using testing::replace;
+using testing::run_fourbar;
+using testing::TempDir;
+
+const std::string kExample = FOURBAR_SOURCE_DIR "/data/scenes/thesis_virtual_rig_350rpm.toml";
+
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+};
+Csv read_csv(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  Csv c;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream ss(line);
+    std::string cell;
+    if (c.header.empty()) {
+      while (std::getline(ss, cell, ',')) c.header.push_back(cell);
+      continue;
+    }
+    c.rows.emplace_back();
+    while (std::getline(ss, cell, ',')) c.rows.back().push_back(std::strtod(cell.c_str(), nullptr));
+  }
+  return c;
+}
+
+class AnalyzeCommand : public ::testing::Test {
+ protected:
+  TempDir dir;
+  std::filesystem::path out() const { return dir.path() / "out"; }
+  /// The example scene (20 revolutions) recorded by the virtual rig.
+  std::filesystem::path recording(const std::string& from = "", const std::string& to = "") {
+    std::string scene = read_file(kExample);
+    scene = replace(scene, "rig = \"../rigs/thesis.toml\"", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"");
+    if (!from.empty()) scene = replace(scene, from, to);
+    const auto rec = dir.path() / "REC.wav";
+    const auto r = run_fourbar("virtual-rig " + dir.write("scene.toml", scene).string() + " --no-truth --out " + rec.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    return rec;
+  }
+  void edit_manifest(const std::filesystem::path& rec, const std::string& from, const std::string& to) {
+    const auto m = std::filesystem::path(rec).replace_extension(".toml");
+    const std::string text = read_file(m);
+    ASSERT_NE(text.find(from), std::string::npos) << text;
+    std::ofstream(m) << replace(text, from, to);
+  }
+  testing::CommandResult analyze(const std::filesystem::path& rec, const std::string& extra = "") {
+    return run_fourbar("analyze " + rec.string() + " " + extra + " --out " + out().string());
+  }
+  void expect_clean_failure(const testing::CommandResult& r, const std::string& needle) {
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+    const bool empty = !std::filesystem::exists(out()) || std::filesystem::is_empty(out());
+    EXPECT_TRUE(empty) << "something was written into " << out();
+  }
+};
+
+TEST_F(AnalyzeCommand, ExampleSceneEndToEnd) {
+  const auto rec = recording();
+  const auto r = analyze(rec, "--mains-hz 50 --per-revolution");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("analysed 19 revolutions"), std::string::npos) << r.out;
+
+  const Csv avg = read_csv(out() / "averaged.csv");
+  const std::vector<std::string> cols{"crank_deg", "omega2_rad_s", "alpha3_rad_s2", "alpha3_std_rad_s2",
+                                      "omega3_rad_s", "omega3_std_rad_s", "alpha4_rad_s2", "alpha4_std_rad_s2",
+                                      "omega4_rad_s", "omega4_std_rad_s", "omega3_sq_normal_rad2_s2",
+                                      "omega3_sq_integrated_rad2_s2", "omega3_abs_normal_rad_s"};
+  EXPECT_EQ(avg.header, cols);
+  ASSERT_EQ(avg.rows.size(), 720u);
+  EXPECT_DOUBLE_EQ(avg.rows[1][0], 0.5);
+  // The normal channel's ω3² against the integrated ω3 squared at every
+  // angle (2 % of the peak), and its |ω3| column is the square root.
+  double peak = 0;
+  for (const auto& row : avg.rows) peak = std::max(peak, row[11]);
+  for (const auto& row : avg.rows) {
+    EXPECT_NEAR(row[10], row[11], 0.02 * peak);
+    EXPECT_NEAR(row[12] * row[12], std::max(0.0, row[10]), 1e-12 * peak);
+  }
+  // The crank speed column is the scene's 350 rpm (±1 % fluctuation averaged).
+  EXPECT_NEAR(avg.rows[0][1], 350 * 2 * M_PI / 60, 0.02 * 350 * 2 * M_PI / 60);
+
+  const Csv per = read_csv(out() / "per_revolution.csv");
+  EXPECT_EQ(per.header, (std::vector<std::string>{"crank_deg", "revolution", "averaged", "omega2_rad_s",
+                                                  "alpha3_rad_s2", "omega3_rad_s", "alpha4_rad_s2", "omega4_rad_s"}));
+  EXPECT_EQ(per.rows.size(), 19u * 720u);
+  // The averaged curve is the mean of the per-revolution rows.
+  double mean = 0;
+  for (std::size_t r = 0; r < 19; ++r) mean += per.rows[r * 720 + 100][4] / 19;
+  EXPECT_NEAR(mean, avg.rows[100][2], 1e-9 * std::abs(mean));
+
+  const Csv spec = read_csv(out() / "spectra.csv");
+  EXPECT_EQ(spec.header, (std::vector<std::string>{"frequency_Hz", "order", "filter_gain", "alpha3_amplitude_rad_s2",
+                                                   "alpha4_amplitude_rad_s2"}));
+  ASSERT_GT(spec.rows.size(), 1000u);
+  EXPECT_NEAR(spec.rows[1][1] / spec.rows[1][0], 60.0 / 350.0, 0.01 * 60 / 350);  // order = f / crank frequency
+
+  const auto j = nlohmann::json::parse(read_file(out() / "summary.json"));
+  EXPECT_EQ(j["revolutions"]["averaged"], 19);
+  EXPECT_EQ(j["settings"]["conversion"], "full");
+  EXPECT_EQ(j["settings"]["points_per_rev"], 720);
+  EXPECT_GT(j["settings"]["kernel_taps"].get<int>(), 1000);
+  EXPECT_NEAR(j["links"]["coupler"]["alpha_rms_rad_s2"].get<double>(), 209, 5);  // thesis rig at 350 rpm
+  EXPECT_LT(j["links"]["coupler"]["normal_check"]["omega_sq_rel_rms_difference"].get<double>(), 0.02);
+  EXPECT_EQ(j["provenance"]["inputs"].size(), 3u);
+
+  // The thesis method runs too, and says so.
+  const auto t = run_fourbar("analyze " + rec.string() + " --thesis --out " + (dir.path() / "thesis").string());
+  ASSERT_EQ(t.status, 0) << t.err;
+  const auto jt = nlohmann::json::parse(read_file(dir.path() / "thesis" / "summary.json"));
+  EXPECT_EQ(jt["settings"]["conversion"], "thesis");
+  EXPECT_EQ(jt["settings"]["integration"], "trapezoid");
+  EXPECT_EQ(jt["settings"]["kernel_taps"], 0);
+}
+
+TEST_F(AnalyzeCommand, NoCouplerChannel) {
+  const auto rec = recording();
+  edit_manifest(rec, "role = \"coupler_tangential\"", "role = \"rocker_normal\"");
+  expect_clean_failure(analyze(rec), "no coupler channel");
+}
+
+TEST_F(AnalyzeCommand, SensorOutsideTheLink) {
+  const auto rec = recording("position_mm = 312.0", "position_mm = 400.0");
+  expect_clean_failure(analyze(rec), "outside the link");
+}
+
+TEST_F(AnalyzeCommand, BandAboveNyquist) {
+  const auto rec = recording();
+  expect_clean_failure(analyze(rec, "--high-hz 20000"), "Nyquist");
+  expect_clean_failure(analyze(rec, "--band highpass --low-hz 12800"), "Nyquist");
+  expect_clean_failure(analyze(rec, "--mains-hz 13000"), "Nyquist");
+}
+
+TEST_F(AnalyzeCommand, WindowParameterOutOfRange) {
+  const auto rec = recording();
+  expect_clean_failure(analyze(rec, "--window kaiser:80"), "--window");
+  expect_clean_failure(analyze(rec, "--window tukey:1.5"), "--window");
+  expect_clean_failure(analyze(rec, "--window hann --transition-hz 0"), "rectangular");
+}
+
+TEST_F(AnalyzeCommand, RecordTooShortForTheFilter) {
+  const auto rec = recording();
+  expect_clean_failure(analyze(rec, "--transition-hz 0.1"), "--transition-hz");
+}
+
+TEST_F(AnalyzeCommand, BadOptions) {
+  const auto rec = recording();
+  expect_clean_failure(analyze(rec, "--band notch"), "--band");
+  expect_clean_failure(analyze(rec, "--integration simpson"), "--integration");
+  expect_clean_failure(analyze(rec, "--points 2"), "--points");
+  expect_clean_failure(analyze(rec, "--low-hz -3"), "--low-hz");
+}
+
+}  // namespace
+}  // namespace fourbar
