@@ -5,17 +5,18 @@
 namespace fourbar::cli {
 
 std::span<const Command> commands() {
+  // In pipeline order: the main job first, then its stages, then the tools.
   static constexpr std::array table{
       Command{"report", "the main job: a session folder of recordings -> one HTML report, theory over measurement",
               run_report},
-      Command{"sim", "simulate a scene (nominal or clearance model) and write CSV + JSON", run_sim},
-      Command{"rig", "check a rig file and report its class, assembly and transmission angles", run_rig},
-      Command{"sweep", "run the clearance model over a clearance x rpm x e x mu grid, one table", run_sweep},
       Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
-      Command{"virtual-rig", "write the recording (and manifest, truth) the sensors would give for a scene",
-              run_virtual_rig},
       Command{"analyze", "coupler and rocker angular acceleration and velocity from a recording, averaged",
               run_analyze},
+      Command{"sim", "simulate a scene (nominal or clearance model) and write CSV + JSON", run_sim},
+      Command{"sweep", "run the clearance model over a clearance x rpm x e x mu grid, one table", run_sweep},
+      Command{"virtual-rig", "write the recording (and manifest, truth) the sensors would give for a scene",
+              run_virtual_rig},
+      Command{"rig", "check a rig file and report its class, assembly and transmission angles", run_rig},
   };
   return table;
 }

@@ -19,7 +19,8 @@ void print_usage(std::ostream& os) {
     os << "  " << c.name << std::string(16 - std::min<std::size_t>(15, c.name.size()), ' ') << c.summary << "\n";
   }
   os << "\n  --help, -h      show this help\n  --version       print the version\n\n"
-        "exit status: 0 success, 1 the run failed, 2 bad arguments or input\n";
+        "exit status: 0 success, 1 the run failed (report: some recordings failed,\n"
+        "the report names them), 2 bad arguments or input\n";
 }
 
 }  // namespace
