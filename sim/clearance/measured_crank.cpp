@@ -63,11 +63,20 @@ MeasuredSpeedCrank::MeasuredSpeedCrank(double start_angle_rad, std::vector<doubl
   slope_.resize(t_.size());
   for (std::size_t k = 0; k < t_.size(); ++k) slope_[k] = spline.prime(t_[k]);
   // Angles at the knots, then shifted so that θ2(0) = start angle.
+  // The reduced angles are accumulated reduced, so they keep ~1e-15 rad per knot.
   theta_.assign(t_.size(), 0.0);
-  for (std::size_t k = 0; k + 1 < t_.size(); ++k) theta_[k + 1] = theta_[k] + angle_in_piece(k, t_[k + 1]);
+  phase_.assign(t_.size(), 0.0);
+  for (std::size_t k = 0; k + 1 < t_.size(); ++k) {
+    const double gain = angle_in_piece(k, t_[k + 1] - t_[k]);
+    theta_[k + 1] = theta_[k] + gain;
+    phase_[k + 1] = reduce_angle(phase_[k] + gain);
+  }
   const std::size_t k0 = piece(0.0);
-  const double offset = start_angle_rad - (theta_[k0] + angle_in_piece(k0, 0.0));
+  const double gain0 = angle_in_piece(k0, 0.0 - t_[k0]);
+  const double offset = start_angle_rad - (theta_[k0] + gain0);
+  const double phase_offset = start_angle_rad - (phase_[k0] + gain0);
   for (double& th : theta_) th += offset;
+  for (double& ph : phase_) ph = reduce_angle(ph, phase_offset);
 }
 
 MeasuredSpeedCrank MeasuredSpeedCrank::from_revolution_speeds(double start_angle_rad,
@@ -91,23 +100,32 @@ std::size_t MeasuredSpeedCrank::piece(double t) const {
   return it == t_.begin() ? 0 : static_cast<std::size_t>(it - t_.begin()) - 1;
 }
 
-double MeasuredSpeedCrank::angle_in_piece(std::size_t k, double t) const {
-  if (t < t_[k] || k + 1 == t_.size()) return w_[k] * (t - t_[k]);  // constant outside the table
+double MeasuredSpeedCrank::angle_in_piece(std::size_t k, double dt) const {
+  if ((k == 0 && dt < 0) || k + 1 == t_.size()) return w_[k] * dt;  // constant outside the table
   const double h = t_[k + 1] - t_[k];
-  return hermite_integral((t - t_[k]) / h, h, w_[k], w_[k + 1], slope_[k], slope_[k + 1]);
+  return hermite_integral(dt / h, h, w_[k], w_[k + 1], slope_[k], slope_[k + 1]);
 }
 
 CrankState MeasuredSpeedCrank::at(double t) const {
   const std::size_t k = piece(t);
+  return state_in_piece(k, t - t_[k], theta_[k]);
+}
+
+CrankState MeasuredSpeedCrank::at_local(double origin, double tau) const {
+  const std::size_t k = piece(origin + tau);
+  return state_in_piece(k, (origin - t_[k]) + tau, phase_[k]);
+}
+
+CrankState MeasuredSpeedCrank::state_in_piece(std::size_t k, double dt, double knot_angle) const {
   CrankState c;
-  c.angle_rad = theta_[k] + angle_in_piece(k, t);
-  if (t < t_[k] || k + 1 == t_.size()) {
+  c.angle_rad = knot_angle + angle_in_piece(k, dt);
+  if ((k == 0 && dt < 0) || k + 1 == t_.size()) {
     c.speed_rad_s = w_[k];
     c.accel_rad_s2 = 0;
     return c;
   }
   // Cubic Hermite value and derivative on the piece.
-  const double h = t_[k + 1] - t_[k], s = (t - t_[k]) / h, s2 = s * s, s3 = s2 * s;
+  const double h = t_[k + 1] - t_[k], s = dt / h, s2 = s * s, s3 = s2 * s;
   const double y0 = w_[k], y1 = w_[k + 1], m0 = slope_[k], m1 = slope_[k + 1];
   c.speed_rad_s = y0 * (2 * s3 - 3 * s2 + 1) + h * m0 * (s3 - 2 * s2 + s) + y1 * (-2 * s3 + 3 * s2) + h * m1 * (s3 - s2);
   c.accel_rad_s2 = (y0 * (6 * s2 - 6 * s) + y1 * (6 * s - 6 * s2)) / h + m0 * (3 * s2 - 4 * s + 1) + m1 * (3 * s2 - 2 * s);
@@ -125,7 +143,7 @@ double MeasuredSpeedCrank::time_at_angle(double angle) const {
   const auto it = std::upper_bound(theta_.begin(), theta_.end(), a,
                                    [this](double x, double th) { return x < th * direction_; });
   k = static_cast<std::size_t>(it - theta_.begin()) - 1;
-  auto f = [&](double t) { return theta_[k] + angle_in_piece(k, t) - angle; };
+  auto f = [&](double t) { return theta_[k] + angle_in_piece(k, t - t_[k]) - angle; };
   double lo = t_[k], hi = t_[k + 1];
   const double flo = f(lo), fhi = f(hi);
   if (flo == 0) return lo;

@@ -33,15 +33,21 @@ class MeasuredSpeedCrank final : public CrankMotion {
   static MeasuredSpeedCrank from_revolution_speeds(double start_angle_rad, const std::vector<double>& speeds_rad_s);
 
   CrankState at(double time_s) const override;
+  /// As at(origin_s + tau_s), the time since the knot and the knot angle
+  /// taken without the large absolute time and angle (see CrankMotion).
+  CrankState at_local(double origin_s, double tau_s) const override;
   double time_at_angle(double angle_rad) const override;
 
  private:
-  /// Angle gained from knot k to time t inside piece k (or its extension).
-  double angle_in_piece(std::size_t k, double t) const;
+  /// Angle gained from knot k over the time dt since it, inside piece k (or its extension).
+  double angle_in_piece(std::size_t k, double dt) const;
+  /// Speed and acceleration dt after knot k, angle = knot_angle + gain.
+  CrankState state_in_piece(std::size_t k, double dt, double knot_angle) const;
   std::size_t piece(double t) const;
 
   std::vector<double> t_, w_, slope_;  // knots, speeds, dω/dt at the knots
   std::vector<double> theta_;         // θ2 at the knots
+  std::vector<double> phase_;         // θ2 at the knots reduced modulo 2π (accumulated reduced)
   double direction_ = 1;              // sign of the speed
 };
 

@@ -22,6 +22,21 @@ constexpr int kScanPoints = 4;
 /// Events closer together than this, many times in a row, mean the run is stuck.
 constexpr double kZenoSpan_s = 1e-12;
 constexpr int kZenoLimit = 100000;
+/// A smooth segment longer than this many crank turns is restarted at a new
+/// time origin, so its local time (and local crank angle) stays small.
+constexpr double kRestartTurns = 64;
+
+/// A running sum with Neumaier's compensation: the energy books add many
+/// small terms to a growing total over long runs.
+struct CompensatedSum {
+  double sum = 0, carry = 0;
+  void add(double x) {
+    const double s = sum + x;
+    carry += std::abs(sum) >= std::abs(x) ? (sum - s) + x : (x - s) + sum;
+    sum = s;
+  }
+  double value() const { return sum + carry; }
+};
 
 Vec2 rotate(Vec2 u, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -67,6 +82,25 @@ struct ClearanceSimulator::Impl {
   double force_guard = 0;   // N_guard
   double arm_depth = 0;     // penetration below which a free flight from the wall counts as "inside"
 
+  // Time is measured locally: the absolute time is origin + t, where the
+  // origin moves to each segment's start (long runs keep the resolution of
+  // the local time; see crank_motion.hpp). Every time inside Impl is local
+  // unless named absolute.
+  double origin = 0;
+  CrankState crank_at(double time) const { return crank.at_local(origin, time); }
+  double absolute(double time) const { return origin + time; }
+  double local(double absolute_time) const { return absolute_time - origin; }
+
+  /// Moves the origin to the local time `time`; returns that instant in the
+  /// new local time (the rounding remainder of origin + time, ~1e-13 s at most).
+  double rebase(double time) {
+    const double o = origin + time;
+    const double r = std::abs(origin) >= std::abs(time) ? (origin - o) + time : (time - o) + origin;
+    last_event = (last_event - time) + r;
+    origin = o;
+    return r;
+  }
+
   // Current segment.
   double t = 0;
   ContactMode mode = ContactMode::following;
@@ -94,7 +128,14 @@ struct ClearanceSimulator::Impl {
   double rev_origin = 0;
   int rev_dir = 1;
   ClearanceDiagnostics diag;
-  double work_impulse = 0, loss = 0;
+  CompensatedSum work_closed;  // crank work of the closed smooth segments
+  // The work component starts each segment at the closed work (scaled), so
+  // the integrator's error control on it is as before; the segment's part is
+  // y − work_seed, booked into work_closed at the segment's end. (Starting it
+  // at 0 tightened that control and moved the chaotic event paths: the
+  // wall-friction energy test then missed its bound with CVODE.)
+  double work_seed = 0;
+  CompensatedSum work_impulse, loss;
   // Following-mode wall friction (settings.following_friction): μ and the
   // sliding direction (+1/−1) or 0 while stuck; the slip witness is armed
   // once the pin slides faster than slip_arm_speed after a start from rest.
@@ -102,7 +143,7 @@ struct ClearanceSimulator::Impl {
   bool slip_armed = true;
   double slip_arm_speed = 0;    // m/s
   double slip_force_per_speed = 0;  // N per m/s: slip speed in the witness's force units
-  double friction_loss = 0;     // dissipated by wall friction in closed following segments
+  CompensatedSum friction_loss;  // dissipated by wall friction in closed following segments
 
   // ---- state conversion -------------------------------------------------
 
@@ -112,7 +153,7 @@ struct ClearanceSimulator::Impl {
   };
 
   LinkMotion free_links(double time, const OdeState& y, NominalMotion* nominal_out = nullptr) const {
-    const NominalMotion nm = solve_motion(model.rig(), crank.at(time));
+    const NominalMotion nm = solve_motion(model.rig(), crank_at(time));
     LinkMotion m;
     m.u3 = rotate(nm.pose.u3, y[0] * delta_scale);
     m.u4 = rotate(nm.pose.u4, y[1] * delta_scale);
@@ -122,24 +163,35 @@ struct ClearanceSimulator::Impl {
     return m;
   }
 
-  OdeState free_state(double time, const LinkMotion& m, double work) const {
-    const NominalMotion nm = solve_motion(model.rig(), crank.at(time));
+  OdeState free_state(double time, const LinkMotion& m) const {
+    const NominalMotion nm = solve_motion(model.rig(), crank_at(time));
     OdeState y{};
     y[0] = angle_between(nm.pose.u3, m.u3) / delta_scale;
     y[1] = angle_between(nm.pose.u4, m.u4) / delta_scale;
     y[2] = (m.omega3_rad_s - nm.omega3_rad_s) / (delta_scale * speed_scale);
     y[3] = (m.omega4_rad_s - nm.omega4_rad_s) / (delta_scale * speed_scale);
-    y[4] = work / energy_scale;
+    y[4] = work_closed.value() / energy_scale;  // crank work, from work_seed
     return y;
   }
 
-  // Following: y = (η, η̇/|ω2|, W/E, D/E, 0) with D the wall-friction loss of the segment.
+  // Following: y = (η, η̇/|ω2|, W/E, D/E, 0) with W the crank work (from
+  // work_seed) and D the wall-friction loss of the segment (from 0).
   double eta_of(const OdeState& y) const { return y[0]; }
   double eta_rate_of(const OdeState& y) const { return y[1] * speed_scale; }
-  double work_of(const OdeState& y) const { return (mode == ContactMode::following ? y[2] : y[4]) * energy_scale; }
+  double segment_work(const OdeState& y) const {
+    return ((mode == ContactMode::following ? y[2] : y[4]) - work_seed) * energy_scale;
+  }
+  double segment_friction(const OdeState& y) const {
+    return mode == ContactMode::following ? y[3] * energy_scale : 0.0;
+  }
+  /// Crank work up to now: closed segments plus the open one.
+  double work_of(const OdeState& y) const { return work_closed.value() + segment_work(y); }
   /// Friction loss up to now: closed segments plus the open following one.
-  double friction_of(const OdeState& y) const {
-    return friction_loss + (mode == ContactMode::following ? y[3] * energy_scale : 0.0);
+  double friction_of(const OdeState& y) const { return friction_loss.value() + segment_friction(y); }
+  /// Books the open segment's integrals before a new segment starts.
+  void close_segment(const OdeState& y) {
+    work_closed.add(segment_work(y));
+    friction_loss.add(segment_friction(y));
   }
 
   /// The following mode's event witness (N): N + N_guard, and with wall
@@ -158,7 +210,7 @@ struct ClearanceSimulator::Impl {
   }
 
   LinkMotion links_at(double time, const OdeState& y) const {
-    if (mode == ContactMode::following) return model.following_links(crank.at(time), eta_of(y), eta_rate_of(y));
+    if (mode == ContactMode::following) return model.following_links(crank_at(time), eta_of(y), eta_rate_of(y));
     return free_links(time, y);
   }
 
@@ -172,7 +224,7 @@ struct ClearanceSimulator::Impl {
     double w_min = 0, w_max = 0;
     void clear() { w_min = 1e300, w_max = -1e300; }
     void rhs(double time, const OdeState& y, OdeState& dy) override {
-      const CrankState c = s->crank.at(time);
+      const CrankState c = s->crank_at(time);
       const FollowingMotion f = s->model.following(c, s->eta_of(y), s->eta_rate_of(y), s->wall);
       const double w = s->follow_value(f);
       w_min = std::min(w_min, w);
@@ -192,7 +244,7 @@ struct ClearanceSimulator::Impl {
     double pen_min = 0, pen_max = 0;
     void clear() { pen_min = 1e300, pen_max = -1e300; }
     void rhs(double time, const OdeState& y, OdeState& dy) override {
-      const CrankState c = s->crank.at(time);
+      const CrankState c = s->crank_at(time);
       NominalMotion nm;
       const LinkMotion m = s->free_links(time, y, &nm);
       const double pen = -s->model.bearing(c, nm.pose.u2, m).gap_m;
@@ -214,7 +266,7 @@ struct ClearanceSimulator::Impl {
   FreeSample free_witness(double time) {
     OdeState y;
     integ->interpolate(time, y);
-    const BearingState b = model.bearing(crank.at(time), free_links(time, y));
+    const BearingState b = model.bearing(crank_at(time), free_links(time, y));
     return {time, -b.gap_m, b.normal_speed_m_s};
   }
 
@@ -223,7 +275,7 @@ struct ClearanceSimulator::Impl {
   FollowSample follow_witness(double time, bool check_drift = false) {
     OdeState y;
     integ->interpolate(time, y);
-    const CrankState c = crank.at(time);
+    const CrankState c = crank_at(time);
     const FollowingMotion f = model.following(c, eta_of(y), eta_rate_of(y), wall);
     if (check_drift) monitor(model.bearing(c, f.links));
     if (!slip_armed && wall.slip * f.slip_speed_m_s > slip_arm_speed) slip_armed = true;
@@ -343,29 +395,35 @@ struct ClearanceSimulator::Impl {
 
   // ---- segment starts --------------------------------------------------------
 
-  void begin_following(double time, double eta, double eta_rate, double work) {
+  /// Starts a following segment at local `time` (the origin moves there).
+  void begin_following(double time, double eta, double eta_rate) {
+    time = rebase(time);
     mode = ContactMode::following;
-    const OdeState y{eta, eta_rate / speed_scale, work / energy_scale, 0, 0};
+    work_seed = work_closed.value() / energy_scale;
+    const OdeState y{eta, eta_rate / speed_scale, work_seed, 0, 0};
     integ->reset(following_ode, time, y);
     t = segment_start = time;
     follow_hist.clear();
-    FollowingMotion f = model.following(crank.at(time), eta, eta_rate, wall);
+    FollowingMotion f = model.following(crank_at(time), eta, eta_rate, wall);
     follow_hist.push_back({time, follow_value(f), f.slip_speed_m_s});
   }
 
-  void begin_free(double time, const LinkMotion& links, double work) {
+  /// Starts a free flight at local `time` (the origin moves there).
+  void begin_free(double time, const LinkMotion& links) {
+    time = rebase(time);
     mode = ContactMode::free_flight;
-    const OdeState y = free_state(time, links, work);
+    const OdeState y = free_state(time, links);
+    work_seed = y[4];
     integ->reset(free_ode, time, y);
     t = segment_start = time;
-    const BearingState b = model.bearing(crank.at(time), links);
+    const BearingState b = model.bearing(crank_at(time), links);
     armed = -b.gap_m < -arm_depth;
     free_prev = {time, -b.gap_m, b.normal_speed_m_s};
   }
 
   /// The following-mode coordinates of a link motion on the contact circle.
   void to_following(double time, const LinkMotion& m, double& eta, double& eta_rate) const {
-    const CrankState c = crank.at(time);
+    const CrankState c = crank_at(time);
     const BearingState b = model.bearing(c, m);
     const Rig& rig = model.rig();
     const Vec2 u2 = unit(c.angle_rad);
@@ -376,27 +434,27 @@ struct ClearanceSimulator::Impl {
   }
 
   /// Pin on the wall after an impact: free flight, or settle into following.
-  ContactMode after_contact(double time, const LinkMotion& links, double work) {
-    const CrankState c = crank.at(time);
+  ContactMode after_contact(double time, const LinkMotion& links) {
+    const CrankState c = crank_at(time);
     const BearingState b = model.bearing(c, links);
     if (b.normal_speed_m_s < -settings.settle_speed_m_s) {
-      begin_free(time, links, work);
+      begin_free(time, links);
       return mode;
     }
     // Remove the remaining normal speed with a plastic impulse (projection
     // onto φ̇ = 0 in the kinetic metric), then ask the following mode.
     const ImpactResult settle = resolve_settle(c, links);
     ++diag.settles;
-    work_impulse += c.speed_rad_s * settle.motor_impulse_Nms;
-    loss += settle.energy_loss_J;
+    work_impulse.add(c.speed_rad_s * settle.motor_impulse_Nms);
+    loss.add(settle.energy_loss_J);
     double eta, eta_rate;
     to_following(time, settle.after, eta, eta_rate);
     choose_slip(c, eta, eta_rate);
     const FollowingMotion f = model.following(c, eta, eta_rate, wall);
     if (f.normal_force_N > -force_guard) {
-      begin_following(time, eta, eta_rate, work);
+      begin_following(time, eta, eta_rate);
     } else {
-      begin_free(time, f.links, work);
+      begin_free(time, f.links);
       armed = false;
     }
     return mode;
@@ -422,7 +480,7 @@ struct ClearanceSimulator::Impl {
     const double stuck_rate = h4 / (1.0 - g4);
     const FollowingMotion f = model.following(c, eta, stuck_rate, {wall.mu, 0});
     if (std::abs(f.tangential_force_N) <= wall.mu * f.normal_force_N) {
-      friction_loss += energy_of_links(c, m) - energy_of_links(c, f.links);
+      friction_loss.add(energy_of_links(c, m) - energy_of_links(c, f.links));
       eta_rate = stuck_rate;
       wall.slip = 0;
       ++diag.sticks;
@@ -442,13 +500,13 @@ struct ClearanceSimulator::Impl {
 
   // ---- books -------------------------------------------------------------------
 
-  double energy(double time, const LinkMotion& m) const { return energy_of_links(crank.at(time), m); }
+  double energy(double time, const LinkMotion& m) const { return energy_of_links(crank_at(time), m); }
   double energy_of_links(const CrankState& c, const LinkMotion& m) const {
     return model.kinetic_energy_J(c, m) + model.potential_energy_J(c, m);
   }
 
   int revolution_of(double time) const {
-    const double turns = (crank.at(time).angle_rad - rev_origin) * rev_dir / units::kTwoPi;
+    const double turns = (crank.at(absolute(time)).angle_rad - rev_origin) * rev_dir / units::kTwoPi;
     return static_cast<int>(std::floor(turns + 1e-12));
   }
 
@@ -474,9 +532,9 @@ struct ClearanceSimulator::Impl {
     double a = ta;
     for (;;) {
       RevolutionRecord& r = revolution(k);
-      const double b = std::min(tb, r.end_time_s);
+      const double end = local(r.end_time_s);
+      const double b = std::min(tb, end);
       if (b > a) (mode == ContactMode::following ? r.following_time_s : r.free_time_s) += b - a;
-      const double end = r.end_time_s;
       if (end > tb) break;
       // Reached the start of turn k + 1: record its state once.
       RevolutionRecord& next = revolution(k + 1);
@@ -489,16 +547,18 @@ struct ClearanceSimulator::Impl {
 
   void record_start_state(RevolutionRecord& r) {
     OdeState y;
-    integ->interpolate(r.start_time_s, y);
-    const LinkMotion m = links_at(r.start_time_s, y);
-    const OdeState f = free_state(r.start_time_s, m, 0);
+    const double start = local(r.start_time_s);
+    integ->interpolate(start, y);
+    const LinkMotion m = links_at(start, y);
+    const OdeState f = free_state(start, m);
     r.start_state = {f[0], f[1], f[2], f[3]};
     r.start_mode = mode;
     r.has_start_state = true;
   }
 
+  /// Local time of statistics grid point i.
   double stat_time(long long i) const {
-    return crank.time_at_angle(rev_origin + rev_dir * units::kTwoPi * static_cast<double>(i) / stats_per_turn);
+    return local(crank.time_at_angle(rev_origin + rev_dir * units::kTwoPi * static_cast<double>(i) / stats_per_turn));
   }
 
   /// α3 − α3,nominal at the statistics grid points up to `up_to`, booked per turn.
@@ -508,7 +568,7 @@ struct ClearanceSimulator::Impl {
       if (ts < segment_start) continue;  // before the start
       OdeState y;
       integ->interpolate(ts, y);
-      const CrankState c = crank.at(ts);
+      const CrankState c = crank_at(ts);
       double a3, a4;
       if (mode == ContactMode::following) {
         a3 = model.following(c, eta_of(y), eta_rate_of(y), wall).alpha3_rad_s2;
@@ -524,18 +584,20 @@ struct ClearanceSimulator::Impl {
   }
 
   void emit_samples(double up_to) {
-    while (next_sample < sample_times.size() && sample_times[next_sample] <= up_to) {
+    while (next_sample < sample_times.size() && local(sample_times[next_sample]) <= up_to) {
       samples.push_back(sample(sample_times[next_sample]));
       ++next_sample;
     }
   }
 
-  ClearanceSample sample(double time) {
+  /// The sample at an absolute time (reported with the absolute crank angle).
+  ClearanceSample sample(double absolute_time) {
+    const double time = local(absolute_time);
     OdeState y;
     integ->interpolate(time, y);
     ClearanceSample s;
-    s.time_s = time;
-    s.crank = crank.at(time);
+    s.time_s = absolute_time;
+    s.crank = crank_at(time);
     s.mode = mode;
     if (mode == ContactMode::following) {
       const FollowingMotion f = model.following(s.crank, eta_of(y), eta_rate_of(y), wall);
@@ -555,6 +617,7 @@ struct ClearanceSimulator::Impl {
     s.kinetic_energy_J = model.kinetic_energy_J(s.crank, s.links);
     s.potential_energy_J = model.potential_energy_J(s.crank, s.links);
     monitor(b);
+    s.crank.angle_rad = crank.at(absolute_time).angle_rad;
     return s;
   }
 
@@ -569,7 +632,7 @@ struct ClearanceSimulator::Impl {
   }
 
   void check_energy(double time, const LinkMotion& m, double work, double friction) {
-    const double r = energy(time, m) - diag.energy_start_J - work - work_impulse + loss + friction;
+    const double r = energy(time, m) - diag.energy_start_J - work - work_impulse.value() + loss.value() + friction;
     diag.max_energy_residual_J = std::max(diag.max_energy_residual_J, std::abs(r));
   }
 
@@ -577,7 +640,7 @@ struct ClearanceSimulator::Impl {
     zeno_count = time - last_event < kZenoSpan_s ? zeno_count + 1 : 0;
     last_event = time;
     if (zeno_count > kZenoLimit)
-      throw RunError("clearance model: events pile up at t = " + std::to_string(time) +
+      throw RunError("clearance model: events pile up at t = " + std::to_string(absolute(time)) +
                      " s without progress; raise [clearance] settle_speed_mm_s");
   }
 
@@ -588,13 +651,14 @@ struct ClearanceSimulator::Impl {
     integ->interpolate(time, y);
     const double work = work_of(y);
     const LinkMotion before = free_links(time, y);
-    const CrankState c = crank.at(time);
+    const CrankState c = crank_at(time);
     const BearingState b = model.bearing(c, before);
     monitor(b);
-    check_energy(time, before, work, friction_loss);
+    check_energy(time, before, work, friction_loss.value());
+    close_segment(y);
     ImpactRecord rec;
-    rec.time_s = time;
-    rec.crank_angle_rad = c.angle_rad;
+    rec.time_s = absolute(time);
+    rec.crank_angle_rad = crank.at(rec.time_s).angle_rad;
     rec.eta_rad = std::atan2(b.normal.y, b.normal.x);
     rec.result = resolve_impact(model, c, before, law);
     rec.revolution = revolutions_on ? revolution_of(time) : 0;
@@ -602,14 +666,14 @@ struct ClearanceSimulator::Impl {
     (counted ? diag.impacts : diag.touches) += 1;
     if (rec.result.degenerate) ++diag.degenerate_impacts;
     if (rec.result.energy_loss_J < -1e-15 * energy_scale) ++diag.energy_gaining_impacts;
-    work_impulse += c.speed_rad_s * rec.result.motor_impulse_Nms;
-    loss += rec.result.energy_loss_J;
+    work_impulse.add(c.speed_rad_s * rec.result.motor_impulse_Nms);
+    loss.add(rec.result.energy_loss_J);
     if (revolutions_on && counted && rec.revolution >= 0) {
       RevolutionRecord& r = revolution(rec.revolution);
       ++r.impacts;
       r.sum_normal_impulse_Ns += rec.result.normal_impulse_Ns;
     }
-    rec.mode_after = after_contact(time, rec.result.after, work);
+    rec.mode_after = after_contact(time, rec.result.after);
     if (counted) impacts.push_back(rec);
   }
 
@@ -617,15 +681,15 @@ struct ClearanceSimulator::Impl {
     OdeState y;
     integ->interpolate(time, y);
     const double work = work_of(y);
-    const LinkMotion m = model.following_links(crank.at(time), eta_of(y), eta_rate_of(y));
+    const LinkMotion m = model.following_links(crank_at(time), eta_of(y), eta_rate_of(y));
     check_energy(time, m, work, friction_of(y));
-    friction_loss = friction_of(y);
+    close_segment(y);
     ++diag.contact_losses;
     if (revolutions_on) {
       const int k = revolution_of(time);
       if (k >= 0) ++revolution(k).contact_losses;
     }
-    begin_free(time, m, work);
+    begin_free(time, m);
     armed = false;
   }
 
@@ -635,13 +699,13 @@ struct ClearanceSimulator::Impl {
   void handle_following_event(double time) {
     OdeState y;
     integ->interpolate(time, y);
-    const CrankState c = crank.at(time);
+    const CrankState c = crank_at(time);
     double eta = eta_of(y), eta_rate = eta_rate_of(y);
     const FollowingMotion f = model.following(c, eta, eta_rate, wall);
     if (wall.mu == 0 || f.normal_force_N + force_guard <= follow_value(f)) return handle_loss(time);
     const double work = work_of(y);
     check_energy(time, f.links, work, friction_of(y));
-    friction_loss = friction_of(y);
+    close_segment(y);
     if (wall.slip != 0) {
       ++diag.slip_stops;
       choose_slip(c, eta, eta_rate);
@@ -649,13 +713,36 @@ struct ClearanceSimulator::Impl {
       wall.slip = f.tangential_force_N > 0 ? -1 : 1;  // friction at μ·N cannot hold: slide
       slip_armed = false;
     }
-    begin_following(time, eta, eta_rate, work);
+    begin_following(time, eta, eta_rate);
   }
 
   // ---- the main loop -----------------------------------------------------------------
 
-  void advance_to(double t_end) {
-    while (t < t_end) {
+  /// Restarts the open segment at the current time `t` (the end of a step):
+  /// same mode and state, new origin, integrals booked.
+  void restart_segment() {
+    OdeState y;
+    integ->interpolate(t, y);
+    const double time = t;
+    if (mode == ContactMode::following) {
+      const double eta = eta_of(y), eta_rate = eta_rate_of(y);
+      close_segment(y);
+      begin_following(time, eta, eta_rate);
+    } else {
+      const LinkMotion m = free_links(time, y);
+      const bool was_armed = armed;
+      close_segment(y);
+      begin_free(time, m);
+      armed = was_armed;
+    }
+  }
+
+  void advance_to(double absolute_end) {
+    for (;;) {
+      const double t_end = local(absolute_end);  // the origin moves with each segment
+      if (!(t < t_end)) break;
+      if (t == integ->current_time() && (t - segment_start) * speed_scale > kRestartTurns * units::kTwoPi)
+        restart_segment();
       double tb = integ->current_time();
       if (tb <= t) {
         following_ode.clear();
@@ -694,13 +781,21 @@ struct ClearanceSimulator::Impl {
     free_ode.s = this;
     stage_filter = integ->stages_inside_step();
     diag.energy_scale_J = energy_scale;
+    prepare_origin(t0);
   }
 
-  void after_start(double t0) {
+  /// Moves the origin to the absolute start time t0 (local time 0).
+  void prepare_origin(double t0) {
+    origin = t0;
+    t = segment_start = 0;
+    last_event = -1e300;
+  }
+
+  void after_start() {
     OdeState y;
-    integ->interpolate(t0, y);
-    diag.energy_start_J = energy(t0, links_at(t0, y));
-    if (revolutions_on) record_start_state(revolution(std::max(0, revolution_of(t0))));
+    integ->interpolate(t, y);
+    diag.energy_start_J = energy(t, links_at(t, y));
+    if (revolutions_on) record_start_state(revolution(std::max(0, revolution_of(t))));
   }
 };
 
@@ -732,45 +827,45 @@ void ClearanceSimulator::start_nominal(double t0) {
   // Clearance link along the nominal bearing force (thesis sec. 3.4): the
   // bushing pushes the pin along −n, so n = −F_nominal/|F_nominal|.
   auto direction = [&](double time) {
-    const NominalMotion nm = solve_motion(rig, s.crank.at(time));
+    const NominalMotion nm = solve_motion(rig, s.crank_at(time));
     const Vec2 f = solve_loads(rig, nm).bearing_N;
     return std::atan2(-f.y, -f.x);
   };
-  const double eta0 = direction(t0);
+  const double eta0 = direction(0.0);  // local times from here on
   // Its rate by a 4th-order central difference of the nominal force angle.
   const double h = 1e-4 / s.speed_scale;
   auto rel = [&](double time) { return eta0 + std::remainder(direction(time) - eta0, units::kTwoPi); };
-  const double rate = (rel(t0 - 2 * h) - 8 * rel(t0 - h) + 8 * rel(t0 + h) - rel(t0 + 2 * h)) / (12 * h);
-  const CrankState c = s.crank.at(t0);
+  const double rate = (rel(-2 * h) - 8 * rel(-h) + 8 * rel(h) - rel(2 * h)) / (12 * h);
+  const CrankState c = s.crank_at(0.0);
   double eta_rate = rate;
   s.choose_slip(c, eta0, eta_rate);
   const FollowingMotion f = s.model.following(c, eta0, eta_rate, s.wall);
   if (f.normal_force_N > -s.force_guard) {
-    s.begin_following(t0, eta0, eta_rate, 0.0);
+    s.begin_following(0.0, eta0, eta_rate);
   } else {
-    s.begin_free(t0, f.links, 0.0);
+    s.begin_free(0.0, f.links);
     s.armed = false;
   }
-  s.after_start(t0);
+  s.after_start();
 }
 
 void ClearanceSimulator::start_following(double t0, double eta_rad, double eta_rate_rad_s) {
   impl_->prepare(t0);
   double eta_rate = eta_rate_rad_s;
-  impl_->choose_slip(impl_->crank.at(t0), eta_rad, eta_rate);
-  impl_->begin_following(t0, eta_rad, eta_rate, 0.0);
-  impl_->after_start(t0);
+  impl_->choose_slip(impl_->crank_at(0.0), eta_rad, eta_rate);
+  impl_->begin_following(0.0, eta_rad, eta_rate);
+  impl_->after_start();
 }
 
 void ClearanceSimulator::start_free(double t0, const LinkMotion& links) {
   impl_->prepare(t0);
-  impl_->begin_free(t0, links, 0.0);
-  impl_->after_start(t0);
+  impl_->begin_free(0.0, links);
+  impl_->after_start();
 }
 
 void ClearanceSimulator::advance_to(double t_end) { impl_->advance_to(t_end); }
 
-double ClearanceSimulator::time() const { return impl_->t; }
+double ClearanceSimulator::time() const { return impl_->absolute(impl_->t); }
 ContactMode ClearanceSimulator::mode() const { return impl_->mode; }
 
 LinkMotion ClearanceSimulator::current_links() {
@@ -793,11 +888,11 @@ ClearanceDiagnostics ClearanceSimulator::diagnostics() {
   s.check_energy(s.t, m, work, friction);
   ClearanceDiagnostics d = s.diag;
   d.crank_work_J = work;
-  d.motor_impulse_work_J = s.work_impulse;
-  d.impact_loss_J = s.loss;
+  d.motor_impulse_work_J = s.work_impulse.value();
+  d.impact_loss_J = s.loss.value();
   d.energy_end_J = s.energy(s.t, m);
   d.friction_loss_J = friction;
-  d.energy_residual_J = d.energy_end_J - d.energy_start_J - work - s.work_impulse + s.loss + friction;
+  d.energy_residual_J = d.energy_end_J - d.energy_start_J - work - d.motor_impulse_work_J + d.impact_loss_J + friction;
   d.steps = s.integ->steps();
   return d;
 }
