@@ -5,7 +5,7 @@
 #   ./scripts/fuzz.sh [SECONDS] [TARGET...]
 #
 # Builds the fuzz targets of tests/fuzz in build-fuzz/ (clang, FOURBAR_FUZZ=ON)
-# and runs each target, one after the other on one core (-jobs=1), for
+# and runs each target, one after the other in one process (one core), for
 # SECONDS (default 60) from its seed corpus tests/fuzz/corpus/<target>/.
 # New inputs go to build-fuzz/corpus/<target>/ (the seeds stay small);
 # crashes of this run to build-fuzz/crashes/<target>/. A crash input belongs in
@@ -32,7 +32,7 @@ for t in "${targets[@]}"; do
   rm -rf "$crashes"  # only this run's crashes are counted (fixed ones live in tests/fuzz/regressions/)
   mkdir -p "$corpus" "$crashes"
   set +e
-  "build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -jobs=1 -workers=1 -max_len=8192 -rss_limit_mb=2048 \
+  "build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=2048 \
     -timeout=10 -artifact_prefix="$crashes/" -print_final_stats=1 "$corpus" "tests/fuzz/corpus/$t" >"$log" 2>&1
   rc=$?
   set -e
