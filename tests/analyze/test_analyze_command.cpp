@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "support/csv_file.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -20,27 +21,8 @@ using testing::TempDir;
 
 const std::string kExample = FOURBAR_SOURCE_DIR "/data/scenes/thesis_virtual_rig_350rpm.toml";
 
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-};
-Csv read_csv(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  Csv c;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream ss(line);
-    std::string cell;
-    if (c.header.empty()) {
-      while (std::getline(ss, cell, ',')) c.header.push_back(cell);
-      continue;
-    }
-    c.rows.emplace_back();
-    while (std::getline(ss, cell, ',')) c.rows.back().push_back(std::strtod(cell.c_str(), nullptr));
-  }
-  return c;
-}
+using testing::Csv;
+using testing::read_csv;
 
 class AnalyzeCommand : public ::testing::Test {
  protected:

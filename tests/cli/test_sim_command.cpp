@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/csv_file.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -17,29 +18,8 @@ using testing::replace;
 using testing::run_fourbar;
 using testing::TempDir;
 
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-};
-
-Csv read_csv(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  Csv csv;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream ss(line);
-    std::string cell;
-    if (csv.header.empty()) {
-      while (std::getline(ss, cell, ',')) csv.header.push_back(cell);
-      continue;
-    }
-    std::vector<double> row;
-    while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
-    csv.rows.push_back(row);
-  }
-  return csv;
-}
+using testing::Csv;
+using testing::read_csv;
 
 // Golden: the thesis rig at 350 rpm. Tolerance: 1e-9 relative to each
 // column's peak, far below physical meaning, far above libm differences.
