@@ -88,7 +88,10 @@ class SndfileReader final : public Reader {
 
   void rewind() override {
     if (sf_seek(handle_.get(), 0, SEEK_SET) != 0)
-      throw RunError(info_.file.string() + ": cannot seek back to the start (" + sf_strerror(handle_.get()) + ")");
+      // On a regular file this means the stream cannot be decoded again from
+      // the start (seen with FLAC cut short after its first frames).
+      throw InputError(info_.file.string() + ": truncated or damaged recording: cannot seek back to the start (" +
+                       sf_strerror(handle_.get()) + "); copy the file again from the DAQ");
     position_ = 0;
   }
 

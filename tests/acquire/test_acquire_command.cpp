@@ -148,6 +148,14 @@ TEST_F(BadInput, TruncatedFile) {
   expect_clean_failure(acquire(rec), "truncated");
 }
 
+// Cut just after the header: a FLAC decoder then fails when acquire seeks
+// back for its next pass, which is still a truncated file, not a run failure.
+TEST_F(BadInput, FlacCutAfterHeader) {
+  const auto rec = recording("REC.flac");
+  std::filesystem::resize_file(rec, 3000);
+  expect_clean_failure(acquire(rec), "truncated");
+}
+
 TEST_F(BadInput, ChannelIndexOutOfRange) {
   const auto rec = recording("REC.wav");
   edit_manifest(rec, "index = 2", "index = 9");
