@@ -7,7 +7,7 @@
 
 #include "acquire/crank_angle.hpp"
 #include "acquire/edge_detector.hpp"
-#include "acquire/progress.hpp"
+#include "common/progress.hpp"
 #include "acquire/revolution_builder.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"

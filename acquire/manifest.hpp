@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "acquire/reader.hpp"
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 

@@ -5,7 +5,7 @@
 #include <numeric>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 

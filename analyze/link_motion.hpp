@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "analyze/sensor_mount.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 

@@ -13,7 +13,7 @@
 
 #include <string>
 
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 

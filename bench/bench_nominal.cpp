@@ -4,7 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinetostatics.hpp"
+#include "mechanism/kinetostatics.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/outputs.hpp"
 

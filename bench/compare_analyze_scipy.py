@@ -22,7 +22,7 @@ import scipy.fft as sfft
 
 
 def nominal(rig, theta2, w2, a2):
-    """Closed-form pose, rates and crank-pin acceleration (sim/nominal/kinematics.cpp)."""
+    """Closed-form pose, rates and crank-pin acceleration (mechanism/kinematics.cpp)."""
     l1, l2, l3, l4, branch = rig["l1"], rig["l2"], rig["l3"], rig["l4"], rig["branch"]
     u2x, u2y = np.cos(theta2), np.sin(theta2)
     vx, vy = l1 - l2 * u2x, -l2 * u2y

@@ -21,7 +21,7 @@
 #include <tuple>
 
 #include "common/units.hpp"
-#include "sim/virtual_rig/virtual_rig.hpp"
+#include "virtual_rig/virtual_rig.hpp"
 
 namespace fourbar::bench {
 

@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
-#include "sim/rig_report.hpp"
+#include "mechanism/rig_report.hpp"
 
 namespace po = boost::program_options;
 

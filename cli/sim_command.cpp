@@ -12,7 +12,7 @@
 #include "sim/clearance/run.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/outputs.hpp"
-#include "sim/rig_report.hpp"
+#include "mechanism/rig_report.hpp"
 
 namespace po = boost::program_options;
 

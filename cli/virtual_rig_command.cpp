@@ -11,8 +11,8 @@
 #include "common/error.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
-#include "sim/virtual_rig/clearance_motion_source.hpp"
-#include "sim/virtual_rig/virtual_rig.hpp"
+#include "virtual_rig/clearance_motion_source.hpp"
+#include "virtual_rig/virtual_rig.hpp"
 
 namespace po = boost::program_options;
 

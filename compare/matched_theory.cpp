@@ -8,7 +8,7 @@
 #include "common/units.hpp"
 #include "sim/clearance/crank_motion.hpp"
 #include "sim/clearance/simulator.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 

@@ -25,7 +25,7 @@
 #include "analyze/filter_design.hpp"
 #include "compare/link_quantity.hpp"
 #include "sim/clearance/settings.hpp"
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 

@@ -11,7 +11,7 @@
 #include <toml++/toml.h>
 
 #include "sim/clearance/settings.hpp"
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 

@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 

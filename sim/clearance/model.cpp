@@ -7,7 +7,7 @@
 #include <string>
 
 #include "common/error.hpp"
-#include "sim/nominal/kinetostatics.hpp"
+#include "mechanism/kinetostatics.hpp"
 
 namespace fourbar {
 

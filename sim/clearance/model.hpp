@@ -17,9 +17,9 @@
 // A contact force P on the pin (and −P on the rocker at B) adds the
 // generalised forces Q3 = P·(l3·u3⊥), Q4 = −P·((B − O4)⊥).
 
-#include "sim/nominal/kinematics.hpp"
-#include "sim/rig.hpp"
-#include "sim/vec2.hpp"
+#include "mechanism/kinematics.hpp"
+#include "mechanism/rig.hpp"
+#include "mechanism/vec2.hpp"
 
 namespace fourbar {
 

@@ -11,7 +11,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
-#include "sim/nominal/kinetostatics.hpp"
+#include "mechanism/kinetostatics.hpp"
 
 namespace fourbar {
 

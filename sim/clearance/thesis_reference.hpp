@@ -4,7 +4,7 @@
 // 3.3-8) in the thesis unknowns, and the explicit impact solutions (eq. 5.4-2,
 // 5.4-3) in the μ notation of eq. 5.3-1 with the ρ/α construction of sec. 5.2.
 
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinetostatics.hpp"
+#include "mechanism/kinetostatics.hpp"
 #include "sim/outputs.hpp"
 
 namespace fourbar {

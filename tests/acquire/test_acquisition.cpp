@@ -9,8 +9,8 @@
 #include "acquire/acquisition.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
-#include "sim/virtual_rig/recording_writer.hpp"
-#include "sim/virtual_rig/sensor_signal.hpp"
+#include "virtual_rig/recording_writer.hpp"
+#include "virtual_rig/sensor_signal.hpp"
 #include "virtual_recording.hpp"
 
 namespace fourbar {

@@ -7,7 +7,7 @@
 
 #include "acquire/crank_angle.hpp"
 #include "common/units.hpp"
-#include "sim/virtual_rig/motion_source.hpp"
+#include "virtual_rig/motion_source.hpp"
 
 namespace fourbar {
 namespace {

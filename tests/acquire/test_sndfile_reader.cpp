@@ -8,7 +8,7 @@
 #include "acquire/reader.hpp"
 #include "acquire/sndfile_formats.hpp"
 #include "common/error.hpp"
-#include "sim/virtual_rig/recording_writer.hpp"
+#include "virtual_rig/recording_writer.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fourbar {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/units.hpp"
-#include "sim/virtual_rig/virtual_rig.hpp"
+#include "virtual_rig/virtual_rig.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fourbar::testing {

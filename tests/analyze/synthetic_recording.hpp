@@ -2,7 +2,7 @@
 // A record for the analyze tests and benches that work below acquire (plain
 // samples with their crank state, no file): the virtual rig's crank drive
 // (slow ±1 % speed wander by default) and nominal motion, its sensor model
-// (sim/virtual_rig/sensor_signal.hpp: specific force at the mounting point,
+// (virtual_rig/sensor_signal.hpp: specific force at the mounting point,
 // a formulation independent of analyze's conversion) times the axis sign,
 // an AC-coupled sensor as a first-order high-pass in steady state, white
 // noise at a given SNR and mains hum. Seeded. End-to-end tests go through
@@ -17,8 +17,8 @@
 #include "analyze/conversion.hpp"
 #include "analyze/filter_design.hpp"
 #include "common/units.hpp"
-#include "sim/virtual_rig/motion_source.hpp"
-#include "sim/virtual_rig/sensor_signal.hpp"
+#include "virtual_rig/motion_source.hpp"
+#include "virtual_rig/sensor_signal.hpp"
 
 namespace fourbar::testing {
 

@@ -10,7 +10,7 @@
 
 #include "analyze/integration.hpp"
 #include "common/units.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // Test and bench support: a recording of the thesis rig made by the virtual
-// rig (sim/virtual_rig), and the truth on analyze's crank-angle grid, from
+// rig (virtual_rig/), and the truth on analyze's crank-angle grid, from
 // the same crank drive and nominal mechanism that made the recording.
 
 #include <cmath>

@@ -6,7 +6,7 @@
 #include "compare/matched_theory.hpp"
 #include "compare/metrics.hpp"
 #include "compare/recording_comparison.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 namespace {

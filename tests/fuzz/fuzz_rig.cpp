@@ -1,8 +1,8 @@
-// Fuzz target: the rig loader (sim/rig.cpp, common/toml_section.cpp).
+// Fuzz target: the rig loader (mechanism/rig.cpp, common/toml_section.cpp).
 #include "common/error.hpp"
 #include "fuzz_support.hpp"
-#include "sim/rig.hpp"
-#include "sim/rig_report.hpp"
+#include "mechanism/rig.hpp"
+#include "mechanism/rig_report.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace fourbar;

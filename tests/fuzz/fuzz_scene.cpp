@@ -1,10 +1,10 @@
 // Fuzz target: the scene loader with its [clearance] table (sim/scene.cpp,
 // sim/clearance/settings.cpp) and the virtual rig's [recording] table
-// (sim/virtual_rig/recording_spec.cpp). The scene may name "rig.toml".
+// (virtual_rig/recording_spec.cpp). The scene may name "rig.toml".
 #include "common/error.hpp"
 #include "fuzz_support.hpp"
 #include "sim/scene.hpp"
-#include "sim/virtual_rig/recording_spec.hpp"
+#include "virtual_rig/recording_spec.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace fourbar;

@@ -26,8 +26,8 @@
 
 #include "common/units.hpp"
 #include "sim/clearance/simulator.hpp"
-#include "sim/rig.hpp"
-#include "sim/rig_report.hpp"
+#include "mechanism/rig.hpp"
+#include "mechanism/rig_report.hpp"
 
 namespace fourbar::stress {
 

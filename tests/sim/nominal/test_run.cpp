@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinetostatics.hpp"
+#include "mechanism/kinetostatics.hpp"
 #include "sim/nominal/run.hpp"
 
 namespace fourbar {

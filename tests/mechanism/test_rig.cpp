@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.hpp"
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fourbar {

@@ -15,7 +15,7 @@
 
 #include "sim/clearance/settings.hpp"
 #include "sim/clearance/simulator.hpp"
-#include "sim/virtual_rig/motion_source.hpp"
+#include "virtual_rig/motion_source.hpp"
 
 namespace fourbar {
 

@@ -8,8 +8,8 @@
 
 #include <array>
 
-#include "sim/rig.hpp"
-#include "sim/vec2.hpp"
+#include "mechanism/rig.hpp"
+#include "mechanism/vec2.hpp"
 
 namespace fourbar {
 

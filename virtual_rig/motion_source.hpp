@@ -6,8 +6,8 @@
 
 #include <memory>
 
-#include "sim/nominal/kinematics.hpp"
-#include "sim/rig.hpp"
+#include "mechanism/kinematics.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 

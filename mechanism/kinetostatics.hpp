@@ -10,7 +10,7 @@
 //    of eq. 3.3-7/3.3-8 with the clearance link removed), solved as a dense
 //    5×5 system (reference path, used to check the first).
 
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 

@@ -1,4 +1,4 @@
-#include "sim/virtual_rig/virtual_rig.hpp"
+#include "virtual_rig/virtual_rig.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,14 +7,14 @@
 #include <random>
 
 #include "acquire/manifest.hpp"
-#include "acquire/progress.hpp"
+#include "common/progress.hpp"
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "common/version.hpp"
-#include "sim/virtual_rig/recording_writer.hpp"
-#include "sim/virtual_rig/sensor_signal.hpp"
+#include "virtual_rig/recording_writer.hpp"
+#include "virtual_rig/sensor_signal.hpp"
 
 namespace fourbar {
 

@@ -1,4 +1,4 @@
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 #include <algorithm>
 #include <cassert>

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "common/units.hpp"
-#include "sim/virtual_rig/sensor_signal.hpp"
-#include "sim/vec2.hpp"
+#include "virtual_rig/sensor_signal.hpp"
+#include "mechanism/vec2.hpp"
 
 namespace fourbar {
 namespace {

@@ -1,4 +1,4 @@
-#include "sim/nominal/kinetostatics.hpp"
+#include "mechanism/kinetostatics.hpp"
 
 #include <Eigen/Dense>
 

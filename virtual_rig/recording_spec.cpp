@@ -1,4 +1,4 @@
-#include "sim/virtual_rig/recording_spec.hpp"
+#include "virtual_rig/recording_spec.hpp"
 
 #include <cmath>
 #include <limits>

@@ -7,7 +7,7 @@
 #include "common/units.hpp"
 #include "sim/clearance/crank_motion.hpp"
 #include "sim/clearance/simulator.hpp"
-#include "sim/virtual_rig/clearance_motion_source.hpp"
+#include "virtual_rig/clearance_motion_source.hpp"
 
 namespace fourbar {
 namespace {

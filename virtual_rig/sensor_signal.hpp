@@ -12,8 +12,8 @@
 // kinematics without gravity and for s = link length, d = 0.)
 
 #include "acquire/manifest.hpp"
-#include "sim/rig.hpp"
-#include "sim/virtual_rig/motion_source.hpp"
+#include "mechanism/rig.hpp"
+#include "virtual_rig/motion_source.hpp"
 
 namespace fourbar {
 

@@ -1,4 +1,4 @@
-#include "sim/virtual_rig/recording_writer.hpp"
+#include "virtual_rig/recording_writer.hpp"
 
 #include <sndfile.h>
 #include <unistd.h>

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinetostatics.hpp"
+#include "mechanism/kinetostatics.hpp"
 
 namespace fourbar {
 namespace {

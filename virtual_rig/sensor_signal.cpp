@@ -1,6 +1,6 @@
-#include "sim/virtual_rig/sensor_signal.hpp"
+#include "virtual_rig/sensor_signal.hpp"
 
-#include "sim/vec2.hpp"
+#include "mechanism/vec2.hpp"
 
 namespace fourbar {
 

@@ -23,8 +23,8 @@
 
 #include "common/provenance.hpp"
 #include "sim/scene.hpp"
-#include "sim/virtual_rig/motion_source.hpp"
-#include "sim/virtual_rig/recording_spec.hpp"
+#include "virtual_rig/motion_source.hpp"
+#include "virtual_rig/recording_spec.hpp"
 
 namespace fourbar {
 

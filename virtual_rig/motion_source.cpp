@@ -1,4 +1,4 @@
-#include "sim/virtual_rig/motion_source.hpp"
+#include "virtual_rig/motion_source.hpp"
 
 #include <cmath>
 

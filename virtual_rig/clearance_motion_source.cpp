@@ -1,4 +1,4 @@
-#include "sim/virtual_rig/clearance_motion_source.hpp"
+#include "virtual_rig/clearance_motion_source.hpp"
 
 #include <algorithm>
 #include <cmath>

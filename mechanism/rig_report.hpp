@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 namespace {

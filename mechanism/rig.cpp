@@ -1,4 +1,4 @@
-#include "sim/rig.hpp"
+#include "mechanism/rig.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,10 +1,10 @@
-#include "sim/rig_report.hpp"
+#include "mechanism/rig_report.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "common/units.hpp"
-#include "sim/nominal/kinematics.hpp"
+#include "mechanism/kinematics.hpp"
 
 namespace fourbar {
 
