@@ -4,6 +4,8 @@
 #include <cmath>
 #include <deque>
 
+#include "common/statistics.hpp"
+
 namespace fourbar {
 
 namespace {
@@ -16,13 +18,6 @@ std::size_t pairs_at(std::span<const double> e, double c) {
     score += it != e.end() && *it <= e[i] + 1.1 * c;
   }
   return score;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
 }
 
 /// The next period from the recent ones: least-squares line through them,

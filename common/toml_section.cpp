@@ -5,17 +5,14 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/format.hpp"
 
 namespace fourbar {
 
 namespace {
 
-std::string format_number(double v) {
-  std::ostringstream os;
-  os.precision(12);
-  os << v;
-  return os.str();
-}
+/// Digits of a number echoed back in a TOML error: all a file may hold that matters.
+constexpr int kTomlEchoDigits = 12;
 
 const char* type_name(const toml::node& n) {
   switch (n.type()) {
@@ -127,7 +124,7 @@ double TomlSection::number(std::string_view key) {
   if (n.is_floating_point()) v = n.as_floating_point()->get();
   if (n.is_integer()) v = static_cast<double>(n.as_integer()->get());
   if (!v) fail(key, std::string("must be a number, not ") + type_name(n));
-  if (!std::isfinite(*v)) fail(key, "must be a finite number, not " + format_number(*v));
+  if (!std::isfinite(*v)) fail(key, "must be a finite number, not " + format_number(*v, kTomlEchoDigits));
   return *v;
 }
 
@@ -138,13 +135,13 @@ std::optional<double> TomlSection::optional_number(std::string_view key) {
 
 double TomlSection::positive(std::string_view key) {
   const double v = number(key);
-  if (!(v > 0)) fail(key, "= " + format_number(v) + " must be positive");
+  if (!(v > 0)) fail(key, "= " + format_number(v, kTomlEchoDigits) + " must be positive");
   return v;
 }
 
 double TomlSection::non_negative(std::string_view key) {
   const double v = number(key);
-  if (!(v >= 0)) fail(key, "= " + format_number(v) + " must not be negative");
+  if (!(v >= 0)) fail(key, "= " + format_number(v, kTomlEchoDigits) + " must not be negative");
   return v;
 }
 
@@ -152,7 +149,7 @@ double TomlSection::in_range(std::string_view key, double lo, double hi, std::op
   if (!has(key) && fallback) return *fallback;
   const double v = number(key);
   if (v < lo || v > hi)
-    fail(key, "= " + format_number(v) + " is outside [" + format_number(lo) + ", " + format_number(hi) + "]");
+    fail(key, "= " + format_number(v, kTomlEchoDigits) + " is outside [" + format_number(lo, kTomlEchoDigits) + ", " + format_number(hi, kTomlEchoDigits) + "]");
   return v;
 }
 

@@ -18,13 +18,6 @@ std::vector<double> minus_row(std::span<const double> rows, std::span<const doub
   return d;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
-
 }  // namespace
 
 std::vector<double> order_amplitudes(std::span<const double> revolutions, std::size_t points_per_rev, int max_order,

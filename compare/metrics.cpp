@@ -15,13 +15,6 @@ double rms_difference(std::span<const double> a, std::span<const double> b) {
   return std::sqrt(s / static_cast<double>(a.size()));
 }
 
-double rms(std::span<const double> x) {
-  if (x.empty()) return 0;
-  double s = 0;
-  for (double v : x) s += v * v;
-  return std::sqrt(s / static_cast<double>(x.size()));
-}
-
 double correlation(std::span<const double> a, std::span<const double> b) {
   assert(a.size() == b.size());
   const double n = static_cast<double>(a.size());

@@ -6,12 +6,12 @@
 #include <span>
 #include <vector>
 
+#include "common/statistics.hpp"  // rms
+
 namespace fourbar {
 
 /// Root mean square of a − b (a, b of equal length).
 double rms_difference(std::span<const double> a, std::span<const double> b);
-/// Root mean square of x.
-double rms(std::span<const double> x);
 /// Pearson correlation of a and b; 0 when either is constant.
 double correlation(std::span<const double> a, std::span<const double> b);
 /// max|a| / max|b|; 0 when b is identically 0.

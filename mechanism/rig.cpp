@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/toml_section.hpp"
 #include "common/units.hpp"
 
@@ -51,12 +52,7 @@ namespace {
 
 std::string where(const Rig& rig) { return rig.source.empty() ? std::string("rig") : rig.source.string(); }
 
-std::string mm(double m) {
-  std::ostringstream os;
-  os.precision(6);
-  os << units::m_to_mm(m) << " mm";
-  return os.str();
-}
+std::string mm(double m) { return format_number(units::m_to_mm(m)) + " mm"; }
 
 void require_positive(const Rig& rig, const char* key, double v) {
   if (!(v > 0) || !std::isfinite(v)) {
