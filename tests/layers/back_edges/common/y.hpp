@@ -1,0 +1,3 @@
+#pragma once
+// an include without its folder
+#include "units.hpp"

@@ -1,0 +1,3 @@
+#pragma once
+// back edge: mechanism (layer 1) includes sim (layer 2)
+#include "sim/scene.hpp"
