@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/clean_failure.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -104,12 +105,7 @@ class BadInput : public ::testing::Test {
   TempDir dir;
   std::filesystem::path out() const { return dir.path() / "out"; }
   void expect_clean_failure(const testing::CommandResult& r, const std::string& needle) {
-    EXPECT_EQ(r.status, 2) << r.err;
-    EXPECT_EQ(count_lines(r.err), 1) << r.err;
-    EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-    const bool empty = !std::filesystem::exists(out()) || std::filesystem::is_empty(out());
-    EXPECT_TRUE(empty) << "something was written into " << out();
+    testing::expect_clean_failure(r, needle, out());
   }
   /// A 4-revolution virtual recording; returns its path.
   std::filesystem::path recording(const std::string& name, const std::string& scene_edit_from = "",

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/csv_file.hpp"
+#include "support/clean_failure.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -48,12 +49,7 @@ class AnalyzeCommand : public ::testing::Test {
     return run_fourbar("analyze " + rec.string() + " " + extra + " --out " + out().string());
   }
   void expect_clean_failure(const testing::CommandResult& r, const std::string& needle) {
-    EXPECT_EQ(r.status, 2) << r.err;
-    EXPECT_EQ(count_lines(r.err), 1) << r.err;
-    EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-    const bool empty = !std::filesystem::exists(out()) || std::filesystem::is_empty(out());
-    EXPECT_TRUE(empty) << "something was written into " << out();
+    testing::expect_clean_failure(r, needle, out());
   }
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "support/clean_failure.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -25,16 +26,8 @@ struct BadCase {
 };
 
 void expect_clean_failure(const BadCase& c, const std::filesystem::path& out_dir) {
-  const auto r = run_fourbar(c.args);
   SCOPED_TRACE("fourbar " + c.args);
-  EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(c.must_mention), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-  // Nothing written: the output folder is empty or absent.
-  if (std::filesystem::exists(out_dir)) EXPECT_TRUE(std::filesystem::is_empty(out_dir)) << out_dir;
+  testing::expect_clean_failure(run_fourbar(c.args), c.must_mention, out_dir);
 }
 
 class BadArguments : public ::testing::Test {

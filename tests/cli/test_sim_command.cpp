@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "support/csv_file.hpp"
+#include "support/clean_failure.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -58,11 +59,7 @@ outputs = ["alpha3_rad_s2"]
     return run_fourbar("sim " + s.string() + " --out " + (dir.path() / "out").string());
   }
   void expect_clean_failure(const testing::CommandResult& r, const std::string& needle) {
-    EXPECT_EQ(r.status, 2) << r.err;
-    EXPECT_EQ(count_lines(r.err), 1) << r.err;
-    EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "series.csv"));
+    testing::expect_clean_failure(r, needle, dir.path() / "out");
   }
 };
 

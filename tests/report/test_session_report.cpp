@@ -4,12 +4,14 @@
 // a manifest are reported and the rest processed; the cache.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
 
 #include <nlohmann/json.hpp>
 
+#include "support/csv_file.hpp"
 #include "support/headless_browser.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
@@ -164,13 +166,69 @@ TEST_F(SessionReport, ClearanceRecordingShowsTheModelsImpactBursts) {
 }
 
 TEST_F(SessionReport, SeriesFilesBesideTheReport) {
+  // The CSV series hold the very numbers summary.json's metrics were computed
+  // from: recomputed here from the files (a second path), they agree.
   const auto out = dir_->path() / "out";
-  const std::string series = testing::read_file(out / "series" / "clearance.csv");
-  EXPECT_NE(series.find("\ncrank_deg,alpha3_measured_rad_s2,alpha3_measured_std_rad_s2,alpha3_clearance_rad_s2"),
-            std::string::npos);
-  EXPECT_GT(testing::count_lines(series), 360);
-  EXPECT_TRUE(std::filesystem::exists(out / "series" / "clearance_orders.csv"));
-  EXPECT_TRUE(std::filesystem::exists(out / "series" / "clearance_impacts.csv"));
+  const json& c = recording("clearance.flac");
+  const testing::Csv series = testing::read_csv(out / "series" / "clearance.csv");
+  ASSERT_GE(series.header.size(), 6u);
+  EXPECT_EQ(series.header[0], "crank_deg");
+  const auto column = [&](const testing::Csv& csv, const std::string& name) {
+    const auto it = std::find(csv.header.begin(), csv.header.end(), name);
+    EXPECT_NE(it, csv.header.end()) << "no column " << name;
+    std::vector<double> v;
+    if (it == csv.header.end()) return v;
+    const auto k = static_cast<std::size_t>(it - csv.header.begin());
+    for (const auto& row : csv.rows) v.push_back(row.at(k));
+    return v;
+  };
+  const std::size_t grid_points = c["analysis"]["points_per_rev"].get<std::size_t>();
+  ASSERT_EQ(series.rows.size(), grid_points);
+  const std::vector<double> crank = column(series, "crank_deg");
+  EXPECT_NEAR(crank[1] - crank[0], 360.0 / static_cast<double>(grid_points), 1e-12);
+  const json& m3 = c["metrics"]["alpha3_rad_s2"];
+  const std::vector<double> measured = column(series, "alpha3_measured_rad_s2");
+  const std::vector<double> nominal = column(series, "alpha3_nominal_rad_s2");
+  std::vector<double> deviation(measured.size());
+  for (std::size_t i = 0; i < measured.size(); ++i) deviation[i] = measured[i] - nominal[i];
+  const auto rms = [](const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s / static_cast<double>(v.size()));
+  };
+  // CSV cells carry 15+ significant digits: 1e-9 relative is round-off.
+  EXPECT_NEAR(rms(measured), m3["measured_rms"].get<double>(), 1e-9 * m3["measured_rms"].get<double>());
+  EXPECT_NEAR(rms(deviation), m3["rms_difference_nominal"].get<double>(),
+              1e-9 * m3["rms_difference_nominal"].get<double>());
+
+  // Orders: one row per order, the factor of each as in summary.json.
+  const testing::Csv orders = testing::read_csv(out / "series" / "clearance_orders.csv");
+  const json& order_list = m3["magnification"]["orders"];
+  ASSERT_EQ(orders.rows.size(), order_list.size());
+  const std::vector<double> order = column(orders, "order"), factor = column(orders, "alpha3_factor");
+  for (std::size_t k = 0; k < orders.rows.size(); ++k) {
+    EXPECT_EQ(order[k], static_cast<double>(k + 1));
+    EXPECT_NEAR(factor[k], order_list[k]["factor"].get<double>(), 1e-9 * std::abs(factor[k]) + 1e-300) << k;
+  }
+
+  // Impacts: per revolution, their normal impulses add up to the model's ΣF.
+  const testing::Csv impacts = testing::read_csv(out / "series" / "clearance_impacts.csv");
+  const json& by_rev = c["theory"]["severity"]["sum_impulse_by_rev_Ns"];
+  const json& count_by_rev = c["theory"]["severity"]["impacts_by_rev"];
+  std::vector<double> sum(by_rev.size(), 0.0);
+  std::vector<int> count(by_rev.size(), 0);
+  const std::vector<double> rev = column(impacts, "revolution"), impulse = column(impacts, "normal_impulse_Ns");
+  for (std::size_t i = 0; i < impacts.rows.size(); ++i) {
+    const auto k = static_cast<std::size_t>(rev[i]);
+    ASSERT_LT(k, sum.size());
+    sum[k] += impulse[i];
+    ++count[k];
+  }
+  ASSERT_GT(impacts.rows.size(), 0u);
+  for (std::size_t k = 0; k < sum.size(); ++k) {
+    EXPECT_EQ(count[k], count_by_rev[k].get<int>()) << "revolution " << k;
+    EXPECT_NEAR(sum[k], by_rev[k].get<double>(), 1e-9 * by_rev[k].get<double>() + 1e-15) << "revolution " << k;
+  }
   EXPECT_FALSE(std::filesystem::exists(out / "series" / "corrupt.csv"));
   const std::string sev = testing::read_file(out / "session_severity.csv");
   EXPECT_EQ(testing::count_lines(sev), 1 + 1 + 2);  // provenance, header, two analysed recordings
