@@ -3,29 +3,22 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
 
 #include "acquire/crank_angle.hpp"
 #include "acquire/edge_detector.hpp"
 #include "common/progress.hpp"
 #include "acquire/revolution_builder.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
 
 namespace {
 
-std::string fmt(double v, int precision = 6) {
-  std::ostringstream os;
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
-
 std::string time_list(const std::vector<double>& times, std::size_t max_shown = 5) {
   std::string s;
-  for (std::size_t i = 0; i < std::min(times.size(), max_shown); ++i) s += (i ? ", " : "") + fmt(times[i]) + " s";
+  for (std::size_t i = 0; i < std::min(times.size(), max_shown); ++i) s += (i ? ", " : "") + format_number(times[i]) + " s";
   if (times.size() > max_shown) s += ", …";
   return s;
 }
@@ -144,7 +137,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
       for (std::size_t c = 0; c < nch; ++c)
         if (!std::isfinite(frame[c]))
           throw InputError(info.file.string() + ": channel " + std::to_string(c) + " holds a non-finite value at frame " +
-                           std::to_string(first + f) + " (t = " + fmt(t0 + static_cast<double>(first + f) / fs) +
+                           std::to_string(first + f) + " (t = " + format_number(t0 + static_cast<double>(first + f) / fs) +
                            " s); the recording is damaged");
       for (std::size_t a = 0; a < nacc; ++a) {
         const double raw = frame[cal[a].index];
@@ -175,7 +168,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     report.thresholds = *automatic;
   } else {
     throw InputError(info.file.string() + ": no crank pulses: " + pulse_label +
-                     " has no two distinct levels (it spans " + fmt(pulse_acc.min) + " to " + fmt(pulse_acc.max) +
+                     " has no two distinct levels (it spans " + format_number(pulse_acc.min) + " to " + format_number(pulse_acc.max) +
                      " V); check the channel index in " + manifest.file.string() +
                      " and the pickup, or set threshold_low_V/threshold_high_V");
   }
@@ -191,8 +184,8 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
                                 "polarity = \"" + (idle_high ? "falling" : "rising") + "\"");
   }
   if (automatic && automatic->noise > 0.1 * (automatic->top_level - automatic->bottom_level))
-    report.warnings.push_back(pulse_label + " is noisy (noise " + fmt(automatic->noise) + " V against a swing of " +
-                              fmt(automatic->top_level - automatic->bottom_level) + " V); hysteresis widened");
+    report.warnings.push_back(pulse_label + " is noisy (noise " + format_number(automatic->noise) + " V against a swing of " +
+                              format_number(automatic->top_level - automatic->bottom_level) + " V); hysteresis widened");
 
   // Pass 2: edges.
   EdgeDetector detector(report.thresholds, pulse.polarity, fs, t0, pulse.debounce_s);
@@ -209,7 +202,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   const std::vector<double> edges = detector.edges();
   if (edges.empty())
     throw InputError(info.file.string() + ": no crank pulses: " + pulse_label + " never crosses from " +
-                     fmt(report.thresholds.low) + " V to " + fmt(report.thresholds.high) + " V (" +
+                     format_number(report.thresholds.low) + " V to " + format_number(report.thresholds.high) + " V (" +
                      (pulse.polarity == PulsePolarity::rising ? "rising" : "falling") +
                      " edges); check the channel, its polarity and thresholds in " + manifest.file.string());
 
@@ -285,7 +278,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
       report.warnings.push_back("channel '" + report.channels[a].name + "' clipped: " +
                                 std::to_string(report.channel_stats[a].clipped_samples) +
                                 " samples at the input range, first at " +
-                                fmt(report.channel_stats[a].first_clip_s) + " s; " +
+                                format_number(report.channel_stats[a].first_clip_s) + " s; " +
                                 std::to_string(report.revolutions_clipped) +
                                 " revolutions are marked clipped (lower the gain)");
   if (!train.removed_s.empty())
@@ -298,15 +291,15 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   for (const auto& g : train.gaps) {
     const auto lost = static_cast<std::size_t>(std::max(1.0, std::round(g.periods)));
     report.revolutions_in_gaps += lost;
-    report.warnings.push_back("pulse train broken between " + fmt(g.from_s) + " s and " + fmt(g.to_s) + " s (" +
-                              fmt(g.periods, 3) + " periods, no whole number): about " + std::to_string(lost) +
+    report.warnings.push_back("pulse train broken between " + format_number(g.from_s) + " s and " + format_number(g.to_s) + " s (" +
+                              format_number(g.periods, 3) + " periods, no whole number): about " + std::to_string(lost) +
                               " revolutions dropped");
   }
   if (!train.orphan_s.empty())
     report.warnings.push_back(std::to_string(train.orphan_s.size()) +
                               " isolated pulses without a neighbour one period away, at " + time_list(train.orphan_s));
   if (report.samples_per_turn < 64)
-    report.warnings.push_back("only " + fmt(report.samples_per_turn, 3) +
+    report.warnings.push_back("only " + format_number(report.samples_per_turn, 3) +
                               " samples per revolution: too coarse for impact bursts; record faster");
   return report;
 }
