@@ -50,10 +50,9 @@ ThresholdChoice pulse_thresholds(const LevelHistogram& histogram, const ChannelS
   }
   if (automatic)
     if (auto w = polarity_warning(histogram, pulse)) choice.warnings.push_back(*w);
-  if (automatic && automatic->noise > 0.1 * (automatic->top_level - automatic->bottom_level))
-    choice.warnings.push_back(label + " is noisy (noise " + format_number(automatic->noise) +
-                              " V against a swing of " + format_number(automatic->top_level - automatic->bottom_level) +
-                              " V); hysteresis widened");
+  if (t.hysteresis_widened)
+    choice.warnings.push_back(label + " is noisy (noise " + format_number(t.noise) + " V against a swing of " +
+                              format_number(t.top_level - t.bottom_level) + " V); hysteresis widened");
   return choice;
 }
 

@@ -2,7 +2,8 @@
 // The Schmitt thresholds acquire uses on the pulse channel: the manifest's
 // when it gives them, else the automatic ones from the pulse channel's level
 // histogram (level_histogram.hpp); and what the two levels say about the
-// set-up (a polarity that times the trailing edge, a noisy channel).
+// set-up (a polarity that times the trailing edge; a channel so noisy that
+// the automatic hysteresis was widened, warned exactly when it was).
 
 #include <filesystem>
 #include <optional>
