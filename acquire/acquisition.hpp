@@ -3,27 +3,35 @@
 // angle-tagged samples and revolutions out (through an AcquisitionSink), plus
 // a report of what was found.
 //
-// The recording is read in three streaming passes of fixed-size blocks, so
-// memory stays bounded by one revolution whatever the length:
+// The recording is read in three streaming passes of fixed-size blocks
+// (streaming_pass.hpp), so memory stays bounded by one revolution whatever
+// the length:
 //   1. scan    — channel statistics, clipping, NaN check, the pulse
-//                channel's level histogram (automatic Schmitt thresholds);
-//   2. pulses  — Schmitt-trigger edges with sub-sample times;
-//      then the pulse train is cleaned (pulse_train.hpp) and the crank
-//      motion fitted through it (crank_angle.hpp);
+//                channel's level histogram (channel_scan.hpp); then the
+//                Schmitt thresholds (pulse_thresholds.hpp);
+//   2. pulses  — Schmitt-trigger edges with sub-sample times, cleaned into
+//                the pulse train (pulse_pass.hpp); then the crank motion
+//                fitted through it and the revolutions planned
+//                (revolution_plan.hpp);
 //   3. samples — each sample tagged with θ2, ω2, α2 and calibrated; each
 //                revolution resampled onto N crank angles (4-point Lagrange
-//                interpolation between samples) as soon as it is complete.
+//                interpolation between samples) as soon as it is complete
+//                (sample_tagging.hpp);
+// then the warnings (acquisition_warnings.hpp).
 
 #include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "acquire/channel_scan.hpp"
 #include "acquire/level_histogram.hpp"
 #include "acquire/manifest.hpp"
 #include "acquire/pulse_train.hpp"
 #include "acquire/reader.hpp"
 #include "acquire/revolution.hpp"
+#include "acquire/revolution_plan.hpp"
+#include "acquire/streaming_pass.hpp"
 
 namespace fourbar {
 
@@ -32,17 +40,6 @@ struct AcquireOptions {
   std::size_t block_frames = 16384;
   bool progress = true;            ///< progress bar on stderr when it is a terminal
   PulseTrainOptions pulses;
-};
-
-/// Per accelerometer channel (m/s², calibrated) or the pulse channel (V).
-struct ChannelStats {
-  double min = 0, max = 0, mean = 0, rms = 0;
-  std::uint64_t clipped_samples = 0;  ///< samples at the input range
-  double first_clip_s = 0;            ///< time of the first clipped sample
-};
-
-struct SpeedStats {
-  double mean_rpm = 0, std_rpm = 0, min_rpm = 0, max_rpm = 0;
 };
 
 struct AcquisitionReport {
@@ -64,7 +61,7 @@ struct AcquisitionReport {
   SpeedStats speed;
   bool clipping_checked = false;             ///< false for float/text without adc_range_V
   std::vector<std::string> warnings;
-  std::array<double, 3> pass_seconds{};      ///< wall time of scan, pulses, samples passes
+  std::array<double, kAcquirePasses> pass_seconds{};  ///< wall time of scan, pulses, samples passes
 };
 
 /// Runs the three passes. `manifest` must be bound to the reader's recording

@@ -98,9 +98,12 @@ std::optional<PulseThresholds> automatic_thresholds(const LevelHistogram& histog
   t.top_level = levels->high.median;
   t.noise = std::max(levels->low.noise, levels->high.noise);
   const double swing = t.top_level - t.bottom_level;
-  if (!(swing > 0) || swing < 6.0 * t.noise) return std::nullopt;
+  if (!(swing > 0) || swing < kLevelsMinSwingNoiseSigmas * t.noise) return std::nullopt;
   const double mid = 0.5 * (t.bottom_level + t.top_level);
-  const double half_band = std::min(std::max(0.15 * swing, 4.0 * t.noise), 0.4 * swing);
+  const double clean_half_band = kHysteresisHalfBandOfSwing * swing;
+  const double noise_half_band = kHysteresisNoiseSigmas * t.noise;
+  t.hysteresis_widened = noise_half_band > clean_half_band;
+  const double half_band = std::min(std::max(clean_half_band, noise_half_band), kHysteresisMaxHalfBandOfSwing * swing);
   t.low = mid - half_band;
   t.high = mid + half_band;
   return t;

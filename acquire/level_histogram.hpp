@@ -46,11 +46,24 @@ struct PulseThresholds {
   double low = 0, high = 0;                ///< the hysteresis band
   double noise = 0;                        ///< robust noise estimate of the levels
   bool automatic = true;
+  bool hysteresis_widened = false;         ///< automatic, and the band was widened for the noise
 };
 
-/// Thresholds half-way between the levels ± max(15 % of the swing, 4·noise),
-/// kept 10 % inside the levels. Returns nullopt when the signal has no two
-/// distinct levels (swing under 6 noise standard deviations): no pulses.
+// The automatic hysteresis band: half of it on each side of mid-level.
+/// Half band on a clean signal, as a fraction of the swing: both thresholds on the edge's ramp, clear of hum.
+inline constexpr double kHysteresisHalfBandOfSwing = 0.15;
+/// Half band at least this many noise σ: noise must span 8σ to cross the band and re-trigger.
+inline constexpr double kHysteresisNoiseSigmas = 4.0;
+/// Half band at most this fraction of the swing: thresholds stay 10 % of the swing inside the levels.
+inline constexpr double kHysteresisMaxHalfBandOfSwing = 0.4;
+/// Levels closer than this many noise σ are no two levels (one level with noise).
+inline constexpr double kLevelsMinSwingNoiseSigmas = 6.0;
+
+/// Thresholds half-way between the levels ± max(kHysteresisHalfBandOfSwing·swing,
+/// kHysteresisNoiseSigmas·noise), at most kHysteresisMaxHalfBandOfSwing·swing;
+/// `hysteresis_widened` when the noise term is the larger (the one place
+/// that decides it). Returns nullopt when the signal has no two distinct
+/// levels (swing under kLevelsMinSwingNoiseSigmas noise σ): no pulses.
 std::optional<PulseThresholds> automatic_thresholds(const LevelHistogram& histogram);
 
 }  // namespace fourbar

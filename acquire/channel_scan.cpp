@@ -1,0 +1,71 @@
+#include "acquire/channel_scan.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.hpp"
+#include "common/format.hpp"
+
+namespace fourbar {
+
+namespace {
+
+/// Streaming min/max/mean/rms.
+struct Accumulator {
+  double min = INFINITY, max = -INFINITY, sum = 0, sum_sq = 0;
+  std::uint64_t n = 0, clipped = 0;
+  double first_clip_s = 0;
+  void add(double v) {
+    min = std::min(min, v), max = std::max(max, v), sum += v, sum_sq += v * v, ++n;
+  }
+  ChannelStats stats() const {
+    ChannelStats s;
+    if (n == 0) return s;
+    s.min = min, s.max = max, s.mean = sum / static_cast<double>(n);
+    s.rms = std::sqrt(sum_sq / static_cast<double>(n));
+    s.clipped_samples = clipped, s.first_clip_s = first_clip_s;
+    return s;
+  }
+};
+
+void check_finite(const RecordingInfo& info, const double* frame, std::uint64_t frame_index) {
+  const auto channels = static_cast<std::size_t>(info.channels);
+  const double fs = info.sample_rate_hz, t0 = info.start_time_s;
+  for (std::size_t c = 0; c < channels; ++c)
+    if (!std::isfinite(frame[c]))
+      throw InputError(info.file.string() + ": channel " + std::to_string(c) + " holds a non-finite value at frame " +
+                       std::to_string(frame_index) + " (t = " +
+                       format_number(t0 + static_cast<double>(frame_index) / fs) + " s); the recording is damaged");
+}
+
+}  // namespace
+
+ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInput> accelerometers,
+                     const ClipRange& clip, const PulseInput& pulse) {
+  const RecordingInfo& info = stream.reader.info();
+  const auto channels = static_cast<std::size_t>(info.channels);
+  const double fs = info.sample_rate_hz, t0 = info.start_time_s;
+  std::vector<Accumulator> acc(accelerometers.size());
+  Accumulator pulse_acc;
+  ScanResult result;
+  for_each_block(stream, AcquirePass::scan, [&](std::span<const double> block, std::size_t frames,
+                                                std::uint64_t first) {
+    for (std::size_t f = 0; f < frames; ++f) {
+      const double* frame = block.data() + f * channels;
+      check_finite(info, frame, first + f);
+      for (std::size_t a = 0; a < accelerometers.size(); ++a) {
+        const double raw = frame[accelerometers[a].index];
+        acc[a].add(raw * accelerometers[a].m_s2_per_unit);
+        if (clip.clipped(raw) && acc[a].clipped++ == 0) acc[a].first_clip_s = t0 + static_cast<double>(first + f) / fs;
+      }
+      const double v = frame[pulse.index] * pulse.volts_per_unit;
+      pulse_acc.add(v);
+      result.pulse_histogram.add(v);
+    }
+  });
+  for (const auto& a : acc) result.channel_stats.push_back(a.stats());
+  result.pulse_stats = pulse_acc.stats();
+  return result;
+}
+
+}  // namespace fourbar
