@@ -7,11 +7,12 @@
 #include <string>
 
 #include <boost/math/tools/minima.hpp>
-#include <boost/math/tools/toms748_solve.hpp>
 
 #include "common/error.hpp"
+#include "common/statistics.hpp"
 #include "common/units.hpp"
 #include "mechanism/kinetostatics.hpp"
+#include "sim/clearance/event_root.hpp"
 
 namespace fourbar {
 
@@ -26,18 +27,6 @@ constexpr int kZenoLimit = 100000;
 /// time origin, so its local time (and local crank angle) stays small.
 constexpr double kRestartTurns = 64;
 
-/// A running sum with Neumaier's compensation: the energy books add many
-/// small terms to a growing total over long runs.
-struct CompensatedSum {
-  double sum = 0, carry = 0;
-  void add(double x) {
-    const double s = sum + x;
-    carry += std::abs(sum) >= std::abs(x) ? (sum - s) + x : (x - s) + sum;
-    sum = s;
-  }
-  double value() const { return sum + carry; }
-};
-
 Vec2 rotate(Vec2 u, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   return {c * u.x - s * u.y, s * u.x + c * u.y};
@@ -45,23 +34,6 @@ Vec2 rotate(Vec2 u, double angle) {
 
 /// Angle of b relative to a, in (−π, π].
 double angle_between(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
-
-/// Root of f on [a, b] with f(a) and f(b) of opposite sign, to a few ulps of
-/// the time (at most 1e-13 s while t < 28 s): returns the end of the final
-/// bracket on the side of f(b). A fixed 1e-13 s was too coarse for tiny
-/// clearances at speed: the pin reached 7.7e-9·ξ past the wall (ξ = 1 µm,
-/// 3000 rpm, issue 7), above the 1e-9·ξ bound.
-template <class F>
-double locate_root(F&& f, double a, double b, double fa, double fb) {
-  if (fb == 0) return b;
-  const double tol = 1e-18 + 8 * std::numeric_limits<double>::epsilon() * std::max(std::abs(a), std::abs(b));
-  auto stop = [tol](double x, double y) { return std::abs(y - x) <= tol; };
-  std::uintmax_t iters = 200;
-  const auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb, stop, iters);
-  // Keep the side where f has the sign of f(b) (past the event).
-  const double fr = f(r.second);
-  return (fr == 0 || (fr > 0) == (fb > 0)) ? r.second : r.first;
-}
 
 }  // namespace
 
