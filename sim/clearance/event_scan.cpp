@@ -14,12 +14,12 @@
 namespace fourbar {
 
 double ClearanceSimulator::Impl::follow_value(const FollowingMotion& f) const {
-  double w = f.normal_force_N + force_guard;
-  if (wall.mu > 0) {
-    if (wall.slip != 0) {
-      if (slip_armed) w = std::min(w, wall.slip * f.slip_speed_m_s * slip_force_per_speed);
+  double w = f.normal_force_N + scale.force_guard_N;
+  if (wall.friction.mu > 0) {
+    if (wall.friction.slip != 0) {
+      if (wall.slip_armed) w = std::min(w, wall.friction.slip * f.slip_speed_m_s * wall.slip_force_per_speed);
     } else {
-      w = std::min(w, wall.mu * (f.normal_force_N + force_guard) - std::abs(f.tangential_force_N));
+      w = std::min(w, wall.friction.mu * (f.normal_force_N + scale.force_guard_N) - std::abs(f.tangential_force_N));
     }
   }
   return w;
@@ -36,35 +36,35 @@ ClearanceSimulator::Impl::FollowSample ClearanceSimulator::Impl::follow_witness(
   OdeState y;
   integ->interpolate(time, y);
   const CrankState c = crank_at(time);
-  const FollowingMotion f = model.following(c, eta_of(y), eta_rate_of(y), wall);
+  const FollowingMotion f = model.following(c, eta_of(y), eta_rate_of(y), wall.friction);
   if (check_drift) monitor(model.bearing(c, f.links));
-  if (!slip_armed && wall.slip * f.slip_speed_m_s > slip_arm_speed) slip_armed = true;
+  if (!wall.slip_armed && wall.friction.slip * f.slip_speed_m_s > wall.slip_arm_speed_m_s) wall.slip_armed = true;
   return {time, follow_value(f), f.slip_speed_m_s};
 }
 
 std::optional<double> ClearanceSimulator::Impl::scan_free(double ta, double tb) {
   auto pen = [this](double x) { return free_witness(x).pen; };
   auto spd = [this](double x) { return free_witness(x).speed; };
-  FreeSample prev = free_prev;
+  FreeSample prev = witness.free_prev;
   if (prev.t != ta) prev = free_witness(ta);
-  if (armed && stage_filter && !settings.full_event_scan) {
+  if (seg.armed && witness.stage_filter && !settings.full_event_scan) {
     // As in scan_following: the pin stays inside by more than the spread
     // of the step's stage and end penetrations.
     const FreeSample end = free_witness(tb);
     const double lo = std::min({free_ode.pen_min, prev.pen, end.pen});
     const double hi = std::max({free_ode.pen_max, prev.pen, end.pen});
     if (-hi > hi - lo) {
-      ++diag.filtered_steps;
-      free_prev = end;
+      ++books.diag.filtered_steps;
+      witness.free_prev = end;
       return std::nullopt;
     }
   }
   for (int i = 1; i <= kScanPoints; ++i) {
     const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
     const FreeSample cur = free_witness(ti);
-    if (!armed) {
-      if (cur.pen < -arm_depth) {
-        armed = true;
+    if (!seg.armed) {
+      if (cur.pen < -scale.arm_depth_m) {
+        seg.armed = true;
       } else if (cur.speed > 0) {
         // Past the deepest point of this flight: find it, then look ahead.
         double tmin = prev.t, pmin = prev.pen;
@@ -73,12 +73,12 @@ std::optional<double> ClearanceSimulator::Impl::scan_free(double ta, double tb) 
           pmin = pen(tmin);
         }
         if (cur.pen < 0) {
-          armed = true;  // coming back from inside: the crossing ahead is an impact
-        } else if (pmin < -arm_depth) {
-          armed = true;
+          seg.armed = true;  // coming back from inside: the crossing ahead is an impact
+        } else if (pmin < -scale.arm_depth_m) {
+          seg.armed = true;
           return locate_root(pen, tmin, cur.t, pmin, cur.pen);
-        } else if (cur.pen > arm_depth) {
-          armed = true;
+        } else if (cur.pen > scale.arm_depth_m) {
+          seg.armed = true;
           return tmin;  // the pin never left the wall beyond round-off: a touch
         }
         // Else still on the wall within round-off (|pen| ≤ arm depth), e.g.
@@ -97,39 +97,39 @@ std::optional<double> ClearanceSimulator::Impl::scan_free(double ta, double tb) 
     }
     prev = cur;
   }
-  free_prev = prev;
+  witness.free_prev = prev;
   return std::nullopt;
 }
 
 std::optional<double> ClearanceSimulator::Impl::scan_following(double ta, double tb) {
   auto w = [this](double x) { return follow_witness(x).w; };
-  if (follow_hist.empty() || follow_hist.back().t != ta) {
-    follow_hist.clear();
-    follow_hist.push_back(follow_witness(ta));
+  if (witness.follow_hist.empty() || witness.follow_hist.back().t != ta) {
+    witness.follow_hist.clear();
+    witness.follow_hist.push_back(follow_witness(ta));
   }
-  if (stage_filter && !settings.full_event_scan) {
+  if (witness.stage_filter && !settings.full_event_scan) {
     // The step's stage values and both ends stay positive by more than
     // their spread: w cannot reach zero inside (a parabola through them
     // dips at most 0.26 of the spread below the lowest), so the step end
     // is the only sample needed.
     const FollowSample end = follow_witness(tb, true);
-    const double lo = std::min({following_ode.w_min, follow_hist.back().w, end.w});
-    const double hi = std::max({following_ode.w_max, follow_hist.back().w, end.w});
+    const double lo = std::min({following_ode.w_min, witness.follow_hist.back().w, end.w});
+    const double hi = std::max({following_ode.w_max, witness.follow_hist.back().w, end.w});
     if (lo > hi - lo) {
-      ++diag.filtered_steps;
-      follow_hist.push_back(end);
-      if (follow_hist.size() > 2) follow_hist.erase(follow_hist.begin());
+      ++books.diag.filtered_steps;
+      witness.follow_hist.push_back(end);
+      if (witness.follow_hist.size() > 2) witness.follow_hist.erase(witness.follow_hist.begin());
       return std::nullopt;
     }
   }
   for (int i = 1; i <= kScanPoints; ++i) {
     const double ti = i == kScanPoints ? tb : ta + (tb - ta) * i / kScanPoints;
     const FollowSample cur = follow_witness(ti, i == kScanPoints);
-    const FollowSample prev = follow_hist.back();
+    const FollowSample prev = witness.follow_hist.back();
     if (cur.w <= 0) return locate_root(w, prev.t, cur.t, prev.w, cur.w);
-    if (follow_hist.size() >= 2) {
+    if (witness.follow_hist.size() >= 2) {
       // Sampled local minimum: does a parabola through the three samples dip below zero?
-      const FollowSample a = follow_hist[follow_hist.size() - 2];
+      const FollowSample a = witness.follow_hist[witness.follow_hist.size() - 2];
       if (prev.w < a.w && prev.w < cur.w) {
         const double h1 = prev.t - a.t, h2 = cur.t - prev.t;
         const double d1 = (prev.w - a.w) / h1, d2 = (cur.w - prev.w) / h2;
@@ -145,8 +145,8 @@ std::optional<double> ClearanceSimulator::Impl::scan_following(double ta, double
         }
       }
     }
-    follow_hist.push_back(cur);
-    if (follow_hist.size() > 2) follow_hist.erase(follow_hist.begin());
+    witness.follow_hist.push_back(cur);
+    if (witness.follow_hist.size() > 2) witness.follow_hist.erase(witness.follow_hist.begin());
   }
   return std::nullopt;
 }

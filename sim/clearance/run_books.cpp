@@ -22,36 +22,37 @@ double ClearanceSimulator::Impl::energy_of_links(const CrankState& c, const Link
 }
 
 int ClearanceSimulator::Impl::revolution_of(double time) const {
-  const double turns = (crank.at(absolute(time)).angle_rad - rev_origin) * rev_dir / units::kTwoPi;
+  const double turns = (crank.at(absolute(time)).angle_rad - books.rev_origin_rad) * books.rev_dir / units::kTwoPi;
   return static_cast<int>(std::floor(turns + 1e-12));
 }
 
 double ClearanceSimulator::Impl::revolution_start(int k) const {
-  return crank.time_at_angle(rev_origin + rev_dir * units::kTwoPi * k);
+  return crank.time_at_angle(books.rev_origin_rad + books.rev_dir * units::kTwoPi * k);
 }
 
 RevolutionRecord& ClearanceSimulator::Impl::revolution(int k) {
-  while (static_cast<int>(revolutions.size()) <= k) {
+  while (static_cast<int>(books.revolutions.size()) <= k) {
     RevolutionRecord r;
-    r.index = static_cast<int>(revolutions.size());
+    r.index = static_cast<int>(books.revolutions.size());
     r.start_time_s = revolution_start(r.index);
     r.end_time_s = revolution_start(r.index + 1);
-    revolutions.push_back(r);
+    books.revolutions.push_back(r);
   }
-  return revolutions[k];
+  return books.revolutions[k];
 }
 
 void ClearanceSimulator::Impl::book_interval(double ta, double tb) {
-  (mode == ContactMode::following ? diag.time_following_s : diag.time_free_s) += tb - ta;
-  if (mode == ContactMode::following && wall.mu > 0 && wall.slip == 0) diag.time_stuck_s += tb - ta;
-  if (!revolutions_on) return;
+  (seg.mode == ContactMode::following ? books.diag.time_following_s : books.diag.time_free_s) += tb - ta;
+  if (seg.mode == ContactMode::following && wall.friction.mu > 0 && wall.friction.slip == 0)
+    books.diag.time_stuck_s += tb - ta;
+  if (!books.revolutions_on) return;
   int k = std::max(0, revolution_of(ta));
   double a = ta;
   for (;;) {
     RevolutionRecord& r = revolution(k);
     const double end = local(r.end_time_s);
     const double b = std::min(tb, end);
-    if (b > a) (mode == ContactMode::following ? r.following_time_s : r.free_time_s) += b - a;
+    if (b > a) (seg.mode == ContactMode::following ? r.following_time_s : r.free_time_s) += b - a;
     if (end > tb) break;
     // Reached the start of turn k + 1: record its state once.
     RevolutionRecord& next = revolution(k + 1);
@@ -69,36 +70,37 @@ void ClearanceSimulator::Impl::record_start_state(RevolutionRecord& r) {
   const LinkMotion m = links_at(start, y);
   const OdeState f = free_state(start, m);
   r.start_state = {f[0], f[1], f[2], f[3]};
-  r.start_mode = mode;
+  r.start_mode = seg.mode;
   r.has_start_state = true;
 }
 
 void ClearanceSimulator::Impl::after_start() {
   OdeState y;
-  integ->interpolate(t, y);
-  diag.energy_start_J = energy(t, links_at(t, y));
-  if (revolutions_on) record_start_state(revolution(std::max(0, revolution_of(t))));
+  integ->interpolate(seg.t, y);
+  books.diag.energy_start_J = energy(seg.t, links_at(seg.t, y));
+  if (books.revolutions_on) record_start_state(revolution(std::max(0, revolution_of(seg.t))));
 }
 
 double ClearanceSimulator::Impl::stat_time(long long i) const {
-  return local(crank.time_at_angle(rev_origin + rev_dir * units::kTwoPi * static_cast<double>(i) / stats_per_turn));
+  return local(crank.time_at_angle(books.rev_origin_rad +
+                                   books.rev_dir * units::kTwoPi * static_cast<double>(i) / books.stats_per_turn));
 }
 
 void ClearanceSimulator::Impl::emit_statistics(double up_to) {
-  if (stats_per_turn <= 0) return;
-  for (double ts = stat_time(next_stat); ts <= up_to; ts = stat_time(++next_stat)) {
-    if (ts < segment_start) continue;  // before the start
+  if (books.stats_per_turn <= 0) return;
+  for (double ts = stat_time(books.next_stat); ts <= up_to; ts = stat_time(++books.next_stat)) {
+    if (ts < seg.start) continue;  // before the start
     OdeState y;
     integ->interpolate(ts, y);
     const CrankState c = crank_at(ts);
     double a3, a4;
-    if (mode == ContactMode::following) {
-      a3 = model.following(c, eta_of(y), eta_rate_of(y), wall).alpha3_rad_s2;
+    if (seg.mode == ContactMode::following) {
+      a3 = model.following(c, eta_of(y), eta_rate_of(y), wall.friction).alpha3_rad_s2;
     } else {
       model.free_accelerations(c, free_links(ts, y), a3, a4);
     }
     const double d = a3 - solve_motion(model.rig(), c).alpha3_rad_s2;
-    RevolutionRecord& r = revolution(static_cast<int>(next_stat / stats_per_turn));
+    RevolutionRecord& r = revolution(static_cast<int>(books.next_stat / books.stats_per_turn));
     r.alpha3_deviation_sum_sq += d * d;
     ++r.alpha3_deviation_samples;
     r.alpha3_deviation_rms_rad_s2 = std::sqrt(r.alpha3_deviation_sum_sq / r.alpha3_deviation_samples);
@@ -106,9 +108,9 @@ void ClearanceSimulator::Impl::emit_statistics(double up_to) {
 }
 
 void ClearanceSimulator::Impl::emit_samples(double up_to) {
-  while (next_sample < sample_times.size() && local(sample_times[next_sample]) <= up_to) {
-    samples.push_back(sample(sample_times[next_sample]));
-    ++next_sample;
+  while (books.next_sample < books.sample_times.size() && local(books.sample_times[books.next_sample]) <= up_to) {
+    books.samples.push_back(sample(books.sample_times[books.next_sample]));
+    ++books.next_sample;
   }
 }
 
@@ -119,9 +121,9 @@ ClearanceSample ClearanceSimulator::Impl::sample(double absolute_time) {
   ClearanceSample s;
   s.time_s = absolute_time;
   s.crank = crank_at(time);
-  s.mode = mode;
-  if (mode == ContactMode::following) {
-    const FollowingMotion f = model.following(s.crank, eta_of(y), eta_rate_of(y), wall);
+  s.mode = seg.mode;
+  if (seg.mode == ContactMode::following) {
+    const FollowingMotion f = model.following(s.crank, eta_of(y), eta_rate_of(y), wall.friction);
     s.links = f.links;
     s.alpha3_rad_s2 = f.alpha3_rad_s2;
     s.alpha4_rad_s2 = f.alpha4_rad_s2;
@@ -144,23 +146,25 @@ ClearanceSample ClearanceSimulator::Impl::sample(double absolute_time) {
 
 void ClearanceSimulator::Impl::monitor(const BearingState& b) {
   const double xi = model.clearance_m();
-  if (mode == ContactMode::following) {
-    diag.max_contact_circle_error = std::max(diag.max_contact_circle_error, std::abs(b.gap_m) / xi);
-    diag.max_contact_normal_speed_m_s = std::max(diag.max_contact_normal_speed_m_s, std::abs(b.normal_speed_m_s));
+  if (seg.mode == ContactMode::following) {
+    books.diag.max_contact_circle_error = std::max(books.diag.max_contact_circle_error, std::abs(b.gap_m) / xi);
+    books.diag.max_contact_normal_speed_m_s =
+        std::max(books.diag.max_contact_normal_speed_m_s, std::abs(b.normal_speed_m_s));
   } else {
-    diag.max_penetration = std::max(diag.max_penetration, -b.gap_m / xi);
+    books.diag.max_penetration = std::max(books.diag.max_penetration, -b.gap_m / xi);
   }
 }
 
 void ClearanceSimulator::Impl::check_energy(double time, const LinkMotion& m, double work, double friction) {
-  const double r = energy(time, m) - diag.energy_start_J - work - work_impulse.value() + loss.value() + friction;
-  diag.max_energy_residual_J = std::max(diag.max_energy_residual_J, std::abs(r));
+  const double r = energy(time, m) - books.diag.energy_start_J - work - energy_books.work_impulse.value() +
+                   energy_books.loss.value() + friction;
+  books.diag.max_energy_residual_J = std::max(books.diag.max_energy_residual_J, std::abs(r));
 }
 
 void ClearanceSimulator::Impl::zeno_guard(double time) {
-  zeno_count = time - last_event < kZenoSpan_s ? zeno_count + 1 : 0;
-  last_event = time;
-  if (zeno_count > kZenoLimit)
+  zeno.count = time - zeno.last_event < kZenoSpan_s ? zeno.count + 1 : 0;
+  zeno.last_event = time;
+  if (zeno.count > kZenoLimit)
     throw RunError("clearance model: events pile up at t = " + std::to_string(absolute(time)) +
                    " s without progress; raise [clearance] settle_speed_mm_s");
 }

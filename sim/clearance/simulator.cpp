@@ -8,7 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "common/units.hpp"
 #include "mechanism/kinetostatics.hpp"
@@ -16,66 +19,74 @@
 
 namespace fourbar {
 
+// ---- local clock ------------------------------------------------------------
+
 double ClearanceSimulator::Impl::rebase(double time) {
-  const double o = origin + time;
-  const double r = std::abs(origin) >= std::abs(time) ? (origin - o) + time : (time - o) + origin;
-  last_event = (last_event - time) + r;
-  origin = o;
+  const double o = clock.origin_s + time;
+  const double r = std::abs(clock.origin_s) >= std::abs(time) ? (clock.origin_s - o) + time : (time - o) + clock.origin_s;
+  zeno.last_event = (zeno.last_event - time) + r;
+  clock.origin_s = o;
   return r;
 }
 
+// ---- prepare ----------------------------------------------------------------
+
 void ClearanceSimulator::Impl::prepare(double t0) {
   const CrankState c = crank.at(t0);
-  speed_scale = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
-  delta_scale = model.clearance_m() / model.rig().coupler.length_m;
-  energy_scale = model.energy_scale_J(c.speed_rad_s);
-  if (!(energy_scale > 0)) energy_scale = 1.0;  // a rig at rest without gravity
-  force_guard = 1e-9 * model.force_scale_N(c.speed_rad_s);
-  arm_depth = 1e-11 * model.clearance_m();
-  wall = {settings.following_friction ? settings.friction_coefficient : 0.0, 1};
-  slip_arm_speed = 1e-9 * model.clearance_m() * speed_scale;
-  slip_force_per_speed = model.force_scale_N(c.speed_rad_s) / (model.clearance_m() * speed_scale);
-  rev_dir = c.speed_rad_s < 0 ? -1 : 1;
+  scale.speed_rad_s = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
+  scale.delta = model.clearance_m() / model.rig().coupler.length_m;
+  scale.energy_J = model.energy_scale_J(c.speed_rad_s);
+  if (!(scale.energy_J > 0)) scale.energy_J = 1.0;  // a rig at rest without gravity
+  scale.force_guard_N = 1e-9 * model.force_scale_N(c.speed_rad_s);
+  scale.arm_depth_m = 1e-11 * model.clearance_m();
+  wall.friction = {settings.following_friction ? settings.friction_coefficient : 0.0, 1};
+  wall.slip_arm_speed_m_s = 1e-9 * model.clearance_m() * scale.speed_rad_s;
+  wall.slip_force_per_speed = model.force_scale_N(c.speed_rad_s) / (model.clearance_m() * scale.speed_rad_s);
+  books.rev_dir = c.speed_rad_s < 0 ? -1 : 1;
   following_ode.s = this;
   free_ode.s = this;
-  stage_filter = integ->stages_inside_step();
-  diag.energy_scale_J = energy_scale;
+  witness.stage_filter = integ->stages_inside_step();
+  books.diag.energy_scale_J = scale.energy_J;
   prepare_origin(t0);
 }
 
 void ClearanceSimulator::Impl::prepare_origin(double t0) {
-  origin = t0;
-  t = segment_start = 0;
-  last_event = -1e300;
+  clock.origin_s = t0;
+  seg.t = seg.start = 0;
+  zeno.last_event = -1e300;
 }
+
+// ---- the main loop ------------------------------------------------------------
 
 void ClearanceSimulator::Impl::advance_to(double absolute_end) {
   for (;;) {
     const double t_end = local(absolute_end);  // the origin moves with each segment
-    if (!(t < t_end)) break;
-    if (t == integ->current_time() && (t - segment_start) * speed_scale > kRestartTurns * units::kTwoPi)
+    if (!(seg.t < t_end)) break;
+    if (seg.t == integ->current_time() && (seg.t - seg.start) * scale.speed_rad_s > kRestartTurns * units::kTwoPi)
       restart_segment();
     double tb = integ->current_time();
-    if (tb <= t) {
+    if (tb <= seg.t) {
       following_ode.clear();
       free_ode.clear();
       tb = integ->step(t_end);
     }  // else: the rest of an earlier step is still unused
-    const double ta = t;
+    const double ta = seg.t;
     tb = std::min(tb, t_end);
-    ++diag.steps;
-    const std::optional<double> ev = mode == ContactMode::following ? scan_following(ta, tb) : scan_free(ta, tb);
+    ++books.diag.steps;
+    const std::optional<double> ev = seg.mode == ContactMode::following ? scan_following(ta, tb) : scan_free(ta, tb);
     const double t_stop = ev ? *ev : tb;
     emit_samples(t_stop);
     emit_statistics(t_stop);
     book_interval(ta, t_stop);
-    t = t_stop;
+    seg.t = t_stop;
     if (!ev) continue;
     zeno_guard(t_stop);
-    if (mode == ContactMode::following) handle_following_event(t_stop);
+    if (seg.mode == ContactMode::following) handle_following_event(t_stop);
     else handle_impact(t_stop);
   }
 }
+
+// ---- public API ---------------------------------------------------------------
 
 ClearanceSimulator::ClearanceSimulator(const ClearanceModel& model, const CrankMotion& crank,
                                        const ClearanceSettings& settings)
@@ -84,18 +95,18 @@ ClearanceSimulator::ClearanceSimulator(const ClearanceModel& model, const CrankM
 ClearanceSimulator::~ClearanceSimulator() = default;
 
 void ClearanceSimulator::set_sample_times(std::vector<double> times) {
-  impl_->sample_times = std::move(times);
-  impl_->next_sample = 0;
+  impl_->books.sample_times = std::move(times);
+  impl_->books.next_sample = 0;
 }
 
 void ClearanceSimulator::set_revolution_statistics(int samples_per_turn) {
-  impl_->stats_per_turn = samples_per_turn;
-  impl_->next_stat = 0;
+  impl_->books.stats_per_turn = samples_per_turn;
+  impl_->books.next_stat = 0;
 }
 
 void ClearanceSimulator::set_revolution_origin(double crank_angle_rad) {
-  impl_->revolutions_on = true;
-  impl_->rev_origin = crank_angle_rad;
+  impl_->books.revolutions_on = true;
+  impl_->books.rev_origin_rad = crank_angle_rad;
 }
 
 void ClearanceSimulator::start_nominal(double t0) {
@@ -111,18 +122,18 @@ void ClearanceSimulator::start_nominal(double t0) {
   };
   const double eta0 = direction(0.0);  // local times from here on
   // Its rate by a 4th-order central difference of the nominal force angle.
-  const double h = 1e-4 / s.speed_scale;
+  const double h = 1e-4 / s.scale.speed_rad_s;
   auto rel = [&](double time) { return eta0 + std::remainder(direction(time) - eta0, units::kTwoPi); };
   const double rate = (rel(-2 * h) - 8 * rel(-h) + 8 * rel(h) - rel(2 * h)) / (12 * h);
   const CrankState c = s.crank_at(0.0);
   double eta_rate = rate;
   s.choose_slip(c, eta0, eta_rate);
-  const FollowingMotion f = s.model.following(c, eta0, eta_rate, s.wall);
-  if (f.normal_force_N > -s.force_guard) {
+  const FollowingMotion f = s.model.following(c, eta0, eta_rate, s.wall.friction);
+  if (f.normal_force_N > -s.scale.force_guard_N) {
     s.begin_following(0.0, eta0, eta_rate);
   } else {
     s.begin_free(0.0, f.links);
-    s.armed = false;
+    s.seg.armed = false;
   }
   s.after_start();
 }
@@ -143,32 +154,32 @@ void ClearanceSimulator::start_free(double t0, const LinkMotion& links) {
 
 void ClearanceSimulator::advance_to(double t_end) { impl_->advance_to(t_end); }
 
-double ClearanceSimulator::time() const { return impl_->absolute(impl_->t); }
-ContactMode ClearanceSimulator::mode() const { return impl_->mode; }
+double ClearanceSimulator::time() const { return impl_->absolute(impl_->seg.t); }
+ContactMode ClearanceSimulator::mode() const { return impl_->seg.mode; }
 
 LinkMotion ClearanceSimulator::current_links() {
   OdeState y;
-  impl_->integ->interpolate(impl_->t, y);
-  return impl_->links_at(impl_->t, y);
+  impl_->integ->interpolate(impl_->seg.t, y);
+  return impl_->links_at(impl_->seg.t, y);
 }
 
-const std::vector<ClearanceSample>& ClearanceSimulator::samples() const { return impl_->samples; }
-const std::vector<ImpactRecord>& ClearanceSimulator::impacts() const { return impl_->impacts; }
-const std::vector<RevolutionRecord>& ClearanceSimulator::revolutions() const { return impl_->revolutions; }
+const std::vector<ClearanceSample>& ClearanceSimulator::samples() const { return impl_->books.samples; }
+const std::vector<ImpactRecord>& ClearanceSimulator::impacts() const { return impl_->books.impacts; }
+const std::vector<RevolutionRecord>& ClearanceSimulator::revolutions() const { return impl_->books.revolutions; }
 
 ClearanceDiagnostics ClearanceSimulator::diagnostics() {
   Impl& s = *impl_;
   OdeState y;
-  s.integ->interpolate(s.t, y);
-  const LinkMotion m = s.links_at(s.t, y);
+  s.integ->interpolate(s.seg.t, y);
+  const LinkMotion m = s.links_at(s.seg.t, y);
   const double work = s.work_of(y);
   const double friction = s.friction_of(y);
-  s.check_energy(s.t, m, work, friction);
-  ClearanceDiagnostics d = s.diag;
+  s.check_energy(s.seg.t, m, work, friction);
+  ClearanceDiagnostics d = s.books.diag;
   d.crank_work_J = work;
-  d.motor_impulse_work_J = s.work_impulse.value();
-  d.impact_loss_J = s.loss.value();
-  d.energy_end_J = s.energy(s.t, m);
+  d.motor_impulse_work_J = s.energy_books.work_impulse.value();
+  d.impact_loss_J = s.energy_books.loss.value();
+  d.energy_end_J = s.energy(s.seg.t, m);
   d.friction_loss_J = friction;
   d.energy_residual_J = d.energy_end_J - d.energy_start_J - work - d.motor_impulse_work_J + d.impact_loss_J + friction;
   d.steps = s.integ->steps();

@@ -37,69 +37,92 @@ struct ClearanceSimulator::Impl {
   std::unique_ptr<DenseIntegrator> integ;
   ImpactLaw law{settings.restitution, settings.contact, settings.friction_coefficient};
 
-  // Scales of the integrated (scaled) state.
-  double speed_scale = 1;   // |ω2| at the start
-  double delta_scale = 1;   // ξ/l3
-  double energy_scale = 1;  // J
-  double force_guard = 0;   // N_guard
-  double arm_depth = 0;     // penetration below which a free flight from the wall counts as "inside"
+  // The fields are grouped by the stage that fills them (as MuJoCo's mjData
+  // groups its fields by stage).
+
+  /// Scales of the integrated (scaled) state; set once by prepare().
+  struct Scales {
+    double speed_rad_s = 1;    // |ω2| at the start
+    double delta = 1;          // ξ/l3
+    double energy_J = 1;
+    double force_guard_N = 0;  // N_guard
+    double arm_depth_m = 0;    // penetration below which a free flight from the wall counts as "inside"
+  } scale;
 
   // Time is measured locally: the absolute time is origin + t, where the
   // origin moves to each segment's start (long runs keep the resolution of
   // the local time; see crank_motion.hpp). Every time inside Impl is local
   // unless named absolute.
-  double origin = 0;
-  CrankState crank_at(double time) const { return crank.at_local(origin, time); }
-  double absolute(double time) const { return origin + time; }
-  double local(double absolute_time) const { return absolute_time - origin; }
-
+  struct LocalClock {
+    double origin_s = 0;  // absolute time of local time 0
+  } clock;
+  CrankState crank_at(double time) const { return crank.at_local(clock.origin_s, time); }
+  double absolute(double time) const { return clock.origin_s + time; }
+  double local(double absolute_time) const { return absolute_time - clock.origin_s; }
   /// Moves the origin to the local time `time`; returns that instant in the
   /// new local time (the rounding remainder of origin + time, ~1e-13 s at most).
   double rebase(double time);
 
-  // Current segment.
-  double t = 0;
-  ContactMode mode = ContactMode::following;
-  bool armed = true;         // free flight: the pin has left the wall since the segment start
-  double segment_start = 0;  // start time of the current smooth segment
-  int zeno_count = 0;
-  bool stage_filter = false;  // the integrator's right-hand-side calls lie inside its steps
-  double last_event = -1e300;
+  /// The current smooth segment; set by the segment starts, advanced by the main loop.
+  struct Segment {
+    double t = 0;  // the current (local) time
+    ContactMode mode = ContactMode::following;
+    bool armed = true;  // free flight: the pin has left the wall since the segment start
+    double start = 0;   // start time of the current smooth segment
+  } seg;
 
-  // Witness samples carried across steps of one segment.
+  /// Events closer than kZenoSpan_s in a row (zeno_guard); last_event is a local time, moved by rebase().
+  struct ZenoBook {
+    int count = 0;
+    double last_event = -1e300;
+  } zeno;
+
+  // Witness samples carried across steps of one segment (event_scan.cpp).
   struct FreeSample { double t, pen, speed; };
   struct FollowSample { double t, w, slip; };
-  FreeSample free_prev{};
-  std::vector<FollowSample> follow_hist;
+  struct Witnesses {
+    bool stage_filter = false;  // the integrator's right-hand-side calls lie inside its steps
+    FreeSample free_prev{};
+    std::vector<FollowSample> follow_hist;
+  } witness;
 
-  // Books.
-  std::vector<double> sample_times;
-  std::size_t next_sample = 0;
-  std::vector<ClearanceSample> samples;
-  std::vector<ImpactRecord> impacts;
-  std::vector<RevolutionRecord> revolutions;
-  bool revolutions_on = false;
-  int stats_per_turn = 0;        // α3-deviation samples per turn (0 = off)
-  long long next_stat = 0;       // index of the next one, counted from the revolution origin
-  double rev_origin = 0;
-  int rev_dir = 1;
-  ClearanceDiagnostics diag;
-  CompensatedSum work_closed;  // crank work of the closed smooth segments
-  // The work component starts each segment at the closed work (scaled), so
-  // the integrator's error control on it is as before; the segment's part is
-  // y − work_seed, booked into work_closed at the segment's end. (Starting it
-  // at 0 tightened that control and moved the chaotic event paths: the
-  // wall-friction energy test then missed its bound with CVODE.)
-  double work_seed = 0;
-  CompensatedSum work_impulse, loss;
+  /// What the run records as it passes sample times, events and turn boundaries.
+  struct Books {
+    std::vector<double> sample_times;
+    std::size_t next_sample = 0;
+    std::vector<ClearanceSample> samples;
+    std::vector<ImpactRecord> impacts;
+    std::vector<RevolutionRecord> revolutions;
+    bool revolutions_on = false;
+    int stats_per_turn = 0;   // α3-deviation samples per turn (0 = off)
+    long long next_stat = 0;  // index of the next one, counted from the revolution origin
+    double rev_origin_rad = 0;
+    int rev_dir = 1;
+    ClearanceDiagnostics diag;
+  } books;
+
+  /// The energy balance's integrals over closed segments and at impacts.
+  struct EnergyBooks {
+    CompensatedSum work_closed;  // crank work of the closed smooth segments
+    // The work component starts each segment at the closed work (scaled), so
+    // the integrator's error control on it is as before; the segment's part is
+    // y − work_seed, booked into work_closed at the segment's end. (Starting it
+    // at 0 tightened that control and moved the chaotic event paths: the
+    // wall-friction energy test then missed its bound with CVODE.)
+    double work_seed = 0;
+    CompensatedSum work_impulse, loss;
+    CompensatedSum friction_loss;  // dissipated by wall friction in closed following segments
+  } energy_books;
+
   // Following-mode wall friction (settings.following_friction): μ and the
   // sliding direction (+1/−1) or 0 while stuck; the slip witness is armed
-  // once the pin slides faster than slip_arm_speed after a start from rest.
-  WallFriction wall;
-  bool slip_armed = true;
-  double slip_arm_speed = 0;    // m/s
-  double slip_force_per_speed = 0;  // N per m/s: slip speed in the witness's force units
-  CompensatedSum friction_loss;  // dissipated by wall friction in closed following segments
+  // once the pin slides faster than slip_arm_speed_m_s after a start from rest.
+  struct WallSlip {
+    WallFriction friction;
+    bool slip_armed = true;
+    double slip_arm_speed_m_s = 0;
+    double slip_force_per_speed = 0;  // N per m/s: slip speed in the witness's force units
+  } wall;
 
   // ---- state conversion (mode_equations.cpp) ---------------------------
 
@@ -109,7 +132,7 @@ struct ClearanceSimulator::Impl {
   // Following: y = (η, η̇/|ω2|, W/E, D/E, 0) with W the crank work (from
   // work_seed) and D the wall-friction loss of the segment (from 0).
   double eta_of(const OdeState& y) const { return y[0]; }
-  double eta_rate_of(const OdeState& y) const { return y[1] * speed_scale; }
+  double eta_rate_of(const OdeState& y) const { return y[1] * scale.speed_rad_s; }
   double segment_work(const OdeState& y) const;
   double segment_friction(const OdeState& y) const;
   /// Crank work up to now: closed segments plus the open one.
