@@ -128,7 +128,7 @@ void ClearanceSimulator::Impl::handle_impact(double time) {
   const bool counted = b.normal_speed_m_s > settings.settle_speed_m_s;
   (counted ? books.diag.impacts : books.diag.touches) += 1;
   if (rec.result.degenerate) ++books.diag.degenerate_impacts;
-  if (rec.result.energy_loss_J < -1e-15 * scale.energy_J) ++books.diag.energy_gaining_impacts;
+  if (rec.result.energy_loss_J < -kEnergyGainFraction * scale.energy_J) ++books.diag.energy_gaining_impacts;
   energy_books.work_impulse.add(c.speed_rad_s * rec.result.motor_impulse_Nms);
   energy_books.loss.add(rec.result.energy_loss_J);
   if (books.revolutions_on && counted && rec.revolution >= 0) {

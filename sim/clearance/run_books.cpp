@@ -23,7 +23,7 @@ double ClearanceSimulator::Impl::energy_of_links(const CrankState& c, const Link
 
 int ClearanceSimulator::Impl::revolution_of(double time) const {
   const double turns = (crank.at(absolute(time)).angle_rad - books.rev_origin_rad) * books.rev_dir / units::kTwoPi;
-  return static_cast<int>(std::floor(turns + 1e-12));
+  return static_cast<int>(std::floor(turns + kTurnBoundarySlack_turns));
 }
 
 double ClearanceSimulator::Impl::revolution_start(int k) const {

@@ -37,10 +37,10 @@ void ClearanceSimulator::Impl::prepare(double t0) {
   scale.delta = model.clearance_m() / model.rig().coupler.length_m;
   scale.energy_J = model.energy_scale_J(c.speed_rad_s);
   if (!(scale.energy_J > 0)) scale.energy_J = 1.0;  // a rig at rest without gravity
-  scale.force_guard_N = 1e-9 * model.force_scale_N(c.speed_rad_s);
-  scale.arm_depth_m = 1e-11 * model.clearance_m();
+  scale.force_guard_N = kForceGuardFraction * model.force_scale_N(c.speed_rad_s);
+  scale.arm_depth_m = kArmDepthFraction * model.clearance_m();
   wall.friction = {settings.following_friction ? settings.friction_coefficient : 0.0, 1};
-  wall.slip_arm_speed_m_s = 1e-9 * model.clearance_m() * scale.speed_rad_s;
+  wall.slip_arm_speed_m_s = kSlipArmSpeedFraction * model.clearance_m() * scale.speed_rad_s;
   wall.slip_force_per_speed = model.force_scale_N(c.speed_rad_s) / (model.clearance_m() * scale.speed_rad_s);
   books.rev_dir = c.speed_rad_s < 0 ? -1 : 1;
   following_ode.s = this;
@@ -53,7 +53,7 @@ void ClearanceSimulator::Impl::prepare(double t0) {
 void ClearanceSimulator::Impl::prepare_origin(double t0) {
   clock.origin_s = t0;
   seg.t = seg.start = 0;
-  zeno.last_event = -1e300;
+  zeno.last_event = -kNoneYet;
 }
 
 // ---- the main loop ------------------------------------------------------------
@@ -122,7 +122,7 @@ void ClearanceSimulator::start_nominal(double t0) {
   };
   const double eta0 = direction(0.0);  // local times from here on
   // Its rate by a 4th-order central difference of the nominal force angle.
-  const double h = 1e-4 / s.scale.speed_rad_s;
+  const double h = kRateDifferenceStep_rad / s.scale.speed_rad_s;
   auto rel = [&](double time) { return eta0 + std::remainder(direction(time) - eta0, units::kTwoPi); };
   const double rate = (rel(-2 * h) - 8 * rel(-h) + 8 * rel(h) - rel(2 * h)) / (12 * h);
   const CrankState c = s.crank_at(0.0);

@@ -27,6 +27,28 @@ constexpr int kZenoLimit = 100000;
 /// time origin, so its local time (and local crank angle) stays small.
 constexpr double kRestartTurns = 64;
 
+// Guards and tolerances, each relative to the run's own scales (set in prepare()).
+/// N_guard as a fraction of the force scale: the contact-loss witness is
+/// N + N_guard, so round-off in N near zero cannot flip the mode (see README).
+constexpr double kForceGuardFraction = 1e-9;
+/// Arm depth as a fraction of ξ: a free flight from the wall counts as
+/// "inside" only below this penetration, well above round-off in |e| − ξ.
+constexpr double kArmDepthFraction = 1e-11;
+/// Slip arm speed in units of ξ·|ω2|: slower slip counts as none (choose_slip
+/// then tests sticking), and after a start from rest the slip witness waits for it.
+constexpr double kSlipArmSpeedFraction = 1e-9;
+/// Turns added before flooring a crank angle to its revolution index, so a
+/// time located on a turn boundary to round-off counts in the new turn.
+constexpr double kTurnBoundarySlack_turns = 1e-12;
+/// An impact "gains energy" only past this fraction of the energy scale
+/// (below it the balance is round-off).
+constexpr double kEnergyGainFraction = 1e-15;
+/// Stands for "none yet": the first stage value's min/max bounds and the
+/// time of the last event before any; finite, so differences stay finite.
+constexpr double kNoneYet = 1e300;
+/// Crank angle step of the central difference for the starting η̇ (start_nominal).
+constexpr double kRateDifferenceStep_rad = 1e-4;
+
 struct ClearanceSimulator::Impl {
   Impl(const ClearanceModel& m, const CrankMotion& c, const ClearanceSettings& s)
       : model(m), crank(c), settings(s), integ(make_integrator(s.integrator, s.tolerance)) {}
@@ -74,7 +96,7 @@ struct ClearanceSimulator::Impl {
   /// Events closer than kZenoSpan_s in a row (zeno_guard); last_event is a local time, moved by rebase().
   struct ZenoBook {
     int count = 0;
-    double last_event = -1e300;
+    double last_event = -kNoneYet;
   } zeno;
 
   // Witness samples carried across steps of one segment (event_scan.cpp).
@@ -154,7 +176,7 @@ struct ClearanceSimulator::Impl {
     /// clear(): with a Runge–Kutta integrator these are its stage values
     /// inside the step (and inside rejected, longer trial steps).
     double w_min = 0, w_max = 0;
-    void clear() { w_min = 1e300, w_max = -1e300; }
+    void clear() { w_min = kNoneYet, w_max = -kNoneYet; }
     void rhs(double time, const OdeState& y, OdeState& dy) override;
   } following_ode;
 
@@ -163,7 +185,7 @@ struct ClearanceSimulator::Impl {
     /// Largest and smallest penetration |e| − ξ over the right-hand-side
     /// calls since the last clear() (see FollowingOde::w_min).
     double pen_min = 0, pen_max = 0;
-    void clear() { pen_min = 1e300, pen_max = -1e300; }
+    void clear() { pen_min = kNoneYet, pen_max = -kNoneYet; }
     void rhs(double time, const OdeState& y, OdeState& dy) override;
   } free_ode;
 
