@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "analyze/integration.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
+#include "common/statistics.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
@@ -23,12 +24,6 @@ FilterSpec without_low_corner(FilterSpec f) {
   return f;
 }
 
-double rms(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x * x;
-  return v.empty() ? 0.0 : std::sqrt(s / static_cast<double>(v.size()));
-}
-
 AccelerometerMount mount_of(const ChannelSpec& c) {
   AccelerometerMount m;
   m.channel = c.name;
@@ -43,13 +38,6 @@ AccelerometerMount mount_of(const ChannelSpec& c) {
 }
 
 }  // namespace
-
-std::string format_value(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 
 AnalysisChannels analysis_channels(const Manifest& manifest) {
   AnalysisChannels out;
@@ -131,22 +119,22 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   try {
     validate_filter(f, fs_);
   } catch (const InputError& e) {
-    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + format_value(fs_) + " Hz)");
+    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + format_number(fs_) + " Hz)");
   }
   if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(longest)) {
     // The kernel must not be longer than twice the longest segment (shorter
     // segments are left out, with a warning, in end_segment).
-    const std::string where = "the longest pulse-train segment (" + format_value(longest / fs_) + " s)";
+    const std::string where = "the longest pulse-train segment (" + format_number(longest / fs_) + " s)";
     if (s.transition_hz)
-      throw InputError("analyze: a " + format_value(f.transition_hz) + " Hz transition needs a kernel of " +
+      throw InputError("analyze: a " + format_number(f.transition_hz) + " Hz transition needs a kernel of " +
                        std::to_string(kernel_taps(f, fs_)) + " taps, longer than twice " + where +
                        "; give a wider --transition-hz, or --window rectangular --transition-hz 0 (ideal filter)");
     const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (longest - 2.0) * 1.01;
     if (!(wider <= 0.8 * f_crank) || longest < 4)
       throw InputError("analyze: " + where + " is too short for a windowed filter that keeps the crank frequency (" +
-                       format_value(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
-    result_.warnings.push_back("filter transition widened from " + format_value(f.transition_hz) + " Hz to " +
-                               format_value(wider) + " Hz so that its kernel fits " + where);
+                       format_number(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
+    result_.warnings.push_back("filter transition widened from " + format_number(f.transition_hz) + " Hz to " +
+                               format_number(wider) + " Hz so that its kernel fits " + where);
     f.transition_hz = wider;
   }
   filter_ = f;
@@ -163,9 +151,9 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
     N = 720;
     while (N < needed) N += 360;
   } else if (N < needed) {
-    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + format_value(0.5 * N) + " orders (" +
-                               format_value(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
-                               format_value(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
+    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + format_number(0.5 * N) + " orders (" +
+                               format_number(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
+                               format_number(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
   }
   grid_ = {N, offset_rad_, direction_};
 
@@ -444,9 +432,9 @@ void ChunkedAnalysis::end_segment() {
   if (!in_segment_) return;
   const bool too_short = half_kernel_ > 0 && end_ <= half_kernel_;  // never a chunk yet: end_ is the segment's length
   if (too_short)
-    result_.warnings.push_back("pulse-train segment of " + format_value(double(end_) / fs_) + " s (revolutions " +
+    result_.warnings.push_back("pulse-train segment of " + format_number(double(end_) / fs_) + " s (revolutions " +
                                std::to_string(first_rev_) + " to " + std::to_string(*last_rev_) +
-                               ") is shorter than half the filter kernel (" + format_value(double(half_kernel_) / fs_) +
+                               ") is shorter than half the filter kernel (" + format_number(double(half_kernel_) / fs_) +
                                " s): not analysed");
   else if (last_rev_ && static_cast<std::int64_t>(next_rev_) <= *last_rev_)
     process_chunk(static_cast<std::size_t>(*last_rev_) + 1, true);

@@ -41,9 +41,6 @@ struct AnalysisChannels {
   std::vector<std::string> warnings;
 };
 
-/// A value for a message: six significant digits.
-std::string format_value(double v);
-
 /// Picks the channels (the first of each role; InputError when the manifest
 /// has no coupler_tangential channel). Mounts in SI, axis sign +1 (acquire
 /// applies the manifest's sign).
