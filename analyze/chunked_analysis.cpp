@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analyze/analysis_defaults.hpp"
 #include "analyze/integration.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
@@ -108,14 +109,15 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
 
   // The α filter, defaults following the crank speed and the sample rate.
   const FilterSettings& s = o.filter;
+  namespace defaults = analysis_defaults;
   FilterSpec f;
   f.band = s.band;
-  if (uses_low(f.band)) f.low_hz = s.low_hz.value_or(0.5 * f_crank);
-  if (uses_high(f.band)) f.high_hz = s.high_hz.value_or(std::min(1000.0, 0.4 * fs_));
+  if (uses_low(f.band)) f.low_hz = s.low_hz.value_or(defaults::kLowCornerPerCrankHz * f_crank);
+  if (uses_high(f.band)) f.high_hz = s.high_hz.value_or(std::min(defaults::kHighCornerCapHz, defaults::kHighCornerMaxPerSampleRate * fs_));
   f.mains_hz = s.mains_hz;
   f.mains_width_hz = s.mains_width_hz;
   f.window = s.window;
-  f.transition_hz = s.transition_hz.value_or(0.15 * f_crank);
+  f.transition_hz = s.transition_hz.value_or(defaults::kTransitionPerCrankHz * f_crank);
   try {
     validate_filter(f, fs_);
   } catch (const InputError& e) {
@@ -145,11 +147,11 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
 
   // The grid: N crank angles that hold the pass band at the fastest revolution.
   const double upper = uses_high(f.band) ? f.high_hz + 0.5 * f.transition_hz : 0.5 * fs_;
-  const auto needed = static_cast<std::size_t>(std::ceil(upper / (0.4 * f_fastest)));
+  const auto needed = static_cast<std::size_t>(std::ceil(upper / (defaults::kGridMaxOrdersPerPoint * f_fastest)));
   std::size_t N = o.points_per_rev;
   if (N == 0) {
-    N = 720;
-    while (N < needed) N += 360;
+    N = defaults::kGridPoints;
+    while (N < needed) N += defaults::kGridPointsStep;
   } else if (N < needed) {
     result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + format_number(0.5 * N) + " orders (" +
                                format_number(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
@@ -168,11 +170,11 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   chunk_revs_ = o.chunk_revolutions;
   if (chunk_revs_ == 0) {
     if (taps > 0) {
-      double fft = double(std::size_t{1} << 20);
+      double fft = double(defaults::kChunkFftFrames);
       while (fft < 8.0 * double(overlap_)) fft *= 2;
       chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::floor((fft - 4.0 * double(overlap_) - 64) / slowest)));
     } else {
-      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::ceil(double(std::size_t{1} << 19) / per_rev)));
+      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::ceil(double(defaults::kIdealChunkFrames) / per_rev)));
     }
   }
   if (taps > 0) {
