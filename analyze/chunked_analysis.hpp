@@ -21,30 +21,12 @@
 #include <string>
 #include <vector>
 
+#include "analyze/analysis_channels.hpp"
 #include "analyze/link_analysis.hpp"
 #include "analyze/pipeline.hpp"
 #include "analyze/spectrum.hpp"
 
 namespace fourbar {
-
-/// The manifest's accelerometer channels as analyze uses them.
-struct AnalysisChannel {
-  std::size_t index = 0;  ///< in acquire's channel list (SampleBlock::channels_m_s2)
-  AccelerometerMount mount;
-};
-struct LinkChannels {
-  SensedLink link = SensedLink::coupler;
-  std::optional<AnalysisChannel> tangential, normal;
-};
-struct AnalysisChannels {
-  std::vector<LinkChannels> links;  ///< coupler first, then rocker; only links with a tangential channel
-  std::vector<std::string> warnings;
-};
-
-/// Picks the channels (the first of each role; InputError when the manifest
-/// has no coupler_tangential channel). Mounts in SI, axis sign +1 (acquire
-/// applies the manifest's sign).
-AnalysisChannels analysis_channels(const Manifest& manifest);
 
 class ChunkedAnalysis final : public AcquisitionSink {
  public:
