@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analyze/analysis_defaults.hpp"
+#include "analyze/analysis_settings.hpp"
+#include "analyze/chunk_plan.hpp"
 #include "analyze/integration.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
@@ -11,21 +12,6 @@
 #include "common/units.hpp"
 
 namespace fourbar {
-
-namespace {
-
-bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
-bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
-
-// ω² has a mean: the normal channels keep everything below the upper corner.
-FilterSpec without_low_corner(FilterSpec f) {
-  if (f.band == BandType::bandpass) f.band = BandType::lowpass;
-  else if (f.band == BandType::highpass) f.band = BandType::all_pass;
-  if (!uses_low(f.band)) f.low_hz = 0;
-  return f;
-}
-
-}  // namespace
 
 struct ChunkedAnalysis::Pending {
   std::size_t number = 0;
@@ -58,109 +44,47 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   direction_ = manifest_.crank_direction;
   offset_rad_ = manifest_.pulse_channel().crank_offset_rad;
   mean_speed_rad_s_ = direction_ * units::rpm_to_rad_s(report.speed.mean_rpm);
-  const double f_crank = report.speed.mean_rpm / 60.0, f_fastest = report.speed.max_rpm / 60.0;
-  const double per_rev = report.samples_per_turn;
-  double longest = 0;  // pulse-train segments, in samples
-  for (const auto& seg : report.pulses.segments) {
-    if (seg.size() < 2) continue;
-    const double len = (seg.back().time_s - seg.front().time_s) * fs_;
-    longest = std::max(longest, len);
-  }
+  const double mean_crank_hz = report.speed.mean_rpm / 60.0, fastest_crank_hz = report.speed.max_rpm / 60.0;
+  const double frames_per_rev = report.samples_per_turn;
+  const double longest_frames = longest_segment_frames(report.pulses, fs_);
 
-  // The α filter, defaults following the crank speed and the sample rate.
-  const FilterSettings& s = o.filter;
-  namespace defaults = analysis_defaults;
-  FilterSpec f;
-  f.band = s.band;
-  if (uses_low(f.band)) f.low_hz = s.low_hz.value_or(defaults::kLowCornerPerCrankHz * f_crank);
-  if (uses_high(f.band)) f.high_hz = s.high_hz.value_or(std::min(defaults::kHighCornerCapHz, defaults::kHighCornerMaxPerSampleRate * fs_));
-  f.mains_hz = s.mains_hz;
-  f.mains_width_hz = s.mains_width_hz;
-  f.window = s.window;
-  f.transition_hz = s.transition_hz.value_or(defaults::kTransitionPerCrankHz * f_crank);
-  try {
-    validate_filter(f, fs_);
-  } catch (const InputError& e) {
-    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + format_number(fs_) + " Hz)");
-  }
-  if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(longest)) {
-    // The kernel must not be longer than twice the longest segment (shorter
-    // segments are left out, with a warning, in end_segment).
-    const std::string where = "the longest pulse-train segment (" + format_number(longest / fs_) + " s)";
-    if (s.transition_hz)
-      throw InputError("analyze: a " + format_number(f.transition_hz) + " Hz transition needs a kernel of " +
-                       std::to_string(kernel_taps(f, fs_)) + " taps, longer than twice " + where +
-                       "; give a wider --transition-hz, or --window rectangular --transition-hz 0 (ideal filter)");
-    const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (longest - 2.0) * 1.01;
-    if (!(wider <= 0.8 * f_crank) || longest < 4)
-      throw InputError("analyze: " + where + " is too short for a windowed filter that keeps the crank frequency (" +
-                       format_number(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
-    result_.warnings.push_back("filter transition widened from " + format_number(f.transition_hz) + " Hz to " +
-                               format_number(wider) + " Hz so that its kernel fits " + where);
-    f.transition_hz = wider;
-  }
-  filter_ = f;
-  normal_filter_ = without_low_corner(f);
-  const std::size_t taps = f.transition_hz > 0 ? kernel_taps(f, fs_) : 0;
+  filter_ = resolve_filter(o.filter, fs_, mean_crank_hz, longest_frames, result_.warnings);
+  normal_filter_ = without_low_corner(filter_);
+  const std::size_t taps = filter_kernel_taps(filter_, fs_);
   half_kernel_ = taps / 2;
-  overlap_ = (taps > 0 ? half_kernel_ : static_cast<std::size_t>(std::ceil(2 * per_rev))) + 8;
+  overlap_ = chunk_overlap_frames(taps, frames_per_rev);
+  grid_ = {resolve_grid_points(o.points_per_rev, filter_, fs_, fastest_crank_hz, result_.warnings), offset_rad_,
+           direction_};
 
-  // The grid: N crank angles that hold the pass band at the fastest revolution.
-  const double upper = uses_high(f.band) ? f.high_hz + 0.5 * f.transition_hz : 0.5 * fs_;
-  const auto needed = static_cast<std::size_t>(std::ceil(upper / (defaults::kGridMaxOrdersPerPoint * f_fastest)));
-  std::size_t N = o.points_per_rev;
-  if (N == 0) {
-    N = defaults::kGridPoints;
-    while (N < needed) N += defaults::kGridPointsStep;
-  } else if (N < needed) {
-    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + format_number(0.5 * N) + " orders (" +
-                               format_number(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
-                               format_number(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
-  }
-  grid_ = {N, offset_rad_, direction_};
+  const double slowest_rev_frames = slowest_revolution_frames(fs_, report.speed.min_rpm);
+  chunk_revs_ = plan_chunk_revolutions(o.chunk_revolutions, taps, overlap_, slowest_rev_frames, frames_per_rev);
+  if (taps > 0)
+    make_filter_blocks(filter_block_frames(chunk_revs_, slowest_rev_frames, overlap_, longest_frames, half_kernel_));
+  make_spectra(resolve_spectrum_segment_frames(o.spectrum_segment, frames_per_rev, longest_frames));
+  make_averagers();
+  lay_out_result(taps);
+}
 
-  // Chunks of K revolutions. A chunk with its overlaps, or the periodic
-  // continuation at a segment end, is at most K revolutions + 2·overlap +
-  // half a kernel long (a segment's tail chunk takes what is left: less than
-  // K revolutions + overlap); its linear convolution needs half a kernel of
-  // zeros more. K is chosen so that this fits an FFT of 2^20 samples (more
-  // for very long kernels): the transforms then cost about 1.5× the chunk's
-  // own samples. The ideal filter (thesis) takes the chunk as one period.
-  const double slowest = fs_ * 60.0 / std::max(report.speed.min_rpm, 1e-9);  // samples in the slowest revolution
-  chunk_revs_ = o.chunk_revolutions;
-  if (chunk_revs_ == 0) {
-    if (taps > 0) {
-      double fft = double(defaults::kChunkFftFrames);
-      while (fft < 8.0 * double(overlap_)) fft *= 2;
-      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::floor((fft - 4.0 * double(overlap_) - 64) / slowest)));
-    } else {
-      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::ceil(double(defaults::kIdealChunkFrames) / per_rev)));
-    }
-  }
-  if (taps > 0) {
-    const double longest_chunk = std::min(double(chunk_revs_) * slowest + 2.0 * double(overlap_), longest + 2.0);
-    const auto capacity = static_cast<std::size_t>(std::ceil(longest_chunk + double(half_kernel_))) + 16;
-    alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, capacity, Boundary::zero);
-    if (channels_.links.front().normal || channels_.links.back().normal)
-      normal_filter_block_ =
-          std::make_unique<FftFilter>(normal_filter_, fs_, capacity, Boundary::zero, alpha_filter_->transform());
-  }
+void ChunkedAnalysis::make_filter_blocks(std::size_t block_frames) {
+  alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, block_frames, Boundary::zero);
+  if (channels_.links.front().normal || channels_.links.back().normal)
+    normal_filter_block_ =
+        std::make_unique<FftFilter>(normal_filter_, fs_, block_frames, Boundary::zero, alpha_filter_->transform());
+}
 
-  // Spectrum segments: a power of two ≥ 8 revolutions, within the longest segment.
-  std::size_t seg = o.spectrum_segment;
-  if (seg == 0) {
-    seg = 16;
-    while (double(seg) < 8 * per_rev) seg *= 2;
-    while (double(seg) > longest && seg > 16) seg /= 2;
-  }
-  result_.spectra.segment_length = seg;
+void ChunkedAnalysis::make_spectra(std::size_t segment_frames) {
+  result_.spectra.segment_length = segment_frames;
   spectra_.clear();
   for (std::size_t j = 0; j < channels_.links.size(); ++j)
-    spectra_.push_back(std::make_unique<SpectrumAverager>(fs_, WelchOptions{seg, seg / 2, {WindowType::hann, 0}}));
+    spectra_.push_back(
+        std::make_unique<SpectrumAverager>(fs_, WelchOptions{segment_frames, segment_frames / 2, {WindowType::hann, 0}}));
   result_.spectra.frequency_hz = spectra_.front()->frequency_hz();
   result_.spectra.order = order_axis(result_.spectra.frequency_hz, mean_speed_rad_s_);
-  result_.spectra.filter_gain = zero_phase_response(f, fs_, seg);
+  result_.spectra.filter_gain = zero_phase_response(filter_, fs_, segment_frames);
+}
 
+void ChunkedAnalysis::make_averagers() {
+  const std::size_t N = grid_.points_per_rev;
   tables_ = std::make_shared<const RigTables>(*manifest_.rig);
   speed_avg_ = std::make_unique<SynchronousAverager>(N);
   const std::size_t links = channels_.links.size();
@@ -169,7 +93,10 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   normal_avg_.assign(links, SynchronousAverager(N));
   omega_sq_avg_.assign(links, SynchronousAverager(N));
   omega_carry_.assign(links, std::nullopt);
+}
 
+void ChunkedAnalysis::lay_out_result(std::size_t taps) {
+  const std::size_t N = grid_.points_per_rev;
   result_.filter = filter_;
   result_.normal_filter = normal_filter_;
   result_.kernel_taps = taps;

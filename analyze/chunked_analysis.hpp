@@ -44,6 +44,10 @@ class ChunkedAnalysis final : public AcquisitionSink {
  private:
   struct Pending;
   void resolve_settings(const AcquisitionReport& report);
+  void make_filter_blocks(std::size_t block_frames);
+  void make_spectra(std::size_t segment_frames);
+  void make_averagers();
+  void lay_out_result(std::size_t taps);
   void process_ready();
   void process_chunk(std::size_t rev_end, bool segment_end);
   void end_segment();
