@@ -1,89 +1,16 @@
+// ChunkedAnalysis, the driver (chunked_analysis.hpp): turns acquire's plan
+// into the analysis settings (analysis_settings.hpp, chunk_plan.hpp), makes
+// the filter blocks, spectra and averagers, lays out the result, and takes
+// the clipping flags of the revolutions. The buffering, the per-chunk
+// transform and the results are in chunk_stitching.cpp, chunk_transform.cpp
+// and revolution_results.cpp.
 #include "analyze/chunked_analysis.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <sstream>
-
-#include "analyze/integration.hpp"
-#include "common/error.hpp"
+#include "analyze/analysis_settings.hpp"
+#include "analyze/chunk_plan.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
-
-namespace {
-
-bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
-bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
-
-// ω² has a mean: the normal channels keep everything below the upper corner.
-FilterSpec without_low_corner(FilterSpec f) {
-  if (f.band == BandType::bandpass) f.band = BandType::lowpass;
-  else if (f.band == BandType::highpass) f.band = BandType::all_pass;
-  if (!uses_low(f.band)) f.low_hz = 0;
-  return f;
-}
-
-double rms(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x * x;
-  return v.empty() ? 0.0 : std::sqrt(s / static_cast<double>(v.size()));
-}
-
-AccelerometerMount mount_of(const ChannelSpec& c) {
-  AccelerometerMount m;
-  m.channel = c.name;
-  m.link = is_on_coupler(c.role) ? SensedLink::coupler : SensedLink::rocker;
-  m.axis = is_tangential(c.role) ? SensorAxis::tangential : SensorAxis::normal;
-  m.distance_m = c.position_m;
-  m.from = MeasuredFrom::first_joint;
-  m.offset_m = c.offset_m;
-  m.axis_sign = 1;  // acquire has applied the manifest's axis_sign
-  m.high_pass_corner_hz = c.ac_coupled ? c.highpass_hz : 0.0;
-  return m;
-}
-
-}  // namespace
-
-std::string format_value(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
-AnalysisChannels analysis_channels(const Manifest& manifest) {
-  AnalysisChannels out;
-  LinkChannels coupler{SensedLink::coupler, {}, {}}, rocker{SensedLink::rocker, {}, {}};
-  std::size_t index = 0;  // among the accelerometer channels, as acquire lists them
-  for (const ChannelSpec& c : manifest.channels) {
-    if (!is_accelerometer(c.role)) continue;
-    LinkChannels& link = is_on_coupler(c.role) ? coupler : rocker;
-    std::optional<AnalysisChannel>& slot = is_tangential(c.role) ? link.tangential : link.normal;
-    if (slot)
-      out.warnings.push_back("channel '" + c.name + "' is a second " + to_string(c.role) + " channel: analysed is '" +
-                             slot->mount.channel + "' only");
-    else
-      slot = AnalysisChannel{index, mount_of(c)};
-    ++index;
-  }
-  if (!coupler.tangential)
-    throw InputError(manifest.file.string() +
-                     ": no coupler channel: analyze needs a [[channel]] with role = \"coupler_tangential\" (the "
-                     "coupler's angular acceleration comes from it); add it, with its position_mm on the coupler");
-  out.links.push_back(coupler);
-  if (rocker.tangential) out.links.push_back(rocker);
-  else if (rocker.normal)
-    out.warnings.push_back("channel '" + rocker.normal->mount.channel +
-                           "' (rocker_normal) is not analysed: there is no rocker_tangential channel to check it against");
-  return out;
-}
-
-struct ChunkedAnalysis::Pending {
-  std::size_t number = 0;
-  bool leading_guard = false;
-  std::vector<double> speed;
-  std::vector<std::vector<double>> alpha, omega, omega_sq;  // per link; omega_sq empty without a normal channel
-};
 
 ChunkedAnalysis::ChunkedAnalysis(RecordingAnalysis& result, const Manifest& manifest, AnalysisChannels channels,
                                  RevolutionObserver* observer)
@@ -109,108 +36,47 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   direction_ = manifest_.crank_direction;
   offset_rad_ = manifest_.pulse_channel().crank_offset_rad;
   mean_speed_rad_s_ = direction_ * units::rpm_to_rad_s(report.speed.mean_rpm);
-  const double f_crank = report.speed.mean_rpm / 60.0, f_fastest = report.speed.max_rpm / 60.0;
-  const double per_rev = report.samples_per_turn;
-  double longest = 0;  // pulse-train segments, in samples
-  for (const auto& seg : report.pulses.segments) {
-    if (seg.size() < 2) continue;
-    const double len = (seg.back().time_s - seg.front().time_s) * fs_;
-    longest = std::max(longest, len);
-  }
+  const double mean_crank_hz = report.speed.mean_rpm / 60.0, fastest_crank_hz = report.speed.max_rpm / 60.0;
+  const double frames_per_rev = report.samples_per_turn;
+  const double longest_frames = longest_segment_frames(report.pulses, fs_);
 
-  // The α filter, defaults following the crank speed and the sample rate.
-  const FilterSettings& s = o.filter;
-  FilterSpec f;
-  f.band = s.band;
-  if (uses_low(f.band)) f.low_hz = s.low_hz.value_or(0.5 * f_crank);
-  if (uses_high(f.band)) f.high_hz = s.high_hz.value_or(std::min(1000.0, 0.4 * fs_));
-  f.mains_hz = s.mains_hz;
-  f.mains_width_hz = s.mains_width_hz;
-  f.window = s.window;
-  f.transition_hz = s.transition_hz.value_or(0.15 * f_crank);
-  try {
-    validate_filter(f, fs_);
-  } catch (const InputError& e) {
-    throw InputError(std::string("analyze: ") + e.what() + " (sample rate " + format_value(fs_) + " Hz)");
-  }
-  if (f.transition_hz > 0 && kernel_taps(f, fs_) / 2 + 1 > static_cast<std::size_t>(longest)) {
-    // The kernel must not be longer than twice the longest segment (shorter
-    // segments are left out, with a warning, in end_segment).
-    const std::string where = "the longest pulse-train segment (" + format_value(longest / fs_) + " s)";
-    if (s.transition_hz)
-      throw InputError("analyze: a " + format_value(f.transition_hz) + " Hz transition needs a kernel of " +
-                       std::to_string(kernel_taps(f, fs_)) + " taps, longer than twice " + where +
-                       "; give a wider --transition-hz, or --window rectangular --transition-hz 0 (ideal filter)");
-    const double wider = 0.5 * main_lobe_width_bins(f.window) * fs_ / (longest - 2.0) * 1.01;
-    if (!(wider <= 0.8 * f_crank) || longest < 4)
-      throw InputError("analyze: " + where + " is too short for a windowed filter that keeps the crank frequency (" +
-                       format_value(f_crank) + " Hz); record longer, or use --window rectangular --transition-hz 0 (ideal filter)");
-    result_.warnings.push_back("filter transition widened from " + format_value(f.transition_hz) + " Hz to " +
-                               format_value(wider) + " Hz so that its kernel fits " + where);
-    f.transition_hz = wider;
-  }
-  filter_ = f;
-  normal_filter_ = without_low_corner(f);
-  const std::size_t taps = f.transition_hz > 0 ? kernel_taps(f, fs_) : 0;
+  filter_ = resolve_filter(o.filter, fs_, mean_crank_hz, longest_frames, result_.warnings);
+  normal_filter_ = without_low_corner(filter_);
+  const std::size_t taps = filter_kernel_taps(filter_, fs_);
   half_kernel_ = taps / 2;
-  overlap_ = (taps > 0 ? half_kernel_ : static_cast<std::size_t>(std::ceil(2 * per_rev))) + 8;
+  overlap_ = chunk_overlap_frames(taps, frames_per_rev);
+  grid_ = {resolve_grid_points(o.points_per_rev, filter_, fs_, fastest_crank_hz, result_.warnings), offset_rad_,
+           direction_};
 
-  // The grid: N crank angles that hold the pass band at the fastest revolution.
-  const double upper = uses_high(f.band) ? f.high_hz + 0.5 * f.transition_hz : 0.5 * fs_;
-  const auto needed = static_cast<std::size_t>(std::ceil(upper / (0.4 * f_fastest)));
-  std::size_t N = o.points_per_rev;
-  if (N == 0) {
-    N = 720;
-    while (N < needed) N += 360;
-  } else if (N < needed) {
-    result_.warnings.push_back("grid of " + std::to_string(N) + " crank angles holds " + format_value(0.5 * N) + " orders (" +
-                               format_value(0.5 * N * f_fastest) + " Hz at the fastest revolution) but the filter passes up to " +
-                               format_value(upper) + " Hz: the grid aliases; give --points " + std::to_string(needed) + " or more");
-  }
-  grid_ = {N, offset_rad_, direction_};
+  const double slowest_rev_frames = slowest_revolution_frames(fs_, report.speed.min_rpm);
+  chunk_revs_ = plan_chunk_revolutions(o.chunk_revolutions, taps, overlap_, slowest_rev_frames, frames_per_rev);
+  if (taps > 0)
+    make_filter_blocks(filter_block_frames(chunk_revs_, slowest_rev_frames, overlap_, longest_frames, half_kernel_));
+  make_spectra(resolve_spectrum_segment_frames(o.spectrum_segment, frames_per_rev, longest_frames));
+  make_averagers();
+  lay_out_result(taps);
+}
 
-  // Chunks of K revolutions. A chunk with its overlaps, or the periodic
-  // continuation at a segment end, is at most K revolutions + 2·overlap +
-  // half a kernel long (a segment's tail chunk takes what is left: less than
-  // K revolutions + overlap); its linear convolution needs half a kernel of
-  // zeros more. K is chosen so that this fits an FFT of 2^20 samples (more
-  // for very long kernels): the transforms then cost about 1.5× the chunk's
-  // own samples. The ideal filter (thesis) takes the chunk as one period.
-  const double slowest = fs_ * 60.0 / std::max(report.speed.min_rpm, 1e-9);  // samples in the slowest revolution
-  chunk_revs_ = o.chunk_revolutions;
-  if (chunk_revs_ == 0) {
-    if (taps > 0) {
-      double fft = double(std::size_t{1} << 20);
-      while (fft < 8.0 * double(overlap_)) fft *= 2;
-      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::floor((fft - 4.0 * double(overlap_) - 64) / slowest)));
-    } else {
-      chunk_revs_ = static_cast<std::size_t>(std::max(1.0, std::ceil(double(std::size_t{1} << 19) / per_rev)));
-    }
-  }
-  if (taps > 0) {
-    const double longest_chunk = std::min(double(chunk_revs_) * slowest + 2.0 * double(overlap_), longest + 2.0);
-    const auto capacity = static_cast<std::size_t>(std::ceil(longest_chunk + double(half_kernel_))) + 16;
-    alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, capacity, Boundary::zero);
-    if (channels_.links.front().normal || channels_.links.back().normal)
-      normal_filter_block_ =
-          std::make_unique<FftFilter>(normal_filter_, fs_, capacity, Boundary::zero, alpha_filter_->transform());
-  }
+void ChunkedAnalysis::make_filter_blocks(std::size_t block_frames) {
+  alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, block_frames, Boundary::zero);
+  if (channels_.links.front().normal || channels_.links.back().normal)
+    normal_filter_block_ =
+        std::make_unique<FftFilter>(normal_filter_, fs_, block_frames, Boundary::zero, alpha_filter_->transform());
+}
 
-  // Spectrum segments: a power of two ≥ 8 revolutions, within the longest segment.
-  std::size_t seg = o.spectrum_segment;
-  if (seg == 0) {
-    seg = 16;
-    while (double(seg) < 8 * per_rev) seg *= 2;
-    while (double(seg) > longest && seg > 16) seg /= 2;
-  }
-  result_.spectra.segment_length = seg;
+void ChunkedAnalysis::make_spectra(std::size_t segment_frames) {
+  result_.spectra.segment_length = segment_frames;
   spectra_.clear();
   for (std::size_t j = 0; j < channels_.links.size(); ++j)
-    spectra_.push_back(std::make_unique<SpectrumAverager>(fs_, WelchOptions{seg, seg / 2, {WindowType::hann, 0}}));
+    spectra_.push_back(
+        std::make_unique<SpectrumAverager>(fs_, WelchOptions{segment_frames, segment_frames / 2, {WindowType::hann, 0}}));
   result_.spectra.frequency_hz = spectra_.front()->frequency_hz();
   result_.spectra.order = order_axis(result_.spectra.frequency_hz, mean_speed_rad_s_);
-  result_.spectra.filter_gain = zero_phase_response(f, fs_, seg);
+  result_.spectra.filter_gain = zero_phase_response(filter_, fs_, segment_frames);
+}
 
+void ChunkedAnalysis::make_averagers() {
+  const std::size_t N = grid_.points_per_rev;
   tables_ = std::make_shared<const RigTables>(*manifest_.rig);
   speed_avg_ = std::make_unique<SynchronousAverager>(N);
   const std::size_t links = channels_.links.size();
@@ -219,7 +85,10 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   normal_avg_.assign(links, SynchronousAverager(N));
   omega_sq_avg_.assign(links, SynchronousAverager(N));
   omega_carry_.assign(links, std::nullopt);
+}
 
+void ChunkedAnalysis::lay_out_result(std::size_t taps) {
+  const std::size_t N = grid_.points_per_rev;
   result_.filter = filter_;
   result_.normal_filter = normal_filter_;
   result_.kernel_taps = taps;
@@ -238,267 +107,9 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   }
 }
 
-std::size_t ChunkedAnalysis::rev_start(std::size_t rev) const { return starts_[rev - first_rev_]; }
-
-void ChunkedAnalysis::on_samples(const SampleBlock& b) {
-  if (!planned_) throw RunError("analyze: samples arrived before the acquisition plan");
-  const double gap = 1.5 / fs_;
-  for (std::size_t i = 0; i < b.size(); ++i) {
-    const double t = b.time_s[i];
-    const auto rev = b.revolution[i];
-    if (in_segment_ && t - last_time_ > gap) end_segment();  // acquire dropped revolutions: a new segment
-    if (!in_segment_) {
-      in_segment_ = true;
-      base_ = end_ = 0;
-      starts_.clear();
-      first_rev_ = next_rev_ = static_cast<std::size_t>(rev);
-      last_rev_.reset();
-      revs_in_segment_ = 0;
-    }
-    if (!last_rev_ || rev != *last_rev_) {
-      starts_.push_back(end_);
-      last_rev_ = rev;
-    }
-    // Continuous crank angle: θ2 of the sample plus the turns before it.
-    theta_.push_back(b.crank_rad[i] + direction_ * units::kTwoPi * static_cast<double>(rev));
-    speed_.push_back(b.omega2_rad_s[i]);
-    accel_.push_back(b.alpha2_rad_s2[i]);
-    for (std::size_t c = 0; c < used_.size(); ++c) samples_[c].push_back(b.channels_m_s2[used_[c]][i]);
-    ++end_;
-    last_time_ = t;
-  }
-  process_ready();
-}
-
 void ChunkedAnalysis::on_revolution(const Revolution& r) {
   if (clipped_.size() <= r.number) clipped_.resize(r.number + 1, false);
   clipped_[r.number] = r.clipped;
-}
-
-void ChunkedAnalysis::process_ready() {
-  for (;;) {
-    const std::size_t rb = next_rev_ + chunk_revs_;
-    if (rb - first_rev_ >= starts_.size()) return;   // revolution rb has not begun
-    if (end_ - rev_start(rb) < overlap_) return;     // nor half a kernel beyond it
-    process_chunk(rb, false);
-  }
-}
-
-void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
-  const std::size_t sa = rev_start(next_rev_), sb = segment_end ? end_ : rev_start(rb);
-  const std::size_t begin = std::max(base_, sa >= overlap_ ? sa - overlap_ : 0);
-  const std::size_t stop = segment_end ? end_ : std::min(end_, sb + overlap_);
-  const std::size_t n = stop - begin, off = begin - base_, c0 = sa - begin, c1 = sb - begin;
-  const Rig& rig = *manifest_.rig;
-  const CrankTrack crank{std::span(theta_).subspan(off, n), std::span(speed_).subspan(off, n),
-                         std::span(accel_).subspan(off, n)};
-  auto channel = [&](const AnalysisChannel& ch) {
-    const std::size_t slot = static_cast<std::size_t>(std::find(used_.begin(), used_.end(), ch.index) - used_.begin());
-    return std::span<const double>(samples_[slot]).subspan(off, n);
-  };
-
-  RecordAnalyzer analyzer(rig, crank, fs_, grid_, tables_);
-  const RevolutionResampler& grid = analyzer.grid();
-  const std::size_t links = channels_.links.size();
-  std::vector<LinkGrids> grids(links);
-  std::vector<std::vector<double>> normal_grid(links);
-  const AnalyzeOptions& o = result_.options;
-  for (std::size_t j = 0; j < links; ++j) {
-    const LinkChannels& lc = channels_.links[j];
-    const auto reading = channel(*lc.tangential);
-    // α per sample, its spectrum over the chunk's own samples, filtered.
-    // (Working arrays are members: reused, not allocated, chunk by chunk.)
-    work_alpha_.resize(n);
-    const std::span<double> alpha(work_alpha_);
-    if (o.conversion == ConversionMethod::full)
-      analyzer.converted(lc.tangential->mount, reading, {}, alpha);
-    else
-      thesis_angular_acceleration(rig, lc.link, 1, mean_speed_rad_s_, crank.angle_rad, reading, alpha);
-    spectra_[j]->push(alpha.subspan(c0, c1 - c0));
-    // The normal channel's offset term takes α before the band-pass: its
-    // low-pass then filters that term as the rest of ω², and each sample
-    // needs α only there (no second overlap for the α filter).
-    if (lc.normal) work_unfiltered_.assign(alpha.begin(), alpha.end());
-    filter(false, crank.angle_rad, alpha, begin == 0, segment_end);
-    // ω: per revolution on the grid, or the running trapezoid in time.
-    if (o.integration == IntegrationMethod::trapezoid) {
-      std::vector<double> omega(n);
-      cumulative_trapezoid(alpha, 1.0 / fs_, 0.0, omega);
-      const double start =
-          omega_carry_[j] ? *omega_carry_[j] : (*tables_)[lc.link].motion(crank.at(c0)).omega_rad_s;
-      const double shift = start - omega[c0];
-      for (double& w : omega) w += shift;
-      if (!segment_end) omega_carry_[j] = omega[c1];
-      grids[j].alpha_grid = grid.resample(alpha);
-      grids[j].omega_grid = grid.resample(omega);
-    } else {
-      grids[j] = analyzer.on_grid(lc.link, alpha,
-                                  o.integration == IntegrationMethod::closed_trapezoid ? PeriodicMethod::closed_trapezoid
-                                                                                       : PeriodicMethod::spectral,
-                                  o.integration == IntegrationMethod::spectral);
-    }
-    // The normal channel's ω².
-    if (lc.normal) {
-      work_w2_.resize(n);
-      analyzer.converted(lc.normal->mount, channel(*lc.normal), work_unfiltered_, work_w2_);
-      filter(true, crank.angle_rad, work_w2_, begin == 0, segment_end);
-      normal_grid[j] = grid.resample(work_w2_);
-    }
-  }
-
-  // The chunk's own revolutions, in order.
-  const std::size_t N = grid_.points_per_rev;
-  const std::vector<double>& speed = analyzer.crank_speed_grid();
-  for (std::size_t r = 0; r < grid.revolutions(); ++r) {
-    const long number = grid.first_revolution() + static_cast<long>(r);
-    if (number < static_cast<long>(next_rev_) || number >= static_cast<long>(rb)) continue;
-    auto row = [&](const std::vector<double>& v) {
-      return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(r * N),
-                                 v.begin() + static_cast<std::ptrdiff_t>((r + 1) * N));
-    };
-    Pending p;
-    p.number = static_cast<std::size_t>(number);
-    p.leading_guard = revs_in_segment_++ < o.guard_revolutions;
-    p.speed = row(speed);
-    for (std::size_t j = 0; j < links; ++j) {
-      p.alpha.push_back(row(grids[j].alpha_grid));
-      p.omega.push_back(row(grids[j].omega_grid));
-      p.omega_sq.push_back(normal_grid[j].empty() ? std::vector<double>{} : row(normal_grid[j]));
-    }
-    accept(std::move(p));
-  }
-  next_rev_ = rb;
-  if (segment_end) return;
-
-  // Keep what the next chunk needs: from half a kernel before revolution rb.
-  const std::size_t keep = std::max(base_, rev_start(rb) >= overlap_ ? rev_start(rb) - overlap_ : 0);
-  const auto drop = static_cast<std::ptrdiff_t>(keep - base_);
-  for (auto* v : {&theta_, &speed_, &accel_}) v->erase(v->begin(), v->begin() + drop);
-  for (auto& v : samples_) v.erase(v.begin(), v.begin() + drop);
-  base_ = keep;
-  while (first_rev_ < rb) starts_.pop_front(), ++first_rev_;
-}
-
-void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start,
-                             bool at_end) {
-  const FilterSpec& spec = normal ? normal_filter_ : filter_;
-  if (half_kernel_ == 0) {  // ideal: the chunk as one period
-    FftFilter(spec, fs_, x.size(), Boundary::periodic).apply(x, x);
-    return;
-  }
-  const std::size_t pre = at_start ? half_kernel_ : 0, post = at_end ? half_kernel_ : 0;
-  const std::vector<double> before = pre ? crank_periodic_extension(angle, x, pre, direction_, true) : std::vector<double>{};
-  const std::vector<double> after = post ? crank_periodic_extension(angle, x, post, direction_, false) : std::vector<double>{};
-  FftFilter& block = normal ? *normal_filter_block_ : *alpha_filter_;
-  if (pre + x.size() + post <= block.length()) {
-    block.apply_between(before, x, after, x);
-    return;
-  }
-  // A chunk longer than planned (a revolution slower than acquire's slowest).
-  FftFilter(spec, fs_, pre + x.size() + post, Boundary::zero).apply_between(before, x, after, x);
-}
-
-void ChunkedAnalysis::accept(Pending&& rev) {
-  const std::size_t guard = result_.options.guard_revolutions;
-  if (guard == 0) return commit(rev, true);
-  guard_queue_.push_back(std::make_unique<Pending>(std::move(rev)));
-  if (guard_queue_.size() > guard) {
-    commit(*guard_queue_.front(), !guard_queue_.front()->leading_guard);
-    guard_queue_.pop_front();
-  }
-}
-
-void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
-  const bool clipped = rev.number < clipped_.size() && clipped_[rev.number];
-  if (averaged && clipped) ++result_.revolutions_clipped;
-  averaged = averaged && !clipped;
-  AnalyzedRevolution out;
-  out.number = rev.number;
-  out.averaged = averaged;
-  out.crank_speed_rad_s = rev.speed;
-  if (averaged) speed_avg_->add(rev.speed);
-  if (result_.options.keep_revolutions) result_.revolution_numbers.push_back(rev.number);
-  for (std::size_t j = 0; j < channels_.links.size(); ++j) {
-    const bool coupler = channels_.links[j].link == SensedLink::coupler;
-    LinkResult& lr = coupler ? *result_.coupler : *result_.rocker;
-    (coupler ? out.alpha3_rad_s2 : out.alpha4_rad_s2) = rev.alpha[j];
-    (coupler ? out.omega3_rad_s : out.omega4_rad_s) = rev.omega[j];
-    if (result_.options.keep_revolutions) {
-      lr.alpha_grid.insert(lr.alpha_grid.end(), rev.alpha[j].begin(), rev.alpha[j].end());
-      lr.omega_grid.insert(lr.omega_grid.end(), rev.omega[j].begin(), rev.omega[j].end());
-    }
-    if (!averaged) continue;
-    alpha_avg_[j].add(rev.alpha[j]);
-    omega_avg_[j].add(rev.omega[j]);
-    if (!rev.omega_sq[j].empty()) {
-      normal_avg_[j].add(rev.omega_sq[j]);
-      std::vector<double> sq(rev.omega[j].size());
-      for (std::size_t k = 0; k < sq.size(); ++k) sq[k] = rev.omega[j][k] * rev.omega[j][k];
-      omega_sq_avg_[j].add(sq);
-    }
-  }
-  if (observer_) observer_->on_revolution(out);
-}
-
-void ChunkedAnalysis::end_segment() {
-  if (!in_segment_) return;
-  const bool too_short = half_kernel_ > 0 && end_ <= half_kernel_;  // never a chunk yet: end_ is the segment's length
-  if (too_short)
-    result_.warnings.push_back("pulse-train segment of " + format_value(double(end_) / fs_) + " s (revolutions " +
-                               std::to_string(first_rev_) + " to " + std::to_string(*last_rev_) +
-                               ") is shorter than half the filter kernel (" + format_value(double(half_kernel_) / fs_) +
-                               " s): not analysed");
-  else if (last_rev_ && static_cast<std::int64_t>(next_rev_) <= *last_rev_)
-    process_chunk(static_cast<std::size_t>(*last_rev_) + 1, true);
-  // The segment's last revolutions were guard revolutions.
-  for (auto& p : guard_queue_) commit(*p, false);
-  guard_queue_.clear();
-  for (auto& s : spectra_) s->restart();
-  for (auto& c : omega_carry_) c.reset();
-  for (auto* v : {&theta_, &speed_, &accel_}) v->clear();
-  for (auto& v : samples_) v.clear();
-  starts_.clear();
-  in_segment_ = false;
-}
-
-void ChunkedAnalysis::finish() {
-  if (!planned_) return;
-  end_segment();
-  RecordingAnalysis& r = result_;
-  r.revolutions = speed_avg_->revolutions();
-  if (r.revolutions == 0)
-    throw InputError("analyze: no revolution left to average (" + std::to_string(r.options.guard_revolutions) +
-                     " guard revolutions at each segment end, " + std::to_string(r.revolutions_clipped) +
-                     " clipped); give fewer --guard-revolutions or record longer");
-  r.crank_speed_rad_s = speed_avg_->result();
-  r.mean_crank_speed_rad_s = 0;
-  for (double w : r.crank_speed_rad_s.mean) r.mean_crank_speed_rad_s += w / double(r.points_per_rev);
-  r.spectra.segments = spectra_.front()->segments();
-  if (r.spectra.segments == 0)
-    r.warnings.push_back("no spectrum: every pulse-train segment is shorter than one spectrum segment of " +
-                         std::to_string(r.spectra.segment_length) + " samples");
-  if (r.revolutions_clipped > 0)
-    r.warnings.push_back(std::to_string(r.revolutions_clipped) +
-                         " clipped revolutions left out of the averages (a sample hit the input range)");
-  for (std::size_t j = 0; j < channels_.links.size(); ++j) {
-    LinkResult& lr = channels_.links[j].link == SensedLink::coupler ? *r.coupler : *r.rocker;
-    lr.alpha_rad_s2 = alpha_avg_[j].result();
-    lr.omega_rad_s = omega_avg_[j].result();
-    lr.alpha_rms_rad_s2 = rms(lr.alpha_rad_s2.mean);
-    lr.omega_rms_rad_s = rms(lr.omega_rad_s.mean);
-    lr.alpha_std_rms_rad_s2 = rms(lr.alpha_rad_s2.std);
-    lr.omega_std_rms_rad_s = rms(lr.omega_rad_s.std);
-    lr.alpha_amplitude = spectra_[j]->amplitude();
-    if (lr.normal) {
-      lr.normal->omega_sq_rad2_s2 = normal_avg_[j].result();
-      for (double w2 : lr.normal->omega_sq_rad2_s2.mean) lr.normal->omega_abs_rad_s.push_back(std::sqrt(std::max(0.0, w2)));
-      lr.normal->omega_sq_integrated_rad2_s2 = omega_sq_avg_[j].result().mean;
-      std::vector<double> diff(r.points_per_rev);
-      for (std::size_t k = 0; k < diff.size(); ++k)
-        diff[k] = lr.normal->omega_sq_rad2_s2.mean[k] - lr.normal->omega_sq_integrated_rad2_s2[k];
-      lr.normal->rel_rms_difference = rms(diff) / rms(lr.normal->omega_sq_integrated_rad2_s2);
-    }
-  }
 }
 
 }  // namespace fourbar

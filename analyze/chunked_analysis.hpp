@@ -14,6 +14,14 @@
 // next chunk no longer needs. Memory: about (K revolutions + 2·overlap)
 // samples × (3 crank values + the channels used) doubles, plus one chunk's
 // working arrays.
+//
+// The class is split by concept, one file each:
+//   chunked_analysis.cpp   the driver: settings into members (analysis_settings,
+//                          chunk_plan), filter blocks, averagers, result layout
+//   chunk_stitching.cpp    the segment buffer: samples in, chunks out, what the
+//                          next chunk keeps, segment ends
+//   chunk_transform.cpp    one chunk: convert, filter, integrate, resample
+//   revolution_results.cpp guard revolutions, averages, the finished result
 
 #include <deque>
 #include <memory>
@@ -21,33 +29,12 @@
 #include <string>
 #include <vector>
 
+#include "analyze/analysis_channels.hpp"
 #include "analyze/link_analysis.hpp"
 #include "analyze/pipeline.hpp"
 #include "analyze/spectrum.hpp"
 
 namespace fourbar {
-
-/// The manifest's accelerometer channels as analyze uses them.
-struct AnalysisChannel {
-  std::size_t index = 0;  ///< in acquire's channel list (SampleBlock::channels_m_s2)
-  AccelerometerMount mount;
-};
-struct LinkChannels {
-  SensedLink link = SensedLink::coupler;
-  std::optional<AnalysisChannel> tangential, normal;
-};
-struct AnalysisChannels {
-  std::vector<LinkChannels> links;  ///< coupler first, then rocker; only links with a tangential channel
-  std::vector<std::string> warnings;
-};
-
-/// A value for a message: six significant digits.
-std::string format_value(double v);
-
-/// Picks the channels (the first of each role; InputError when the manifest
-/// has no coupler_tangential channel). Mounts in SI, axis sign +1 (acquire
-/// applies the manifest's sign).
-AnalysisChannels analysis_channels(const Manifest& manifest);
 
 class ChunkedAnalysis final : public AcquisitionSink {
  public:
@@ -63,17 +50,34 @@ class ChunkedAnalysis final : public AcquisitionSink {
   void finish();
 
  private:
-  struct Pending;
+  /// One revolution of a chunk on the grid, waiting to be committed.
+  struct Pending {
+    std::size_t number = 0;
+    bool leading_guard = false;
+    std::vector<double> speed;
+    std::vector<std::vector<double>> alpha, omega, omega_sq;  // per link; omega_sq empty without a normal channel
+  };
+
+  // chunked_analysis.cpp
   void resolve_settings(const AcquisitionReport& report);
+  void make_filter_blocks(std::size_t block_frames);
+  void make_spectra(std::size_t segment_frames);
+  void make_averagers();
+  void lay_out_result(std::size_t taps);
+  // chunk_stitching.cpp
   void process_ready();
-  void process_chunk(std::size_t rev_end, bool segment_end);
+  /// Drops the buffered samples no chunk from revolution `rev` on needs.
+  void keep_from(std::size_t rev);
   void end_segment();
+  std::size_t rev_start(std::size_t rev) const;
+  // chunk_transform.cpp
+  void process_chunk(std::size_t rev_end, bool segment_end);
   /// Filters one chunk's values in place; a segment end is continued
   /// periodically in the crank angle first (crank_periodic_extension).
   void filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start, bool at_end);
+  // revolution_results.cpp
   void accept(Pending&& rev);
   void commit(Pending& rev, bool averaged);
-  std::size_t rev_start(std::size_t rev) const;
 
   RecordingAnalysis& result_;
   const Manifest& manifest_;

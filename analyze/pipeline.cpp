@@ -8,6 +8,7 @@
 #include "analyze/chunked_analysis.hpp"
 #include "analyze/window.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
@@ -37,7 +38,7 @@ namespace {
 
 void positive_if_set(const std::optional<double>& v, const char* option) {
   if (v && !(*v > 0 && std::isfinite(*v)))
-    throw InputError(std::string("analyze: ") + option + " " + format_value(*v) + " must be a positive frequency in Hz");
+    throw InputError(std::string("analyze: ") + option + " " + format_number(*v) + " must be a positive frequency in Hz");
 }
 
 }  // namespace
@@ -48,9 +49,9 @@ void validate_options(const AnalyzeOptions& o) {
   positive_if_set(o.filter.low_hz, "--low-hz");
   positive_if_set(o.filter.high_hz, "--high-hz");
   if (o.filter.transition_hz && !(*o.filter.transition_hz >= 0 && std::isfinite(*o.filter.transition_hz)))
-    throw InputError("analyze: --transition-hz " + format_value(*o.filter.transition_hz) + " must be >= 0 (0: ideal filter)");
+    throw InputError("analyze: --transition-hz " + format_number(*o.filter.transition_hz) + " must be >= 0 (0: ideal filter)");
   if (o.filter.mains_hz < 0 || !std::isfinite(o.filter.mains_hz))
-    throw InputError("analyze: --mains-hz " + format_value(o.filter.mains_hz) + " must be 50, 60 (or any positive frequency), or 0 for none");
+    throw InputError("analyze: --mains-hz " + format_number(o.filter.mains_hz) + " must be 50, 60 (or any positive frequency), or 0 for none");
   validate_window(o.filter.window, "--window");
   if (o.filter.transition_hz && *o.filter.transition_hz == 0 && o.filter.window.type != WindowType::rectangular)
     throw InputError("analyze: --transition-hz 0 (the ideal bin-wise filter) takes --window rectangular, not " +
@@ -89,12 +90,12 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
     const double nyquist = 0.5 * fs;
     for (const auto& [v, option] : {std::pair{options.filter.low_hz, "--low-hz"}, std::pair{options.filter.high_hz, "--high-hz"}})
       if (v && *v >= nyquist)
-        throw InputError("analyze: " + std::string(option) + " " + format_value(*v) + " Hz lies at or above the Nyquist frequency " +
-                         format_value(nyquist) + " Hz of " + recording.string() + " (sample rate " + format_value(fs) +
+        throw InputError("analyze: " + std::string(option) + " " + format_number(*v) + " Hz lies at or above the Nyquist frequency " +
+                         format_number(nyquist) + " Hz of " + recording.string() + " (sample rate " + format_number(fs) +
                          " Hz); give a corner below it");
     if (options.filter.mains_hz >= nyquist)
-      throw InputError("analyze: --mains-hz " + format_value(options.filter.mains_hz) + " lies at or above the Nyquist frequency " +
-                       format_value(nyquist) + " Hz of " + recording.string());
+      throw InputError("analyze: --mains-hz " + format_number(options.filter.mains_hz) + " lies at or above the Nyquist frequency " +
+                       format_number(nyquist) + " Hz of " + recording.string());
   }
 
   ChunkedAnalysis analysis(result, manifest, channels, observer);

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "acquire/acquisition.hpp"
+#include "analyze/analysis_defaults.hpp"
 #include "analyze/averaging.hpp"
 #include "analyze/filter_design.hpp"
 #include "analyze/sensor_mount.hpp"
@@ -62,22 +63,26 @@ const char* to_string(IntegrationMethod m);
 /// The FFT filter applied to α per sample. Unset values follow the recording.
 struct FilterSettings {
   BandType band = BandType::bandpass;
-  std::optional<double> low_hz;         ///< default: half the mean crank frequency
-  std::optional<double> high_hz;        ///< default: 1000 Hz, at most 0.4 × the sample rate
+  /// Default (analysis_defaults.hpp): kLowCornerPerCrankHz (0.5) × the mean crank frequency.
+  std::optional<double> low_hz;
+  /// Default (analysis_defaults.hpp): kHighCornerCapHz (1000 Hz), at most
+  /// kHighCornerMaxPerSampleRate (0.4) × the sample rate.
+  std::optional<double> high_hz;
   double mains_hz = 0;                  ///< mains comb (notches at k × this, up to Nyquist); 0: none
   double mains_width_hz = 1;            ///< full width of each notch
   WindowSpec window{WindowType::kaiser, 8.0};
-  /// Transition width of the windowed-sinc kernel. Default: 0.15 × the mean
-  /// crank frequency, widened (with a warning) when the kernel would be
-  /// longer than twice the longest pulse-train segment (shorter segments are
-  /// left out with a warning). 0: the ideal
-  /// bin-wise filter of each chunk (rectangular window only; the thesis's).
+  /// Transition width of the windowed-sinc kernel. Default (analysis_defaults.hpp):
+  /// kTransitionPerCrankHz (0.15) × the mean crank frequency, widened (with a
+  /// warning) when the kernel would be longer than twice the longest
+  /// pulse-train segment (shorter segments are left out with a warning).
+  /// 0: the ideal bin-wise filter of each chunk (rectangular window only; the thesis's).
   std::optional<double> transition_hz;
 };
 
 struct AnalyzeOptions {
-  /// Crank angles per revolution N; 0: 720, or the smallest multiple of 360
-  /// that holds the pass band (upper edge ≤ 0.4·N orders at the fastest revolution).
+  /// Crank angles per revolution N; 0: analysis_defaults::kGridPoints (720),
+  /// grown in steps of kGridPointsStep (360) until it holds the pass band
+  /// (upper edge ≤ kGridMaxOrdersPerPoint (0.4)·N orders at the fastest revolution).
   std::size_t points_per_rev = 0;
   FilterSettings filter;
   ConversionMethod conversion = ConversionMethod::full;
@@ -89,8 +94,11 @@ struct AnalyzeOptions {
   /// Samples per spectrum segment (Hann window, 50 % overlap); 0: the
   /// smallest power of two ≥ 8 revolutions, shortened to fit the longest segment.
   std::size_t spectrum_segment = 0;
-  /// Revolutions per processing chunk; 0: automatic (about 2^19 samples, at
-  /// least twice the filter overlap). Results do not depend on it.
+  /// Revolutions per processing chunk; 0: automatic (analysis_defaults.hpp):
+  /// with a windowed filter as many as fit, with their overlaps, an FFT of
+  /// kChunkFftFrames (2^20) frames (doubled while shorter than 8 overlaps);
+  /// with the ideal filter about kIdealChunkFrames (2^19) frames, the chunk
+  /// being one period. Results do not depend on it.
   std::size_t chunk_revolutions = 0;
   bool progress = true;  ///< progress bar on stderr when it is a terminal
 

@@ -5,13 +5,16 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
 
+#include "analyze/analysis_defaults.hpp"
 #include "analyze/pipeline.hpp"
 #include "analyze/window.hpp"
 #include "cli/command.hpp"
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 
@@ -21,7 +24,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Acquires the recording (as 'fourbar acquire': manifest, crank pulses, crank
+constexpr const char* kDetailsBeforeDefaults = R"(Acquires the recording (as 'fourbar acquire': manifest, crank pulses, crank
 angle per sample) and turns its tangential accelerometers into the coupler's
 and rocker's angular acceleration: the measured crank speed and acceleration,
 the sensor position and offset, gravity and an AC-coupled sensor's high-pass
@@ -52,11 +55,21 @@ Writes into DIR:
                      revolutions, rpm), settings (filter, kernel taps, grid,
                      conversion, integration), RMS of the averaged curves and
                      of their spread, normal-channel check, warnings
-Defaults: band-pass from half the mean crank frequency to 1000 Hz (at most
-0.4 x the sample rate), Kaiser window (beta 8), transition 0.15 x the crank
-frequency, no mains comb (give --mains-hz 50 or 60), N = 720 (more when the
-band needs it), spectral integration.
---thesis: the thesis's processing for comparison (thesis eq. 7.2.1-6/7.2.2-1
+)";
+
+// The defaults paragraph of the details, its numbers from analyze/analysis_defaults.hpp.
+std::string details_defaults() {
+  namespace d = analysis_defaults;
+  return "Defaults: band-pass from " + format_number(d::kLowCornerPerCrankHz) + " x the mean crank frequency to " +
+         format_number(d::kHighCornerCapHz) + " Hz\n(at most " + format_number(d::kHighCornerMaxPerSampleRate) +
+         " x the sample rate), Kaiser window (beta 8), transition " + format_number(d::kTransitionPerCrankHz) +
+         " x the crank\nfrequency, no mains comb (give --mains-hz 50 or 60), N = " + std::to_string(d::kGridPoints) +
+         " (more when the\nband needs it), spectral integration, chunks that fill a 2^" +
+         std::to_string(d::kChunkFftFramesLog2) + "-sample FFT\n(about 2^" + std::to_string(d::kIdealChunkFramesLog2) +
+         " samples with the ideal filter).\n";
+}
+
+constexpr const char* kDetailsAfterDefaults = R"(--thesis: the thesis's processing for comparison (thesis eq. 7.2.1-6/7.2.2-1
 at the mean crank speed, sensor at the joint, no gravity, no AC correction;
 ideal rectangular band-pass; running trapezoid in time, eq. 7.2.1-8).
 Options given with --thesis override its settings.
@@ -161,19 +174,29 @@ int run_analyze(const Invocation& inv) {
   double low = 0, high = 0, mains = 0, mains_width = 1, transition = 0;
   std::size_t points = 0, guard = 0, spectrum_segment = 0, chunk = 0;
   bool thesis = false, per_revolution = false;
+  namespace d = analysis_defaults;
+  const std::string low_help =
+      "lower corner in Hz (default: " + format_number(d::kLowCornerPerCrankHz) + " x the mean crank frequency)";
+  const std::string high_help = "upper corner in Hz (default: " + format_number(d::kHighCornerCapHz) + ", at most " +
+                                format_number(d::kHighCornerMaxPerSampleRate) + " x the sample rate)";
+  const std::string transition_help = "transition width in Hz (default " + format_number(d::kTransitionPerCrankHz) +
+                                      " x the crank frequency); 0: ideal bin-wise filter (rectangular)";
+  const std::string chunk_help = "revolutions per processing chunk (default: as many as fill a 2^" +
+                                 std::to_string(d::kChunkFftFramesLog2) + "-sample FFT; about 2^" +
+                                 std::to_string(d::kIdealChunkFramesLog2) + " samples with the ideal filter)";
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, ..., CSV)")(
       "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
       "out,o", po::value(&out_dir)->required(), "output folder")(
       "band", po::value(&band), "filter band: bandpass (default), lowpass, highpass, bandstop, none")(
-      "low-hz", po::value(&low), "lower corner in Hz (default: half the mean crank frequency)")(
-      "high-hz", po::value(&high), "upper corner in Hz (default: 1000, at most 0.4 x the sample rate)")(
+      "low-hz", po::value(&low), low_help.c_str())(
+      "high-hz", po::value(&high), high_help.c_str())(
       "mains-hz", po::value(&mains), "mains comb: notches at k x this frequency (50 or 60; default 0: none)")(
       "mains-width-hz", po::value(&mains_width), "width of each mains notch in Hz (default 1)")(
       "window", po::value(&window),
       "kernel window: rectangular, hann, tukey:ALPHA (0..1), kaiser:BETA (0..50) (default kaiser:8)")(
       "transition-hz", po::value(&transition),
-      "transition width in Hz (default 0.15 x the crank frequency); 0: ideal bin-wise filter (rectangular)")(
+      transition_help.c_str())(
       "integration", po::value(&integration),
       "alpha to omega, each revolution on its own: spectral (default; keeps the revolution's mean slope, follows "
       "crank-speed changes), periodic (strictly periodic, rejects a constant alpha offset), closed-trapezoid; or "
@@ -184,12 +207,13 @@ int run_analyze(const Invocation& inv) {
       "per-revolution", po::bool_switch(&per_revolution), "also write per_revolution.csv (every revolution)")(
       "spectrum-segment", po::value(&spectrum_segment),
       "samples per spectrum segment (default: a power of two >= 8 revolutions)")(
-      "chunk-revolutions", po::value(&chunk), "revolutions per processing chunk (default: about 2^19 samples)")(
+      "chunk-revolutions", po::value(&chunk), chunk_help.c_str())(
       "thesis", po::bool_switch(&thesis), "the thesis's processing, for comparison (see below)");
+  const std::string details = kDetailsBeforeDefaults + details_defaults() + kDetailsAfterDefaults;
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("analyze", "REC [--manifest M] --out DIR [options]", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("analyze", "REC [--manifest M] --out DIR [options]", details, opts, pos, inv, vm)) return 0;
 
   AnalyzeOptions o = thesis ? AnalyzeOptions::thesis_method() : AnalyzeOptions{};
   o.filter.band = parse_band(band);
