@@ -90,13 +90,13 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   report.pulses = pulse_train_from_edges(edges.edges_s, options.pulses, manifest, info.file);
   report.revolutions = report.pulses.revolutions();
 
-  RevolutionSchedule schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.samples_per_revolution);
+  RevolutionSchedule schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);
   report.revolutions_repaired = schedule.revolutions_repaired;
-  report.samples_per_turn = schedule.frames_per_rev;
-  report.samples_per_revolution = schedule.grid_points_per_rev;
+  report.frames_per_rev = schedule.frames_per_rev;
+  report.grid_points_per_rev = sink.wants_grid() ? schedule.grid_points_per_rev : 0;
   report.speed = schedule.speed;
   sink.on_plan(report);
-  const GridSettings grid{schedule.grid_points_per_rev, manifest.crank_direction,
+  const GridSettings grid{report.grid_points_per_rev, manifest.crank_direction,
                           manifest.pulse_channel().crank_offset_rad, info.sample_rate_hz, info.start_time_s,
                           info.frames};
   report.revolutions_clipped = tag_pass(stream, std::move(schedule.plan), grid, accel.inputs, clip, sink);

@@ -36,7 +36,7 @@
 namespace fourbar {
 
 struct AcquireOptions {
-  int samples_per_revolution = 0;  ///< N; 0: the smallest multiple of 360 ≥ samples per revolution
+  int grid_points_per_rev = 0;     ///< N crank angles per revolution; 0: the smallest multiple of 360 ≥ frames per revolution
   std::size_t block_frames = 16384;
   bool progress = true;            ///< progress bar on stderr when it is a terminal
   PulseTrainOptions pulses;
@@ -52,8 +52,8 @@ struct AcquisitionReport {
   double edge_level_V = 0;                   ///< mid-level at which edge times are taken (refined)
   std::size_t edges_debounced = 0;
   PulseTrain pulses;
-  int samples_per_revolution = 0;            ///< N
-  double samples_per_turn = 0;               ///< recording samples in a typical revolution
+  int grid_points_per_rev = 0;               ///< N crank angles per revolution (0: the sink wanted no grid)
+  double frames_per_rev = 0;                 ///< recording frames in a typical revolution
   std::size_t revolutions = 0;               ///< kept
   std::size_t revolutions_repaired = 0;
   std::size_t revolutions_clipped = 0;

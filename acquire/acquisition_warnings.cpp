@@ -51,8 +51,8 @@ std::vector<std::string> collect_warnings(const AcquisitionReport& report) {
                          std::to_string(report.revolutions_clipped) +
                          " revolutions are marked clipped (lower the gain)");
   pulse_train_warnings(report.pulses, warnings);
-  if (report.samples_per_turn < kMinFramesPerRev)
-    warnings.push_back("only " + format_number(report.samples_per_turn, 3) +
+  if (report.frames_per_rev < kMinFramesPerRev)
+    warnings.push_back("only " + format_number(report.frames_per_rev, 3) +
                        " samples per revolution: too coarse for impact bursts; record faster");
   return warnings;
 }

@@ -77,7 +77,12 @@ class AcquisitionSink {
   /// crank speed) before the samples arrive.
   virtual void on_plan(const AcquisitionReport&) {}
   virtual void on_samples(const SampleBlock&) {}
+  /// Each complete revolution; its crank-angle grid is empty when the sink
+  /// wants none (its time, period, segment and clipping flags are set).
   virtual void on_revolution(const Revolution&) {}
+  /// Whether the revolutions are to be resampled onto acquire's crank-angle
+  /// grid. A sink that resamples on a grid of its own (analyze) says no.
+  virtual bool wants_grid() const { return true; }
 };
 
 }  // namespace fourbar

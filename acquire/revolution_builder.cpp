@@ -34,7 +34,7 @@ void RevolutionBuilder::push(std::int64_t n, const double* calibrated, bool clip
   const double t = grid_.start_time_s + static_cast<double>(n) / grid_.sample_rate_hz;
   // Buffer what the pending revolutions need.
   if (pending_ < plan_.size() && n >= buffer_base_) {
-    buffer_.insert(buffer_.end(), calibrated, calibrated + channels_);
+    if (grid_.points > 0) buffer_.insert(buffer_.end(), calibrated, calibrated + channels_);
     if (clipped) clipped_frames_.push_back(n);
   }
   // Tag the sample with its revolution and crank motion.

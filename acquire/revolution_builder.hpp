@@ -22,7 +22,7 @@ struct RevolutionPlan {
 };
 
 struct GridSettings {
-  int points = 360;            ///< N per revolution
+  int points = 360;            ///< N per revolution; 0: no grid (revolutions carry only their times and flags)
   double direction = 1;        ///< +1 counter-clockwise crank, −1 clockwise
   double offset_rad = 0;       ///< crank angle at the pulse
   double sample_rate_hz = 0;

@@ -37,7 +37,7 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   offset_rad_ = manifest_.pulse_channel().crank_offset_rad;
   mean_speed_rad_s_ = direction_ * units::rpm_to_rad_s(report.speed.mean_rpm);
   const double mean_crank_hz = report.speed.mean_rpm / 60.0, fastest_crank_hz = report.speed.max_rpm / 60.0;
-  const double frames_per_rev = report.samples_per_turn;
+  const double frames_per_rev = report.frames_per_rev;
   const double longest_frames = longest_segment_frames(report.pulses, fs_);
 
   filter_ = resolve_filter(o.filter, fs_, mean_crank_hz, longest_frames, result_.warnings);

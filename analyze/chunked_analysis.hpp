@@ -46,6 +46,8 @@ class ChunkedAnalysis final : public AcquisitionSink {
   void on_plan(const AcquisitionReport& report) override;
   void on_samples(const SampleBlock& block) override;
   void on_revolution(const Revolution& revolution) override;
+  /// The analysis resamples on its own grid, after the filter: acquire makes none.
+  bool wants_grid() const override { return false; }
   /// After acquire: analyses what is left and completes the result.
   void finish();
 

@@ -101,11 +101,10 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   ChunkedAnalysis analysis(result, manifest, channels, observer);
   AcquireOptions acquire_options;
   acquire_options.progress = options.progress;
-  acquire_options.samples_per_revolution = 4;  // acquire's own grid is not used: keep its resampling cheap
   result.acquisition = acquire(*opened.reader, manifest, acquire_options, analysis);
   analysis.finish();
-  // acquire's own revolutions were not used: report the analysis grid.
-  result.acquisition.samples_per_revolution = static_cast<int>(result.points_per_rev);
+  // The analysis resamples on its own grid (acquire made none): report that one.
+  result.acquisition.grid_points_per_rev = static_cast<int>(result.points_per_rev);
   result.warnings.insert(result.warnings.begin(), result.acquisition.warnings.begin(),
                          result.acquisition.warnings.end());
   return result;

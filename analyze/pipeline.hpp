@@ -140,7 +140,7 @@ struct SpectrumAxes {
 
 struct RecordingAnalysis {
   std::filesystem::path recording, manifest_file, rig_file;
-  AcquisitionReport acquisition;            ///< pulses, speed statistics, channel statistics, acquire's warnings; samples_per_revolution = N
+  AcquisitionReport acquisition;            ///< pulses, speed statistics, channel statistics, acquire's warnings; grid_points_per_rev = N
   std::shared_ptr<const Rig> rig;           ///< from the manifest
   double clearance_m = 0;                   ///< from the manifest
   AnalyzeOptions options;                   ///< as given

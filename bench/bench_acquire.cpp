@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
       const AcquisitionReport rep = acquire(*o.reader, o.manifest, options, sink);
       std::printf("  run %d: %zu revolutions of %d crank angles, %zu tagged samples, %zu pulses removed, %zu inserted, "
                   "%.3f rpm mean (checksum %.6g)\n",
-                  run, sink.revolutions, rep.samples_per_revolution, sink.samples, rep.pulses.removed_s.size(),
+                  run, sink.revolutions, rep.grid_points_per_rev, sink.samples, rep.pulses.removed_s.size(),
                   rep.pulses.inserted_s.size(), rep.speed.mean_rpm, sink.checksum);
       std::printf("  run %d: passes scan %.2f s, pulses %.2f s, samples+revolutions %.2f s\n", run,
                   rep.pass_seconds[0], rep.pass_seconds[1], rep.pass_seconds[2]);

@@ -175,7 +175,7 @@ int run_acquire(const Invocation& inv) {
   Provenance prov{inv.command_line, {recording, m.file, m.rig_file}};
 
   AcquireOptions options;
-  options.samples_per_revolution = samples_per_rev;
+  options.grid_points_per_rev = samples_per_rev;
   std::vector<AcquiredChannel> channels;
   for (const auto& c : m.channels)
     if (is_accelerometer(c.role)) channels.push_back({c.name, c.role, *c.index, c.position_m, c.offset_m, c.ac_coupled, c.highpass_hz});
@@ -245,8 +245,8 @@ int run_acquire(const Invocation& inv) {
                       {"clipped", rep.revolutions_clipped},
                       {"dropped_in_gaps", rep.revolutions_in_gaps},
                       {"dropped_partial_s", {first_pulse - ri.start_time_s, ri.start_time_s + ri.duration_s() - last_pulse}},
-                      {"samples_per_revolution", rep.samples_per_revolution},
-                      {"recorded_samples_per_revolution", rep.samples_per_turn}};
+                      {"samples_per_revolution", rep.grid_points_per_rev},
+                      {"recorded_samples_per_revolution", rep.frames_per_rev}};
   j["speed_rpm"] = {{"mean", rep.speed.mean_rpm}, {"std", rep.speed.std_rpm}, {"min", rep.speed.min_rpm},
                     {"max", rep.speed.max_rpm}};
   j["clipping_checked"] = rep.clipping_checked;
@@ -265,7 +265,7 @@ int run_acquire(const Invocation& inv) {
 
   for (const auto& w : rep.warnings) std::cerr << "fourbar: warning: " << w << "\n";
   std::cout << "acquired " << rep.revolutions << " revolutions (" << rep.speed.mean_rpm << " rpm mean, "
-            << rep.samples_per_revolution << " crank angles each) from " << recording << " into " << out_dir << "\n";
+            << rep.grid_points_per_rev << " crank angles each) from " << recording << " into " << out_dir << "\n";
   return 0;
 }
 

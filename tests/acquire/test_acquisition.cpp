@@ -159,7 +159,7 @@ TEST(AcquireRoundTrip, RevolutionsOnTheCrankAngleGrid) {
   v.spec.sample_format = "float";
   const VirtualRigResult vr = v.write("grid.w64", false);
   AcquireOptions o;
-  o.samples_per_revolution = 720;
+  o.grid_points_per_rev = 720;
   const Acquired run = run_acquire(vr.recording, o);
   ASSERT_EQ(run.out.revolutions.size(), run.report.revolutions);
   const CrankDrive drive = v.drive();
@@ -372,6 +372,41 @@ TEST(AcquireRoundTrip, ClippingIsCountedAndMarked) {
   EXPECT_GT(run.report.channel_stats[2].clipped_samples, 0u);
   EXPECT_LE(run.report.channel_stats[2].clipped_samples, vr.clipped_samples);
   EXPECT_GT(run.report.revolutions_clipped, 0u);
+}
+
+// A sink that resamples on a grid of its own (analyze) asks for none: the
+// revolutions then come with empty grids but the same times, periods and
+// clipping flags, and the samples are tagged exactly as with a grid.
+TEST(AcquireRoundTrip, SinkWithoutGridGetsTheSameRevolutionsAndSamples) {
+  VirtualSetup v;
+  v.spec.revolutions = 4;
+  v.spec.sensors[2].volts_per_m_s2 = 0.12;  // clipped in some revolutions, as above
+  const VirtualRigResult vr = v.write("nogrid.wav", false);
+  const Acquired with_grid = run_acquire(vr.recording);
+  struct NoGrid : Collect {
+    bool wants_grid() const override { return false; }
+  };
+  OpenedRecording o = open_with_manifest(vr.recording, {});
+  NoGrid out;
+  AcquireOptions options;
+  options.progress = false;
+  const AcquisitionReport report = acquire(*o.reader, o.manifest, options, out);
+  EXPECT_GT(with_grid.report.grid_points_per_rev, 0);
+  EXPECT_EQ(report.grid_points_per_rev, 0);
+  EXPECT_GT(report.revolutions_clipped, 0u);
+  EXPECT_EQ(report.revolutions_clipped, with_grid.report.revolutions_clipped);
+  ASSERT_EQ(out.revolutions.size(), with_grid.out.revolutions.size());
+  for (std::size_t k = 0; k < out.revolutions.size(); ++k) {
+    const Revolution &a = out.revolutions[k], &b = with_grid.out.revolutions[k];
+    EXPECT_TRUE(a.crank_rad.empty());
+    EXPECT_EQ(a.start_time_s, b.start_time_s);
+    EXPECT_EQ(a.period_s, b.period_s);
+    EXPECT_EQ(a.clipped, b.clipped) << "revolution " << k;
+  }
+  EXPECT_EQ(out.time, with_grid.out.time);
+  EXPECT_EQ(out.crank, with_grid.out.crank);
+  EXPECT_EQ(out.revolution, with_grid.out.revolution);
+  EXPECT_EQ(out.channels, with_grid.out.channels);
 }
 
 TEST(AcquireBadInput, FewerThanTwoRevolutions) {
