@@ -25,7 +25,7 @@ inline constexpr double kHighCornerMaxPerSampleRate = 0.4;
 /// long; widened, with a warning, to fit a short record).
 inline constexpr double kTransitionPerCrankHz = 0.15;
 
-// ---- the crank-angle grid (AnalyzeOptions::points_per_rev)
+// ---- the crank-angle grid (AnalyzeOptions::grid_points_per_rev)
 
 /// Default crank angles per revolution N: half-degree steps.
 inline constexpr std::size_t kGridPoints = 720;

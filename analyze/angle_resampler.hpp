@@ -23,10 +23,10 @@ class RevolutionResampler {
   /// crank, the angle decreasing and the grid running θ_start − 2π(r + k/N).
   /// Throws InputError when the angle is not finite, not strictly monotonic
   /// in `direction`, N < 4, or no whole revolution fits.
-  RevolutionResampler(std::span<const double> crank_angle_rad, std::size_t points_per_rev, double start_angle_rad,
+  RevolutionResampler(std::span<const double> crank_angle_rad, std::size_t grid_points_per_rev, double start_angle_rad,
                       double direction = 1.0);
 
-  std::size_t points_per_rev() const { return n_; }
+  std::size_t grid_points_per_rev() const { return n_; }
   std::size_t revolutions() const { return revs_; }
   /// Index of the first covered revolution (θ_start ± 2π·first is its start).
   long first_revolution() const { return first_; }

@@ -19,7 +19,7 @@ struct AngleAverage {
 /// Streams revolutions in (Welford's update: stable, bounded memory).
 class SynchronousAverager {
  public:
-  explicit SynchronousAverager(std::size_t points_per_rev);
+  explicit SynchronousAverager(std::size_t grid_points_per_rev);
   /// One revolution of N values.
   void add(std::span<const double> revolution);
   std::size_t revolutions() const { return count_; }
@@ -31,6 +31,6 @@ class SynchronousAverager {
 };
 
 /// Average of `rows` revolutions stored row-major (rows × N).
-AngleAverage synchronous_average(std::span<const double> revolutions, std::size_t points_per_rev);
+AngleAverage synchronous_average(std::span<const double> revolutions, std::size_t grid_points_per_rev);
 
 }  // namespace fourbar

@@ -75,7 +75,7 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
   }
 
   // The chunk's own revolutions, in order.
-  const std::size_t N = grid_.points_per_rev;
+  const std::size_t N = grid_.grid_points_per_rev;
   const std::vector<double>& speed = analyzer.crank_speed_grid();
   for (std::size_t r = 0; r < grid.revolutions(); ++r) {
     const long number = grid.first_revolution() + static_cast<long>(r);

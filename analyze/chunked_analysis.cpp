@@ -45,7 +45,7 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   const std::size_t taps = filter_kernel_taps(filter_, fs_);
   half_kernel_ = taps / 2;
   overlap_ = chunk_overlap_frames(taps, frames_per_rev);
-  grid_ = {resolve_grid_points(o.points_per_rev, filter_, fs_, fastest_crank_hz, result_.warnings), offset_rad_,
+  grid_ = {resolve_grid_points(o.grid_points_per_rev, filter_, fs_, fastest_crank_hz, result_.warnings), offset_rad_,
            direction_};
 
   const double slowest_rev_frames = slowest_revolution_frames(fs_, report.speed.min_rpm);
@@ -76,7 +76,7 @@ void ChunkedAnalysis::make_spectra(std::size_t segment_frames) {
 }
 
 void ChunkedAnalysis::make_averagers() {
-  const std::size_t N = grid_.points_per_rev;
+  const std::size_t N = grid_.grid_points_per_rev;
   tables_ = std::make_shared<const RigTables>(*manifest_.rig);
   speed_avg_ = std::make_unique<SynchronousAverager>(N);
   const std::size_t links = channels_.links.size();
@@ -88,12 +88,12 @@ void ChunkedAnalysis::make_averagers() {
 }
 
 void ChunkedAnalysis::lay_out_result(std::size_t taps) {
-  const std::size_t N = grid_.points_per_rev;
+  const std::size_t N = grid_.grid_points_per_rev;
   result_.filter = filter_;
   result_.normal_filter = normal_filter_;
   result_.kernel_taps = taps;
   result_.chunk_revolutions = chunk_revs_;
-  result_.points_per_rev = N;
+  result_.grid_points_per_rev = N;
   result_.crank_direction = direction_;
   result_.crank_deg.resize(N);
   for (std::size_t k = 0; k < N; ++k)

@@ -44,8 +44,8 @@ enum class PeriodicMethod { spectral, closed_trapezoid };
 /// (θ2_k = θ_start + 2πk/N, increasing). Plans are made once per N.
 class PeriodicIntegrator {
  public:
-  explicit PeriodicIntegrator(std::size_t points_per_rev);
-  std::size_t points_per_rev() const { return n_; }
+  explicit PeriodicIntegrator(std::size_t grid_points_per_rev);
+  std::size_t grid_points_per_rev() const { return n_; }
 
   /// ω on the grid from α and the crank speed ω2 on the grid (same sign
   /// throughout; all spans N long; `omega` may alias `alpha`).

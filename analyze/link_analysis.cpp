@@ -44,7 +44,7 @@ RecordAnalyzer::RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double f
       crank_(crank),
       fs_(fs),
       direction_(grid.direction < 0 ? -1.0 : 1.0),
-      grid_(crank.angle_rad, grid.points_per_rev, grid.start_rad, grid.direction),
+      grid_(crank.angle_rad, grid.grid_points_per_rev, grid.start_rad, grid.direction),
       tables_(std::move(tables)) {
   check_crank_track(crank);
   speed_grid_ = grid_.resample(crank.speed_rad_s);
@@ -79,8 +79,8 @@ void RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const 
 LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method,
                                   bool keep_slope) {
   LinkGrids out;
-  const std::size_t N = grid_.points_per_rev();
-  out.points_per_rev = N;
+  const std::size_t N = grid_.grid_points_per_rev();
+  out.grid_points_per_rev = N;
   out.revolutions = grid_.revolutions();
   out.first_revolution = grid_.first_revolution();
   out.alpha_grid = grid_.resample(alpha);
@@ -107,8 +107,8 @@ LinkAnalysis RecordAnalyzer::tangential(const AccelerometerMount& mount, std::sp
   out.alpha_rad_s2 = converted(mount, reading);
   filter(opt.filter, opt.boundary, out.alpha_rad_s2);
   static_cast<LinkGrids&>(out) = on_grid(mount.link, out.alpha_rad_s2, opt.integration, opt.keep_slope);
-  out.alpha = guarded_average(out.alpha_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
-  out.omega = guarded_average(out.omega_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
+  out.alpha = guarded_average(out.alpha_grid, out.revolutions, out.grid_points_per_rev, opt.guard_revolutions);
+  out.omega = guarded_average(out.omega_grid, out.revolutions, out.grid_points_per_rev, opt.guard_revolutions);
   return out;
 }
 
@@ -116,12 +116,12 @@ NormalChannelAnalysis RecordAnalyzer::normal(const AccelerometerMount& mount, st
                                              std::span<const double> link_alpha, const ChannelOptions& opt) {
   require_axis(mount, SensorAxis::normal);
   NormalChannelAnalysis out;
-  out.points_per_rev = grid_.points_per_rev();
+  out.grid_points_per_rev = grid_.grid_points_per_rev();
   out.revolutions = grid_.revolutions();
   std::vector<double> x = converted(mount, reading, link_alpha);
   filter(opt.filter, opt.boundary, x);
   out.omega_sq_grid = grid_.resample(x);
-  out.omega_sq = guarded_average(out.omega_sq_grid, out.revolutions, out.points_per_rev, opt.guard_revolutions);
+  out.omega_sq = guarded_average(out.omega_sq_grid, out.revolutions, out.grid_points_per_rev, opt.guard_revolutions);
   return out;
 }
 

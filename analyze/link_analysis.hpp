@@ -23,7 +23,7 @@
 namespace fourbar {
 
 struct AngleGridSpec {
-  std::size_t points_per_rev = 720;
+  std::size_t grid_points_per_rev = 720;
   double start_rad = 0;   ///< crank angle of grid point 0 (the pulse position: 0)
   double direction = 1;   ///< +1: the crank turns counter-clockwise (θ2 increases); −1 clockwise
 };
@@ -43,7 +43,7 @@ struct ChannelOptions {
 
 /// α and ω of one link on the crank-angle grid, revolution by revolution.
 struct LinkGrids {
-  std::size_t points_per_rev = 0, revolutions = 0;
+  std::size_t grid_points_per_rev = 0, revolutions = 0;
   long first_revolution = 0;                   ///< index of grid revolution 0 (see RevolutionResampler)
   std::vector<double> alpha_grid, omega_grid;  ///< revolutions × N, row-major
 };
@@ -61,7 +61,7 @@ struct LinkAnalysis : LinkGrids {
 /// (omega_offset_from_normal) would only add noise; it pays for a link that
 /// turns fully.
 struct NormalChannelAnalysis {
-  std::size_t points_per_rev = 0, revolutions = 0;
+  std::size_t grid_points_per_rev = 0, revolutions = 0;
   std::vector<double> omega_sq_grid;  ///< revolutions × N
   AngleAverage omega_sq;              ///< less the guard revolutions
 };

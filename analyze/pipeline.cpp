@@ -44,8 +44,8 @@ void positive_if_set(const std::optional<double>& v, const char* option) {
 }  // namespace
 
 void validate_options(const AnalyzeOptions& o) {
-  if (o.points_per_rev != 0 && o.points_per_rev < 4)
-    throw InputError("analyze: --points " + std::to_string(o.points_per_rev) + " must be at least 4 crank angles per revolution");
+  if (o.grid_points_per_rev != 0 && o.grid_points_per_rev < 4)
+    throw InputError("analyze: --points " + std::to_string(o.grid_points_per_rev) + " must be at least 4 crank angles per revolution");
   positive_if_set(o.filter.low_hz, "--low-hz");
   positive_if_set(o.filter.high_hz, "--high-hz");
   if (o.filter.transition_hz && !(*o.filter.transition_hz >= 0 && std::isfinite(*o.filter.transition_hz)))
@@ -104,7 +104,7 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   result.acquisition = acquire(*opened.reader, manifest, acquire_options, analysis);
   analysis.finish();
   // The analysis resamples on its own grid (acquire made none): report that one.
-  result.acquisition.grid_points_per_rev = static_cast<int>(result.points_per_rev);
+  result.acquisition.grid_points_per_rev = static_cast<int>(result.grid_points_per_rev);
   result.warnings.insert(result.warnings.begin(), result.acquisition.warnings.begin(),
                          result.acquisition.warnings.end());
   return result;

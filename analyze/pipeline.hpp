@@ -83,7 +83,7 @@ struct AnalyzeOptions {
   /// Crank angles per revolution N; 0: analysis_defaults::kGridPoints (720),
   /// grown in steps of kGridPointsStep (360) until it holds the pass band
   /// (upper edge ≤ kGridMaxOrdersPerPoint (0.4)·N orders at the fastest revolution).
-  std::size_t points_per_rev = 0;
+  std::size_t grid_points_per_rev = 0;
   FilterSettings filter;
   ConversionMethod conversion = ConversionMethod::full;
   IntegrationMethod integration = IntegrationMethod::spectral;
@@ -148,7 +148,7 @@ struct RecordingAnalysis {
   std::size_t kernel_taps = 0;              ///< of the α filter (0: ideal)
   std::size_t chunk_revolutions = 0;        ///< as used
 
-  std::size_t points_per_rev = 0;           ///< N
+  std::size_t grid_points_per_rev = 0;           ///< N
   std::vector<double> crank_deg;            ///< the N grid angles: θ2 = pulse angle + direction·360°·k/N
   double crank_direction = 1;               ///< +1 counter-clockwise, −1 clockwise
   std::size_t revolutions = 0;              ///< in the averages

@@ -66,7 +66,7 @@ void ChunkedAnalysis::finish() {
                      " clipped); give fewer --guard-revolutions or record longer");
   r.crank_speed_rad_s = speed_avg_->result();
   r.mean_crank_speed_rad_s = 0;
-  for (double w : r.crank_speed_rad_s.mean) r.mean_crank_speed_rad_s += w / double(r.points_per_rev);
+  for (double w : r.crank_speed_rad_s.mean) r.mean_crank_speed_rad_s += w / double(r.grid_points_per_rev);
   r.spectra.segments = spectra_.front()->segments();
   if (r.spectra.segments == 0)
     r.warnings.push_back("no spectrum: every pulse-train segment is shorter than one spectrum segment of " +
@@ -87,7 +87,7 @@ void ChunkedAnalysis::finish() {
       lr.normal->omega_sq_rad2_s2 = normal_avg_[j].result();
       for (double w2 : lr.normal->omega_sq_rad2_s2.mean) lr.normal->omega_abs_rad_s.push_back(std::sqrt(std::max(0.0, w2)));
       lr.normal->omega_sq_integrated_rad2_s2 = omega_sq_avg_[j].result().mean;
-      std::vector<double> diff(r.points_per_rev);
+      std::vector<double> diff(r.grid_points_per_rev);
       for (std::size_t k = 0; k < diff.size(); ++k)
         diff[k] = lr.normal->omega_sq_rad2_s2.mean[k] - lr.normal->omega_sq_integrated_rad2_s2[k];
       lr.normal->rel_rms_difference = rms(diff) / rms(lr.normal->omega_sq_integrated_rad2_s2);

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
         {"mounts", {mount_json(ct, g), mount_json(rt, g), mount_json(cn, g)}},
         {"filter", {{"low_hz", 2.9}, {"high_hz", 300}, {"mains_hz", 60}, {"mains_width_hz", 1.0}, {"kaiser_beta", 8.0},
                     {"transition_hz", 0.8}}},
-        {"points_per_rev", grid.points_per_rev},
+        {"points_per_rev", grid.grid_points_per_rev},
         {"grid_start_rad", grid.start_rad}};
     std::ofstream(dir / "record.json") << j.dump(2) << '\n';
   }

@@ -34,7 +34,7 @@ class DriftCheck final : public RevolutionObserver {
   DriftCheck(const bench::LongRecording& s, std::size_t window, std::size_t total)
       : drive_(s.drive()), motion_(s.scene.rig, drive_), window_(window), total_(total) {}
   void on_start(const RecordingAnalysis& a) override {
-    n_ = a.points_per_rev;
+    n_ = a.grid_points_per_rev;
     // Revolution 0 starts at acquire's first pulse: how many turns after the start.
     const double t = a.acquisition.pulses.segments.front().front().time_s;
     offset_turns_ = std::lround((drive_.at(t).angle_rad - drive_.start_angle_rad) / units::kTwoPi);
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::printf("  %s: %zu revolutions averaged (N = %zu, %zu per chunk, kernel %zu taps), acquire passes %.1f + %.1f + "
                   "%.1f s (the last includes the analysis)\n",
-                  method == 0 ? "this chain" : "thesis method", r.revolutions, r.points_per_rev, r.chunk_revolutions,
+                  method == 0 ? "this chain" : "thesis method", r.revolutions, r.grid_points_per_rev, r.chunk_revolutions,
                   r.kernel_taps, r.acquisition.pass_seconds[0], r.acquisition.pass_seconds[1],
                   r.acquisition.pass_seconds[2]);
       std::printf("    alpha3 RMS %.3f rad/s^2, omega3 RMS %.4f rad/s; spread (std RMS) alpha3 %.3f, omega3 %.5f\n",

@@ -224,7 +224,7 @@ int run_analyze(const Invocation& inv) {
   if (vm.count("window")) o.filter.window = parse_window(window, "--window");
   if (vm.count("transition-hz")) o.filter.transition_hz = transition;
   if (vm.count("integration")) o.integration = parse_integration(integration);
-  o.points_per_rev = points;
+  o.grid_points_per_rev = points;
   o.guard_revolutions = guard;
   o.spectrum_segment = spectrum_segment;
   o.chunk_revolutions = chunk;
@@ -239,7 +239,7 @@ int run_analyze(const Invocation& inv) {
   ensure_output_dir(dir);
 
   // averaged.csv
-  const std::size_t N = a.points_per_rev;
+  const std::size_t N = a.grid_points_per_rev;
   std::vector<std::string> cols{"crank_deg", "omega2_rad_s"};
   std::vector<const std::vector<double>*> series{&a.crank_deg, &a.crank_speed_rad_s.mean};
   for (const auto* l : {&a.coupler, &a.rocker}) {

@@ -27,7 +27,7 @@ a second run with unchanged inputs does not recompute.
 
 Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
   title, notes;
-  [analysis] points_per_rev, low_hz, high_hz, mains_hz, mains_width_hz,
+  [analysis] grid_points_per_rev, low_hz, high_hz, mains_hz, mains_width_hz,
              window ("kaiser:8"), transition_hz, guard_revolutions,
              integration ("spectral" | "closed_trapezoid" | "trapezoid");
   [theory]   restitution, contact ("smooth" | "rough" | "stick-slip"),

@@ -26,9 +26,9 @@ std::string_view description(LinkQuantity q) {
 bool is_acceleration(LinkQuantity q) { return q == LinkQuantity::alpha3 || q == LinkQuantity::alpha4; }
 
 double CrankGrid::angle_rad(double k) const {
-  return start_rad + direction * units::kTwoPi * k / static_cast<double>(points_per_rev);
+  return start_rad + direction * units::kTwoPi * k / static_cast<double>(grid_points_per_rev);
 }
 
-double CrankGrid::turned_deg(std::size_t k) const { return 360.0 * static_cast<double>(k) / static_cast<double>(points_per_rev); }
+double CrankGrid::turned_deg(std::size_t k) const { return 360.0 * static_cast<double>(k) / static_cast<double>(grid_points_per_rev); }
 
 }  // namespace fourbar

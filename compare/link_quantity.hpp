@@ -27,7 +27,7 @@ bool is_acceleration(LinkQuantity q);
 /// N crank angles per revolution, θ_k = start + direction·2π·k/N
 /// (direction +1 for a counter-clockwise crank, −1 clockwise).
 struct CrankGrid {
-  std::size_t points_per_rev = 720;
+  std::size_t grid_points_per_rev = 720;
   double start_rad = 0;
   double direction = 1;
   double angle_rad(double k) const;

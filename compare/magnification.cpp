@@ -20,9 +20,9 @@ std::vector<double> minus_row(std::span<const double> rows, std::span<const doub
 
 }  // namespace
 
-std::vector<double> order_amplitudes(std::span<const double> revolutions, std::size_t points_per_rev, int max_order,
+std::vector<double> order_amplitudes(std::span<const double> revolutions, std::size_t grid_points_per_rev, int max_order,
                                      std::vector<double>* floor) {
-  const std::size_t n = points_per_rev, rows = revolutions.size() / n;
+  const std::size_t n = grid_points_per_rev, rows = revolutions.size() / n;
   if (rows == 0 || revolutions.size() % n != 0)
     throw RunError("order_amplitudes: " + std::to_string(revolutions.size()) + " values are not whole revolutions of " +
                    std::to_string(n));

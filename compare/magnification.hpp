@@ -61,7 +61,7 @@ Magnification magnification_factor(const MagnificationInput& in, int max_order =
 /// Hann window over all R·N points when R ≥ 2, else the one revolution
 /// unwindowed (exactly periodic). `floor` (optional) gets the median
 /// amplitude of the non-order bins within ±2 orders (0 when R < 6).
-std::vector<double> order_amplitudes(std::span<const double> revolutions, std::size_t points_per_rev, int max_order,
+std::vector<double> order_amplitudes(std::span<const double> revolutions, std::size_t grid_points_per_rev, int max_order,
                                      std::vector<double>* floor = nullptr);
 
 }  // namespace fourbar

@@ -33,14 +33,14 @@ MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double
         "the clearance model needs a radial clearance > 0");
   check(settings.warmup_revolutions >= 0, "warmup_revolutions", settings.warmup_revolutions, "must be >= 0");
   check(settings.averaged_revolutions >= 1, "averaged_revolutions", settings.averaged_revolutions, "must be >= 1");
-  check(grid.points_per_rev >= 8, "points_per_rev", static_cast<double>(grid.points_per_rev), "must be >= 8");
+  check(grid.grid_points_per_rev >= 8, "points_per_rev", static_cast<double>(grid.grid_points_per_rev), "must be >= 8");
 
   MatchedTheory out;
   out.grid = grid;
   out.crank_speed_rad_s = crank_speed_rad_s;
   out.clearance_m = clearance_m;
   out.settings = settings;
-  const std::size_t n = grid.points_per_rev, turns = static_cast<std::size_t>(settings.averaged_revolutions);
+  const std::size_t n = grid.grid_points_per_rev, turns = static_cast<std::size_t>(settings.averaged_revolutions);
   const int warm = settings.warmup_revolutions;
   const double w = std::abs(crank_speed_rad_s);
   const double cell_s = units::kTwoPi / (static_cast<double>(n) * w);  // time between grid points
@@ -133,7 +133,7 @@ MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double
 }
 
 void apply_pass_band(MatchedTheory& theory, const FilterSpec& spec_in) {
-  const std::size_t n = theory.grid.points_per_rev;
+  const std::size_t n = theory.grid.grid_points_per_rev;
   const double fs = static_cast<double>(n) * std::abs(theory.crank_speed_rad_s) / units::kTwoPi;
   FilterSpec spec = spec_in;
   spec.window = WindowSpec{};

@@ -12,7 +12,7 @@ namespace {
 std::vector<double> burst_angles(const std::vector<double>& x, const std::vector<double>& nominal, const CrankGrid& g) {
   std::vector<double> dev(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) dev[i] = x[i] - nominal[i];
-  const auto sep = static_cast<std::size_t>(std::ceil(15.0 / 360.0 * static_cast<double>(g.points_per_rev)));
+  const auto sep = static_cast<std::size_t>(std::ceil(15.0 / 360.0 * static_cast<double>(g.grid_points_per_rev)));
   std::vector<double> deg;
   for (std::size_t k : largest_peaks(dev, 3, sep)) deg.push_back(g.turned_deg(k));
   return deg;
@@ -21,8 +21,8 @@ std::vector<double> burst_angles(const std::vector<double>& x, const std::vector
 }  // namespace
 
 RecordingComparison compare_response(const MeasuredResponse& measured, const MatchedTheory& theory) {
-  const std::size_t n = theory.grid.points_per_rev;
-  if (measured.grid.points_per_rev != n || std::abs(measured.grid.start_rad - theory.grid.start_rad) > 1e-12 ||
+  const std::size_t n = theory.grid.grid_points_per_rev;
+  if (measured.grid.grid_points_per_rev != n || std::abs(measured.grid.start_rad - theory.grid.start_rad) > 1e-12 ||
       measured.grid.direction != theory.grid.direction)
     throw RunError("compare: measurement and theory are on different crank-angle grids");
   RecordingComparison out;

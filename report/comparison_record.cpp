@@ -88,7 +88,7 @@ json comparison_record(const MeasuredResponse& measured, const MatchedTheory& t,
                  {"severity", sev},
                  {"energy_residual_rel", t.energy_residual_rel},
                  {"max_penetration_rel", t.max_penetration_rel}};
-  std::vector<double> deg(t.grid.points_per_rev);
+  std::vector<double> deg(t.grid.grid_points_per_rev);
   for (std::size_t k = 0; k < deg.size(); ++k) deg[k] = theta2_deg(t.grid.turned_deg(k));
   r["grid"] = {{"crank_deg", deg}, {"pulse_angle_deg", units::rad_to_deg(t.grid.start_rad)}};
   json series = json::object(), metrics = json::object();

@@ -44,7 +44,7 @@ json link_spectrum(const RecordingAnalysis& a, const LinkResult& link, double ma
 
 MeasuredResponse measured_response(const RecordingAnalysis& a) {
   MeasuredResponse m;
-  m.grid.points_per_rev = a.points_per_rev;
+  m.grid.grid_points_per_rev = a.grid_points_per_rev;
   m.grid.start_rad = a.crank_deg.empty() ? 0.0 : units::deg_to_rad(a.crank_deg[0]);
   m.grid.direction = a.crank_direction;
   m.crank_speed_rad_s = a.mean_crank_speed_rad_s;
@@ -73,7 +73,7 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
                       {"revolutions_clipped", acq.revolutions_clipped},
                       {"revolutions_in_gaps", acq.revolutions_in_gaps},
                       {"speed_rpm", {{"mean", acq.speed.mean_rpm}, {"std", acq.speed.std_rpm}, {"min", acq.speed.min_rpm}, {"max", acq.speed.max_rpm}}}};
-  r["analysis"] = {{"points_per_rev", a.points_per_rev},
+  r["analysis"] = {{"points_per_rev", a.grid_points_per_rev},
                    {"filter", filter_json(a.filter)},
                    {"kernel_taps", a.kernel_taps},
                    {"conversion", to_string(a.options.conversion)},

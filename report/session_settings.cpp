@@ -39,7 +39,7 @@ TheorySettings read_theory(TomlSection& t, TheorySettings s) {
 }
 
 void read_analysis(TomlSection& a, AnalyzeOptions& o) {
-  o.points_per_rev = static_cast<std::size_t>(a.integer("points_per_rev", 0, 1 << 20, 0));
+  o.grid_points_per_rev = static_cast<std::size_t>(a.integer("points_per_rev", 0, 1 << 20, 0));
   if (a.has("low_hz")) o.filter.low_hz = a.positive("low_hz");
   if (a.has("high_hz")) o.filter.high_hz = a.positive("high_hz");
   o.filter.mains_hz = a.in_range("mains_hz", 0, 1e5, 0.0);
@@ -70,7 +70,7 @@ const TheorySettings& SessionSettings::theory_for(const std::string& recording_f
 }
 
 nlohmann::json SessionSettings::to_json() const {
-  nlohmann::json a = {{"points_per_rev", analysis.points_per_rev == 0 ? nlohmann::json("auto") : nlohmann::json(analysis.points_per_rev)},
+  nlohmann::json a = {{"points_per_rev", analysis.grid_points_per_rev == 0 ? nlohmann::json("auto") : nlohmann::json(analysis.grid_points_per_rev)},
                       {"low_hz", analysis.filter.low_hz ? nlohmann::json(*analysis.filter.low_hz) : nlohmann::json("auto")},
                       {"high_hz", analysis.filter.high_hz ? nlohmann::json(*analysis.filter.high_hz) : nlohmann::json("auto")},
                       {"mains_hz", analysis.filter.mains_hz},

@@ -44,7 +44,7 @@ struct Truth {
 };
 Truth grid_truth(const SyntheticRig& s, SensedLink link, const LinkAnalysis& a, double grid_start,
                  std::size_t guard = 0) {
-  const std::size_t N = a.points_per_rev, averaged = a.revolutions - 2 * guard;
+  const std::size_t N = a.grid_points_per_rev, averaged = a.revolutions - 2 * guard;
   Truth t{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0), {}, {}};
   for (std::size_t r = 0; r < a.revolutions; ++r)
     for (std::size_t k = 0; k < N; ++k) {
@@ -158,7 +158,7 @@ std::vector<Errors> run_case(SyntheticRig s, bool compare) {
     at_joint.distance_m = link_length_m(s.rig, link);
     at_joint.offset_m = 0;
     row("  sensor taken at the joint", variant(s.rig, at_joint, rec.crank(), opt));
-    const Errors thesis = thesis_method(s, rec, ch, opt.filter, truth, grid.points_per_rev);
+    const Errors thesis = thesis_method(s, rec, ch, opt.filter, truth, grid.grid_points_per_rev);
     row("thesis method", thesis);
     EXPECT_GT(thesis.alpha, 3 * ours.alpha);
     EXPECT_GT(thesis.omega, 3 * ours.omega);
@@ -214,7 +214,7 @@ TEST(AnalyzeAccuracy, NormalChannelChecksTheIntegratedOmega) {
   low.filter.band = BandType::lowpass;
   const NormalChannelAnalysis n = analyzer.normal(normal, rec.channels[1].recorded, t.alpha_rad_s2, low);
   ASSERT_EQ(n.revolutions, t.revolutions);
-  const std::size_t N = t.points_per_rev;
+  const std::size_t N = t.grid_points_per_rev;
   std::vector<double> from_integral(N), truth(N, 0.0);
   for (std::size_t k = 0; k < N; ++k) from_integral[k] = t.omega.mean[k] * t.omega.mean[k];
   for (std::size_t r = 0; r < t.revolutions; ++r)

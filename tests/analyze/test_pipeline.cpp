@@ -24,7 +24,7 @@ struct Errors {
 };
 
 Errors errors(const RecordingAnalysis& a, const GridTruth& t) {
-  const std::size_t N = a.points_per_rev;
+  const std::size_t N = a.grid_points_per_rev;
   Errors e;
   e.alpha3 = rel_rms_error(a.coupler->alpha_rad_s2.mean, row_mean(t.alpha3, N));
   e.omega3 = rel_rms_error(a.coupler->omega_rad_s.mean, row_mean(t.omega3, N));
@@ -84,7 +84,7 @@ TEST(AnalyzePipeline, ThesisRigAt350RpmNoiseHumAgainstVirtualRigTruth) {
   print("  with periodic integration", c.errors);
   print("thesis method (same band)", b.errors);
   std::printf("  filter: %s, %zu taps; grid N = %zu\n", describe(a.analysis.filter).c_str(), a.analysis.kernel_taps,
-              a.analysis.points_per_rev);
+              a.analysis.grid_points_per_rev);
 
   EXPECT_GE(a.analysis.revolutions, 58u);
   EXPECT_LE(a.errors.alpha3, 0.01);
@@ -180,7 +180,7 @@ TEST(AnalyzePipeline, NoDriftOver10000Revolutions) {
     Drift(const VirtualSetup& setup, const VirtualRigResult& w)
         : v(setup), written(w), drive(setup.drive()), motion(setup.scene.rig, drive) {}
     void on_start(const RecordingAnalysis& a) override {
-      n = a.points_per_rev;
+      n = a.grid_points_per_rev;
       last = a.acquisition.revolutions;
       base = std::fmod(std::fmod(-drive.start_angle_rad, units::kTwoPi) + units::kTwoPi, units::kTwoPi);
     }

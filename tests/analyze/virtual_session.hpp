@@ -57,7 +57,7 @@ inline GridTruth grid_truth(const VirtualSetup& v, const VirtualRigResult& writt
     std::printf("  warning: acquire's first pulse %.6f s is not the first written %.6f s\n", first,
                 written.pulse_times_s.front());
   GridTruth t;
-  const std::size_t N = a.points_per_rev;
+  const std::size_t N = a.grid_points_per_rev;
   for (std::size_t r : revolutions)
     for (std::size_t k = 0; k < N; ++k) {
       const double turned = base + units::kTwoPi * (static_cast<double>(r) + static_cast<double>(k) / N);
