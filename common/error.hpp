@@ -1,6 +1,6 @@
 #pragma once
 // Error types that carry the process exit status the CLI reports.
-// Documented exit codes (README "Exit codes"):
+// Documented exit codes (README "The command"):
 //   0  success
 //   1  the run failed (numerical failure, cannot write output, internal error)
 //   2  bad input: usage, a file, a key, a value or a channel the user gave
