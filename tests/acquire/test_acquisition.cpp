@@ -9,6 +9,7 @@
 #include "acquire/acquisition.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "common/statistics.hpp"
 #include "virtual_rig/recording_writer.hpp"
 #include "virtual_rig/sensor_signal.hpp"
 #include "virtual_recording.hpp"
@@ -54,12 +55,6 @@ Acquired run_acquire(const std::filesystem::path& recording, AcquireOptions opti
 
 /// Angle difference brought into (−π, π].
 double wrap(double a) { return std::remainder(a, units::kTwoPi); }
-
-double rms(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x * x;
-  return std::sqrt(s / static_cast<double>(v.size()));
-}
 
 /// The accepted pulse times of all segments.
 std::vector<double> pulse_times(const AcquisitionReport& r) {

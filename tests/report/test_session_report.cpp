@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/statistics.hpp"
 #include "support/csv_file.hpp"
 #include "support/headless_browser.hpp"
 #include "support/run_command.hpp"
@@ -191,11 +192,6 @@ TEST_F(SessionReport, SeriesFilesBesideTheReport) {
   const std::vector<double> nominal = column(series, "alpha3_nominal_rad_s2");
   std::vector<double> deviation(measured.size());
   for (std::size_t i = 0; i < measured.size(); ++i) deviation[i] = measured[i] - nominal[i];
-  const auto rms = [](const std::vector<double>& v) {
-    double s = 0;
-    for (double x : v) s += x * x;
-    return std::sqrt(s / static_cast<double>(v.size()));
-  };
   // CSV cells carry 15+ significant digits: 1e-9 relative is round-off.
   EXPECT_NEAR(rms(measured), m3["measured_rms"].get<double>(), 1e-9 * m3["measured_rms"].get<double>());
   EXPECT_NEAR(rms(deviation), m3["rms_difference_nominal"].get<double>(),
