@@ -9,6 +9,7 @@
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
 #include "common/toml_section.hpp"
+#include "common/toml_writer.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
@@ -217,11 +218,7 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
     std::snprintf(buf, sizeof buf, "%.15g", v);
     return std::string(buf);
   };
-  auto quoted = [](const std::string& s) {
-    std::string out = "\"";
-    for (char ch : s) out += (ch == '"' || ch == '\\') ? std::string("\\") + ch : std::string(1, ch);
-    return out + "\"";
-  };
+  auto quoted = [](const std::string& s) { return toml_quoted(s); };
   std::ostringstream os;
   os << "# Recording manifest (keys: README \"Recordings and manifests\").\n";
   os << "rig = " << quoted(rel(m.rig_file)) << "\n";
