@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
+#include "common/error.hpp"
 #include "report/session_report.hpp"
 
 namespace po = boost::program_options;
@@ -45,16 +46,18 @@ failed; 2 bad arguments, session.toml or session folder (nothing written).
 int run_report(const Invocation& inv) {
   std::string dir, out, cache;
   bool no_cache = false, quiet = false;
+  int jobs = 0;
   po::options_description opts("options");
   opts.add_options()("session", po::value(&dir)->required(), "session folder with the recordings and manifests")(
       "out,o", po::value(&out), "report to write (default SESSION_DIR/report/report.html)")(
       "cache", po::value(&cache), "cache folder (default: .fourbar-cache beside the report)")(
       "no-cache", po::bool_switch(&no_cache), "recompute everything; read and write no cache")(
+      "jobs,j", po::value(&jobs), "recordings processed at once (default: every core); the outputs do not depend on it")(
       "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
   po::positional_options_description pos;
   pos.add("session", 1);
   po::variables_map vm;
-  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache]", kDetails, opts, pos, inv,
+  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache] [--jobs N]", kDetails, opts, pos, inv,
                        vm))
     return 0;
   ReportOptions o;
@@ -63,6 +66,8 @@ int run_report(const Invocation& inv) {
   o.cache_dir = cache;
   o.use_cache = !no_cache;
   o.progress = !quiet;
+  if (jobs < 0) throw InputError("report: --jobs " + std::to_string(jobs) + " must be 1 or more (or 0 for every core)");
+  o.jobs = static_cast<std::size_t>(jobs);
   o.command_line = inv.command_line;
   const ReportOutcome r = run_session_report(o);
   std::cout << "wrote " << r.html.string() << " and " << r.summary.string() << ": " << r.recordings << " recordings, "

@@ -2,9 +2,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <iostream>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "acquire/manifest.hpp"
 #include "common/atomic_output.hpp"
@@ -63,6 +69,8 @@ std::optional<json> read_cache(const std::filesystem::path& file) {
 
 }  // namespace
 
+std::size_t default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
+
 json summary_of(const json& session) {
   json s = session;
   for (json& r : s["recordings"]) {
@@ -89,13 +97,14 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   AnalyzeOptions analysis = settings.analysis;
   analysis.progress = false;  // one line per recording instead
   const json settings_json = settings.to_json();
-  ReportOutcome out;
-  json records = json::array();
   const std::size_t n = files.recordings.size();
-  for (std::size_t i = 0; i < n; ++i) {
+
+  // One recording: its inputs, the cache key, and the record (from the cache
+  // or computed). Independent of every other recording, so the workers may
+  // take them in any order; the records are put back in the folder's order.
+  auto record_of = [&](std::size_t i) {
     const std::filesystem::path& rec = files.recordings[i];
     const std::string name = rec.filename().string();
-    if (tty) std::fprintf(stderr, "\rreport: [%zu/%zu] %s ...\033[K", i + 1, n, name.c_str());
     const TheorySettings& theory = settings.theory_for(name);
     const json inputs = input_files(rec, o.session_dir);
     const std::string key = sha256_text(std::string(kVersion) + "\n" + inputs.dump() + "\n" +
@@ -112,16 +121,49 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     r["files"] = inputs;
     r["cache_key"] = key;
     r["from_cache"] = cached;
+    return std::move(r);
+  };
+  std::vector<json> computed(n);
+  const std::size_t jobs = std::clamp<std::size_t>(o.jobs > 0 ? o.jobs : default_jobs(), 1, n);
+  {
+    std::atomic<std::size_t> next{0}, done{0};
+    std::mutex io;
+    std::exception_ptr failure;
+    auto worker = [&] {
+      for (std::size_t i; (i = next.fetch_add(1)) < n;) {
+        try {
+          computed[i] = record_of(i);
+        } catch (...) {  // an output that cannot be written: stop every worker, rethrow below
+          const std::lock_guard lock(io);
+          if (!failure) failure = std::current_exception();
+          next = n;
+        }
+        if (tty) {
+          const std::lock_guard lock(io);
+          std::fprintf(stderr, "\rreport: [%zu/%zu] %s done\033[K", done.fetch_add(1) + 1, n,
+                       files.recordings[i].filename().string().c_str());
+        }
+      }
+    };
+    std::vector<std::jthread> pool;
+    for (std::size_t t = 1; t < jobs; ++t) pool.emplace_back(worker);
+    worker();
+    pool.clear();  // joins
+    if (failure) std::rethrow_exception(failure);
+  }
+  if (tty) std::fprintf(stderr, "\r\033[K");
+
+  ReportOutcome out;
+  json records = json::array();
+  for (json& r : computed) {
     ++out.recordings;
-    out.from_cache += cached;
+    out.from_cache += r["from_cache"].get<bool>();
     if (r["status"] != "ok") {
       ++out.failed;
-      if (tty) std::fprintf(stderr, "\r\033[K");
-      std::cerr << "fourbar: report: " << name << ": " << r["error"].get<std::string>() << "\n";
+      std::cerr << "fourbar: report: " << r["name"].get<std::string>() << ": " << r["error"].get<std::string>() << "\n";
     }
     records.push_back(std::move(r));
   }
-  if (tty) std::fprintf(stderr, "\r\033[K");
 
   json orphans = json::array();
   for (const auto& m : files.orphan_manifests) orphans.push_back(m.filename().string());

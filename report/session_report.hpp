@@ -8,6 +8,7 @@
 // every setting that applies to it; a second run with unchanged inputs reads
 // the records back instead of recomputing. Failed recordings are not cached.
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -21,6 +22,7 @@ struct ReportOptions {
   std::filesystem::path cache_dir;  ///< empty: <out dir>/.fourbar-cache
   bool use_cache = true;
   bool progress = true;             ///< per-recording progress on stderr when it is a terminal
+  std::size_t jobs = 0;             ///< recordings processed at once; 0: default_jobs()
   std::string command_line;         ///< for provenance
 };
 
@@ -29,7 +31,11 @@ struct ReportOutcome {
   std::filesystem::path html, summary;
 };
 
-/// Runs the whole session. InputError (exit 2) for a bad session folder,
+/// Recordings processed at once by default: every core.
+std::size_t default_jobs();
+
+/// Runs the whole session. Recordings are processed `jobs` at a time; the
+/// outputs are the same for every `jobs` (records in the folder's order). InputError (exit 2) for a bad session folder,
 /// session.toml or output path; a bad recording is reported in the outputs
 /// and on stderr and counted in `failed`.
 ReportOutcome run_session_report(const ReportOptions& options);

@@ -113,6 +113,34 @@ TEST_F(SessionReport, BadRecordingsAreReportedAndTheRestProcessed) {
   EXPECT_NE(html.find("failed"), std::string::npos);
 }
 
+TEST_F(SessionReport, OutputsDoNotDependOnTheNumberOfJobs) {
+  // The main run used every core; one job at a time and more jobs than
+  // recordings give the same records, in the same order, and the same series.
+  const auto d = dir_->path();
+  for (const char* jobs : {"1", "7"}) {
+    const auto out = d / (std::string("jobs") + jobs);
+    const auto r = testing::run_fourbar("report " + (d / "session").string() + " --no-cache -q --jobs " + jobs +
+                                        " --out " + (out / "report.html").string());
+    EXPECT_EQ(r.status, run_->status) << r.err;
+    EXPECT_EQ(r.err, run_->err) << "the failures are named in the same order";
+    std::ifstream in(out / "summary.json");
+    const json s = json::parse(in);
+    EXPECT_EQ(s["recordings"], (*summary_)["recordings"]) << "--jobs " << jobs;
+    EXPECT_EQ(s["severity"], (*summary_)["severity"]) << "--jobs " << jobs;
+    auto body = [](const std::filesystem::path& f) {  // the series without the provenance line
+      const std::string text = testing::read_file(f);
+      return text.substr(text.find('\n') + 1);
+    };
+    for (const char* name : {"nominal.csv", "clearance.csv", "clearance_impacts.csv"})
+      EXPECT_EQ(body(out / "series" / name), body(d / "out" / "series" / name)) << name << ", --jobs " << jobs;
+  }
+  const auto bad = testing::run_fourbar("report " + (d / "session").string() + " --jobs -1 --out " +
+                                        (d / "jobs_bad" / "report.html").string());
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--jobs"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(d / "jobs_bad"));
+}
+
 TEST_F(SessionReport, OperatingPointIsTheRecordedOne) {
   // The virtual rig turned the crank at exactly 300 and 350 rpm; the manifests carry the clearance.
   EXPECT_NEAR(recording("nominal.flac")["operating_point"]["speed_rpm"].get<double>(), 300.0, 0.03);
