@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/command.hpp"
+#include "cluster/mpi_session.hpp"
 #include "common/error.hpp"
 #include "common/version.hpp"
 
@@ -53,12 +54,15 @@ int main(int argc, char** argv) {
     return kExitInputError;
   } catch (const InputError& e) {
     std::cerr << "fourbar: " << e.what() << "\n";
+    MpiSession::abort_all(kExitInputError);  // the other ranks of an MPI job would wait for this one
     return kExitInputError;
   } catch (const RunError& e) {
     std::cerr << "fourbar: " << e.what() << "\n";
+    MpiSession::abort_all(kExitRunError);
     return kExitRunError;
   } catch (const std::exception& e) {
     std::cerr << "fourbar: internal error: " << e.what() << " (please report it with the input files)\n";
+    MpiSession::abort_all(kExitRunError);
     return kExitRunError;
   }
 }

@@ -1,76 +1,197 @@
 // `fourbar sweep SWEEP.toml [--out FILE] [--jobs N]`: a clearance × rpm × e × μ
-// grid over a base clearance scene, run on all cores, written as one table
-// (the analogue of thesis Figs 7.10 and 7.11).
+// grid over a base clearance scene, written as one table (the analogue of
+// thesis Figs 7.10 and 7.11). The points run on every core, or over the ranks
+// of an MPI job (cluster/case_queue.hpp); each finished point is journaled so
+// an interrupted sweep resumes where it stopped (sweep_journal.hpp).
 
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <thread>
 
 #include "cli/command.hpp"
+#include "cluster/case_queue.hpp"
+#include "cluster/mpi_session.hpp"
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
+#include "common/version.hpp"
 #include "sim/clearance/sweep.hpp"
+#include "sim/clearance/sweep_journal.hpp"
 
 namespace po = boost::program_options;
 
 namespace fourbar::cli {
 
+namespace {
+
+constexpr const char* kDetails = R"(Runs the clearance model over a grid and writes one CSV row per grid point.
+
+Sweep file keys:
+  scene                 base scene (model = "clearance"), relative to the sweep file
+  radial_mm             array of radial clearances in mm (default: the scene's)
+  crank_speed_rpm       array of crank speeds in rpm (default: the scene's)
+  restitution           array of coefficients of restitution (default: the scene's)
+  friction_coefficient  array of Coulomb mu (base scene must be stick-slip)
+  revolutions           turns counted per grid point (default 10)
+  skip_revolutions      start-up turns run first and not counted (default 2)
+
+Columns: radial_mm, crank_speed_rpm, restitution, friction_coefficient,
+impacts_per_rev (n), sum_normal_impulse_per_rev_Ns (SigmaF), impact_index_Ns
+(I_n = SigmaF/n, 0 when n = 0), contact_losses_per_rev, following_share,
+energy_residual_rel, max_penetration_rel, status ("ok" or "failed"), error
+(why a point failed; its statistics are then empty).
+
+Each finished point is appended to OUT.journal at once. A sweep that was
+interrupted (Ctrl-C, a killed job, a lost node) and is started again with the
+same inputs takes the finished points from the journal and computes only the
+rest; the journal is removed when the table is written.
+
+On a cluster: start it under mpirun or srun, one rank per core (e.g.
+`mpirun -np 64 fourbar sweep big.toml`); rank 0 hands out one point at a time
+and writes the table, identical to a run on one machine. docs/cluster.md has
+a Slurm script and how to size the job.
+
+Exit status: 0 every point computed; 1 the table was written but some points
+failed (each named on stderr, status "failed" in the table), or the run
+failed; 2 bad arguments or sweep file (nothing written).)";
+
+std::string file_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/// What a journal must have been made from to be reused: the version, the
+/// three input files and the grid itself.
+std::string inputs_fingerprint(const std::string& sweep_file, const Scene& base, const std::vector<SweepPoint>& points,
+                               const SweepGrid& grid) {
+  std::string text = std::string(kVersion) + "\n" + file_bytes(sweep_file) + "\n" + file_bytes(base.source) + "\n" +
+                     file_bytes(base.rig->source) + "\n" + std::to_string(grid.revolutions) + " " +
+                     std::to_string(grid.skip_revolutions) + "\n";
+  for (const SweepPoint& p : points) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%a %a %a %a\n", p.radial_clearance_m, p.crank_speed_rad_s, p.restitution,
+                  p.friction_coefficient);
+    text += buf;
+  }
+  return fingerprint_of(text);
+}
+
+void write_table(const std::filesystem::path& out_path, const Provenance& prov, const std::vector<SweepPoint>& points) {
+  CsvWriter csv(out_path, prov.comment_lines(),
+                {"radial_mm", "crank_speed_rpm", "restitution", "friction_coefficient", "impacts_per_rev",
+                 "sum_normal_impulse_per_rev_Ns", "impact_index_Ns", "contact_losses_per_rev", "following_share",
+                 "energy_residual_rel", "max_penetration_rel", "status", "error"});
+  for (const SweepPoint& p : points) {
+    const double values[] = {units::m_to_mm(p.radial_clearance_m),
+                             units::rad_s_to_rpm(p.crank_speed_rad_s),
+                             p.restitution,
+                             p.friction_coefficient,
+                             p.impacts_per_rev,
+                             p.sum_normal_impulse_per_rev_Ns,
+                             p.impact_index_Ns,
+                             p.contact_losses_per_rev,
+                             p.following_share,
+                             p.energy_residual_rel,
+                             p.max_penetration_rel};
+    std::vector<std::string> cells;
+    for (std::size_t k = 0; k < std::size(values); ++k)
+      cells.push_back(p.failed() && k >= 4 ? std::string() : format_double(values[k]));
+    cells.push_back(p.failed() ? "failed" : "ok");
+    cells.push_back(p.error);
+    csv.text_row(cells);
+  }
+  csv.commit();
+}
+
+}  // namespace
+
 int run_sweep(const Invocation& inv) {
   std::string sweep_file, out_file;
   // Signed, so that "--jobs -1" is refused instead of wrapping round to 4294967295.
   long long jobs = std::max(1u, std::thread::hardware_concurrency());
+  bool quiet = false;
   po::options_description opts("options");
   opts.add_options()("sweep", po::value(&sweep_file)->required(), "sweep file (TOML)")(
       "out,o", po::value(&out_file), "output table (default: out/<sweep name>.csv)")(
-      "jobs,j", po::value(&jobs), "threads (default: all cores)");
+      "jobs,j", po::value(&jobs), "threads (default: all cores; under MPI each rank runs one point at a time)")(
+      "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
   po::positional_options_description pos;
   pos.add("sweep", 1);
   po::variables_map vm;
-  if (!parse_arguments(
-          "sweep", "SWEEP.toml [--out FILE] [--jobs N]",
-          "Runs the clearance model over a grid and writes one CSV row per grid point.\n\n"
-          "Sweep file keys:\n"
-          "  scene                 base scene (model = \"clearance\"), relative to the sweep file\n"
-          "  radial_mm             array of radial clearances in mm (default: the scene's)\n"
-          "  crank_speed_rpm       array of crank speeds in rpm (default: the scene's)\n"
-          "  restitution           array of coefficients of restitution (default: the scene's)\n"
-          "  friction_coefficient  array of Coulomb μ (base scene must be stick-slip)\n"
-          "  revolutions           turns counted per grid point (default 10)\n"
-          "  skip_revolutions      start-up turns run first and not counted (default 2)\n\n"
-          "Columns: radial_mm, crank_speed_rpm, restitution, friction_coefficient,\n"
-          "impacts_per_rev (n), sum_normal_impulse_per_rev_Ns (ΣF), impact_index_Ns\n"
-          "(I_n = ΣF/n, 0 when n = 0), contact_losses_per_rev, following_share,\n"
-          "energy_residual_rel, max_penetration_rel.",
-          opts, pos, inv, vm))
-    return 0;
+  if (!parse_arguments("sweep", "SWEEP.toml [--out FILE] [--jobs N]", kDetails, opts, pos, inv, vm)) return 0;
   if (jobs < 1 || jobs > 4096) throw InputError("sweep: --jobs " + std::to_string(jobs) + " must be between 1 and 4096");
 
+  // Every rank reads and checks the inputs (so a bad file fails on all of
+  // them alike); only rank 0 writes.
   Scene base;
   const SweepGrid grid = load_sweep(sweep_file, base);
+  std::vector<SweepPoint> points = sweep_points(grid);
+  const MpiSession& mpi = MpiSession::get();
+  auto compute = [&](std::size_t i) {
+    SweepPoint p = points[i];
+    compute_sweep_point(base, grid, p);
+    return encode_sweep_result(p);
+  };
+  if (!mpi.leader()) {
+    run_case_queue({}, 1, compute, {});
+    return 0;
+  }
+
   if (out_file.empty()) out_file = (std::filesystem::path("out") / std::filesystem::path(sweep_file).stem()).string() + ".csv";
   const std::filesystem::path out_path(out_file);
   if (out_path.has_parent_path()) ensure_output_dir(out_path.parent_path());
-
-  const std::vector<SweepPoint> points = fourbar::run_sweep(base, grid, static_cast<unsigned>(jobs));
-
-  Provenance prov{inv.command_line, {sweep_file, base.source, base.rig->source}};
-  CsvWriter csv(out_path, prov.comment_lines(),
-                {"radial_mm", "crank_speed_rpm", "restitution", "friction_coefficient", "impacts_per_rev",
-                 "sum_normal_impulse_per_rev_Ns", "impact_index_Ns", "contact_losses_per_rev", "following_share",
-                 "energy_residual_rel", "max_penetration_rel"});
-  for (const SweepPoint& p : points) {
-    const double row[] = {units::m_to_mm(p.radial_clearance_m), units::rad_s_to_rpm(p.crank_speed_rad_s),
-                          p.restitution, p.friction_coefficient, p.impacts_per_rev, p.sum_normal_impulse_per_rev_Ns,
-                          p.impact_index_Ns, p.contact_losses_per_rev, p.following_share, p.energy_residual_rel,
-                          p.max_penetration_rel};
-    csv.row(row);
+  SweepJournal journal(out_path.string() + ".journal", inputs_fingerprint(sweep_file, base, points, grid),
+                       points.size());
+  if (journal.discarded_stale())
+    std::cerr << "fourbar: sweep: " << journal.path().string()
+              << " is from other inputs (the sweep, scene or rig changed); starting over\n";
+  std::vector<std::size_t> todo;
+  std::size_t resumed = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto it = journal.finished().find(i);
+    if (it != journal.finished().end() && decode_sweep_result(it->second, points[i])) ++resumed;
+    else todo.push_back(i);
   }
-  csv.commit();
+
+  Progress progress("sweep", todo.size(), !quiet);
+  std::size_t finished = 0;
+  const CaseQueueStats stats =
+      run_case_queue(todo, static_cast<unsigned>(jobs), compute, [&](std::size_t i, std::string&& result) {
+        journal.append(i, result);
+        if (!decode_sweep_result(result, points[i]))
+          throw RunError("sweep: internal error: point " + std::to_string(i) + " came back unreadable");
+        progress.update(++finished);
+      });
+  progress.finish();
+
+  write_table(out_path, Provenance{inv.command_line, {sweep_file, base.source, base.rig->source}}, points);
+  journal.remove();
+
+  constexpr std::size_t kFailuresNamed = 10;  // the rest are in the table
+  std::size_t failed = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].failed() && ++failed <= kFailuresNamed) {
+      std::cerr << "fourbar: sweep: point " << i + 1 << " (radial " << format_double(units::m_to_mm(points[i].radial_clearance_m))
+                << " mm, " << format_double(units::rad_s_to_rpm(points[i].crank_speed_rad_s)) << " rpm, e "
+                << format_double(points[i].restitution) << ", mu " << format_double(points[i].friction_coefficient)
+                << ") failed: " << points[i].error << "\n";
+    }
+  if (failed > kFailuresNamed)
+    std::cerr << "fourbar: sweep: and " << failed - kFailuresNamed << " more failed points (status \"failed\" in "
+              << out_path.string() << ")\n";
   std::cout << "wrote " << out_path.string() << " (" << points.size() << " grid points, " << grid.revolutions
-            << " counted turns each, " << jobs << " threads)\n";
-  return 0;
+            << " counted turns each";
+  if (resumed > 0) std::cout << "; " << resumed << " from the journal of an interrupted run";
+  std::cout << "; " << todo.size() << " computed on ";
+  if (stats.ranks > 1) std::cout << mpi.describe();
+  else std::cout << stats.threads << (stats.threads == 1 ? " thread" : " threads");
+  if (failed > 0) std::cout << "; " << failed << " failed";
+  std::cout << ")\n";
+  return failed > 0 ? 1 : 0;
 }
 
 }  // namespace fourbar::cli

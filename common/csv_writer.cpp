@@ -60,4 +60,24 @@ void CsvWriter::row(std::span<const double> values, const std::string& last_text
   ++rows_;
 }
 
+void CsvWriter::text_row(std::span<const std::string> cells) {
+  if (cells.size() != columns_.size())
+    throw RunError(out_.path().string() + ": internal error: row has " + std::to_string(cells.size()) + " cells for " +
+                   std::to_string(columns_.size()) + " columns");
+  line_.clear();
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i) line_ += ',';
+    if (cells[i].find_first_of(",\"\r\n") == std::string::npos) {
+      line_ += cells[i];
+      continue;
+    }
+    line_ += '"';
+    for (char ch : cells[i]) line_ += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    line_ += '"';
+  }
+  line_ += '\n';
+  out_.stream() << line_;
+  ++rows_;
+}
+
 }  // namespace fourbar

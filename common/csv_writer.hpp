@@ -23,6 +23,10 @@ class CsvWriter {
   void row(std::span<const double> values);
   /// Appends a row whose last cell is text (e.g. a mode name).
   void row(std::span<const double> values, const std::string& last_text);
+  /// Appends a row of cells as they are: numbers already formatted, empty
+  /// cells for values that do not exist, text quoted (RFC 4180) where it
+  /// holds a comma, quote or line break.
+  void text_row(std::span<const std::string> cells);
   void commit() { out_.commit(); }
 
  private:

@@ -16,7 +16,7 @@ set -uo pipefail
 # The stack, bottom first: folder and layer. This table is the rule.
 declare -A layer=(
   [common]=0
-  [mechanism]=1
+  [mechanism]=1 [cluster]=1
   [acquire]=2 [sim]=2
   [analyze]=3 [virtual_rig]=3
   [compare]=4

@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <atomic>
-#include <exception>
-#include <mutex>
-#include <thread>
+#include <cstdio>
+#include <cstdlib>
 
 #include "common/error.hpp"
 #include "common/csv_writer.hpp"
@@ -33,7 +31,7 @@ SweepGrid load_sweep(const std::filesystem::path& file, Scene& base) {
   SweepGrid g;
   auto array = [&](std::string_view key, double lo, double hi, double fallback, double to_si) {
     std::vector<double> out;
-    if (!doc.contains(key)) return std::vector<double>{fallback};
+    if (!doc.contains(key)) return std::vector<double>{fallback * to_si};  // `fallback` is in the file's unit
     const toml::array* arr = doc[key].as_array();
     if (!arr || arr->empty()) full.fail(key, "must be a non-empty array of numbers, e.g. [0.1, 0.2]");
     for (const auto& el : *arr) {
@@ -68,7 +66,7 @@ SweepGrid load_sweep(const std::filesystem::path& file, Scene& base) {
   return g;
 }
 
-std::vector<SweepPoint> run_sweep(const Scene& base, const SweepGrid& g, unsigned jobs) {
+std::vector<SweepPoint> sweep_points(const SweepGrid& g) {
   std::vector<SweepPoint> points;
   for (double xi : g.radial_clearance_m)
     for (double w : g.crank_speed_rad_s)
@@ -81,55 +79,91 @@ std::vector<SweepPoint> run_sweep(const Scene& base, const SweepGrid& g, unsigne
           p.friction_coefficient = mu;
           points.push_back(p);
         }
-
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto worker = [&]() {
-    for (std::size_t i = next++; i < points.size(); i = next++) {
-      try {
-        SweepPoint& p = points[i];
-        ClearanceSettings s = base.clearance;
-        s.restitution = p.restitution;
-        s.friction_coefficient = p.friction_coefficient;
-        const ClearanceModel model(*base.rig, p.radial_clearance_m);
-        const ConstantSpeedCrank crank(base.start_angle_rad, p.crank_speed_rad_s);
-        ClearanceSimulator sim(model, crank, s);
-        sim.set_revolution_origin(base.start_angle_rad);
-        sim.start_nominal(0.0);
-        const int total = g.skip_revolutions + g.revolutions;
-        sim.advance_to(crank.time_at_angle(base.start_angle_rad + (p.crank_speed_rad_s > 0 ? 1 : -1) *
-                                                                      units::kTwoPi * total));
-        double n = 0, sumF = 0, losses = 0, follow = 0, span = 0;
-        const auto& revs = sim.revolutions();
-        for (int k = g.skip_revolutions; k < total && k < static_cast<int>(revs.size()); ++k) {
-          n += revs[k].impacts;
-          sumF += revs[k].sum_normal_impulse_Ns;
-          losses += revs[k].contact_losses;
-          follow += revs[k].following_time_s;
-          span += revs[k].end_time_s - revs[k].start_time_s;
-        }
-        p.impacts_per_rev = n / g.revolutions;
-        p.sum_normal_impulse_per_rev_Ns = sumF / g.revolutions;
-        p.impact_index_Ns = n > 0 ? sumF / n : 0.0;
-        p.contact_losses_per_rev = losses / g.revolutions;
-        p.following_share = span > 0 ? follow / span : 0.0;
-        const ClearanceDiagnostics d = sim.diagnostics();
-        p.energy_residual_rel = std::abs(d.energy_residual_J) / d.energy_scale_J;
-        p.max_penetration_rel = d.max_penetration;
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  jobs = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(points.size())));
-  std::vector<std::thread> threads;
-  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (auto& t : threads) t.join();
-  if (failure) std::rethrow_exception(failure);
   return points;
+}
+
+void compute_sweep_point(const Scene& base, const SweepGrid& g, SweepPoint& p) {
+  try {
+    ClearanceSettings s = base.clearance;
+    s.restitution = p.restitution;
+    s.friction_coefficient = p.friction_coefficient;
+    const ClearanceModel model(*base.rig, p.radial_clearance_m);
+    const ConstantSpeedCrank crank(base.start_angle_rad, p.crank_speed_rad_s);
+    ClearanceSimulator sim(model, crank, s);
+    sim.set_revolution_origin(base.start_angle_rad);
+    sim.start_nominal(0.0);
+    const int total = g.skip_revolutions + g.revolutions;
+    sim.advance_to(
+        crank.time_at_angle(base.start_angle_rad + (p.crank_speed_rad_s > 0 ? 1 : -1) * units::kTwoPi * total));
+    double n = 0, sumF = 0, losses = 0, follow = 0, span = 0;
+    const auto& revs = sim.revolutions();
+    for (int k = g.skip_revolutions; k < total && k < static_cast<int>(revs.size()); ++k) {
+      n += revs[k].impacts;
+      sumF += revs[k].sum_normal_impulse_Ns;
+      losses += revs[k].contact_losses;
+      follow += revs[k].following_time_s;
+      span += revs[k].end_time_s - revs[k].start_time_s;
+    }
+    p.impacts_per_rev = n / g.revolutions;
+    p.sum_normal_impulse_per_rev_Ns = sumF / g.revolutions;
+    p.impact_index_Ns = n > 0 ? sumF / n : 0.0;
+    p.contact_losses_per_rev = losses / g.revolutions;
+    p.following_share = span > 0 ? follow / span : 0.0;
+    const ClearanceDiagnostics d = sim.diagnostics();
+    p.energy_residual_rel = std::abs(d.energy_residual_J) / d.energy_scale_J;
+    p.max_penetration_rel = d.max_penetration;
+    p.error.clear();
+  } catch (const RunError& e) {
+    p.error = e.what();
+  }
+}
+
+namespace {
+
+double* result_fields(SweepPoint& p, std::size_t k) {
+  double* fields[] = {&p.impacts_per_rev,        &p.sum_normal_impulse_per_rev_Ns, &p.impact_index_Ns,
+                      &p.contact_losses_per_rev, &p.following_share,               &p.energy_residual_rel,
+                      &p.max_penetration_rel};
+  return k < std::size(fields) ? fields[k] : nullptr;
+}
+
+}  // namespace
+
+std::string encode_sweep_result(const SweepPoint& p) {
+  if (p.failed()) {
+    std::string text = "failed ";
+    for (char ch : p.error) text += (ch == '\n' || ch == '\r') ? ' ' : ch;  // one line
+    return text;
+  }
+  std::string text = "ok";
+  SweepPoint copy = p;
+  for (std::size_t k = 0; double* v = result_fields(copy, k); ++k) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, " %a", *v);  // exact: hexadecimal floating point
+    text += buf;
+  }
+  return text;
+}
+
+bool decode_sweep_result(std::string_view text, SweepPoint& p) {
+  if (text.starts_with("failed ")) {
+    p.error = std::string(text.substr(7));
+    return !p.error.empty();
+  }
+  if (!text.starts_with("ok")) return false;
+  const std::string s(text.substr(2));
+  const char* at = s.c_str();
+  SweepPoint out = p;
+  for (std::size_t k = 0; double* v = result_fields(out, k); ++k) {
+    char* end = nullptr;
+    *v = std::strtod(at, &end);
+    if (end == at || !std::isfinite(*v)) return false;
+    at = end;
+  }
+  if (*at != '\0') return false;
+  out.error.clear();
+  p = out;
+  return true;
 }
 
 }  // namespace fourbar

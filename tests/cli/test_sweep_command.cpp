@@ -3,7 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
 #include <sstream>
+#include <thread>
 
 #include "support/run_command.hpp"
 
@@ -26,7 +33,10 @@ std::vector<std::vector<double>> rows_of(const std::string& csv, std::vector<std
       while (std::getline(ls, cell, ',')) header.push_back(cell);
       continue;
     }
-    while (std::getline(ls, cell, ',')) row.push_back(std::stod(cell));
+    for (std::size_t k = 0; k < header.size() - 2 && std::getline(ls, cell, ','); ++k)  // the numbers before status, error
+      row.push_back(std::stod(cell));
+    std::getline(ls, cell, ',');
+    EXPECT_EQ(cell, "ok") << line;
     rows.push_back(row);
   }
   return rows;
@@ -56,6 +66,182 @@ TEST(SweepCommand, GridTable) {
     total_impacts += row[4];
   }
   EXPECT_GT(total_impacts, 10);
+}
+
+// The table without its provenance lines (which name the command and paths).
+std::string table_body(const std::filesystem::path& csv) {
+  std::istringstream in(testing::read_file(csv));
+  std::string line, body;
+  while (std::getline(in, line))
+    if (!line.starts_with("#")) body += line + "\n";
+  return body;
+}
+
+constexpr const char* kBase = "scene = \"" FOURBAR_SOURCE_DIR "/data/scenes/experiment_clearance_base.toml\"\n";
+
+TEST(SweepCommand, AFailingPointIsRecordedAndTheOthersComplete) {
+  // Coulomb friction in the following mode with mu = 5 makes the sliding
+  // pin's equations singular (Painleve's paradox): that point fails with the
+  // simulator's reason, the one with mu = 0.1 is computed.
+  TempDir dir;
+  std::string scene = testing::read_file(FOURBAR_SOURCE_DIR "/data/scenes/experiment_clearance_base.toml");
+  scene.replace(scene.find("contact = \"smooth\""), 18,
+                "contact = \"stick-slip\"\nfriction_coefficient = 0.1\nfollowing_friction = true");
+  scene.replace(scene.find("../rigs/"), 8, FOURBAR_SOURCE_DIR "/data/rigs/");
+  dir.write("ss.toml", scene);
+  dir.write("g.toml", "scene = \"ss.toml\"\nfriction_coefficient = [0.1, 5.0, 0.2]\nrevolutions = 2\nskip_revolutions = 0\n");
+  const auto out = dir.path() / "t.csv";
+  const auto r = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --out " + out.string());
+  EXPECT_EQ(r.status, 1) << "the table is written, some points failed";
+  EXPECT_NE(r.err.find("point 2 "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Painleve"), std::string::npos) << r.err;
+  EXPECT_EQ(testing::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.out.find("1 failed"), std::string::npos) << r.out;
+  const std::string body = table_body(out);
+  std::istringstream in(body);
+  std::string header, row1, row2, row3;
+  std::getline(in, header);
+  std::getline(in, row1);
+  std::getline(in, row2);
+  std::getline(in, row3);
+  EXPECT_TRUE(header.ends_with(",status,error")) << header;
+  EXPECT_TRUE(row1.ends_with(",ok,")) << row1;
+  EXPECT_TRUE(row3.ends_with(",ok,")) << row3;
+  EXPECT_NE(row2.find(",,,,,,,failed,"), std::string::npos) << "statistics empty, status failed: " << row2;
+  EXPECT_FALSE(std::filesystem::exists(out.string() + ".journal")) << "removed once the table is written";
+}
+
+// A sweep long enough to be killed half way: 16 points, serial.
+void write_slow_sweep(TempDir& dir, const std::string& extra = "") {
+  dir.write("g.toml", std::string(kBase) + "radial_mm = [0.1016, 0.254]\ncrank_speed_rpm = [300, 350]\n"
+                                           "restitution = [0.3, 0.5, 0.7, 0.9]\nrevolutions = 30\n"
+                                           "skip_revolutions = 1\n" + extra);
+}
+
+int journal_points(const std::filesystem::path& journal) {
+  return std::max(0, testing::count_lines(testing::read_file(journal)) - 1);  // minus the header line
+}
+
+TEST(SweepCommand, KilledHalfWayResumesWithEachPointComputedOnce) {
+  TempDir dir;
+  write_slow_sweep(dir);
+  const auto ref = dir.path() / "ref.csv", out = dir.path() / "t.csv";
+  const std::string journal = out.string() + ".journal";
+  const auto whole = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --jobs 1 --out " + ref.string());
+  ASSERT_EQ(whole.status, 0) << whole.err;
+
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    const std::string sweep = (dir.path() / "g.toml").string(), o = out.string();
+    execl(FOURBAR_EXE, FOURBAR_EXE, "sweep", sweep.c_str(), "--jobs", "1", "--out", o.c_str(), (char*)nullptr);
+    _exit(127);
+  }
+  // Kill it (SIGKILL: no clean-up at all) once a few points are journaled.
+  int seen = 0;
+  for (int k = 0; k < 3000 && seen < 3; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (std::filesystem::exists(journal)) seen = journal_points(journal);
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the sweep finished before it could be killed; make it longer";
+  const int journaled = journal_points(journal);
+  ASSERT_GE(journaled, 3);
+  ASSERT_LT(journaled, 16);
+  EXPECT_FALSE(std::filesystem::exists(out)) << "no table from an interrupted run";
+
+  const auto again = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --jobs 2 --out " + out.string());
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find(std::to_string(journaled) + " from the journal"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find("; " + std::to_string(16 - journaled) + " computed"), std::string::npos)
+      << "each point computed once over the two runs: " << again.out;
+  EXPECT_EQ(table_body(out), table_body(ref)) << "bit for bit the uninterrupted table";
+  EXPECT_FALSE(std::filesystem::exists(journal));
+}
+
+TEST(SweepCommand, ATornOrStaleJournalIsNotTrusted) {
+  TempDir dir;
+  write_slow_sweep(dir);
+  const auto ref = dir.path() / "ref.csv", out = dir.path() / "t.csv";
+  const std::string journal = out.string() + ".journal";
+  ASSERT_EQ(run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --out " + ref.string()).status, 0);
+  // A journal from an earlier run of these inputs: take its header from a
+  // real run that is stopped at once (SIGTERM after the journal appears).
+  {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      std::freopen("/dev/null", "w", stdout);
+      std::freopen("/dev/null", "w", stderr);
+      const std::string sweep = (dir.path() / "g.toml").string(), o = out.string();
+      execl(FOURBAR_EXE, FOURBAR_EXE, "sweep", sweep.c_str(), "--jobs", "1", "--out", o.c_str(), (char*)nullptr);
+      _exit(127);
+    }
+    for (int k = 0; k < 3000 && journal_points(journal) < 2; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+  }
+  const int journaled = journal_points(journal);
+  ASSERT_GE(journaled, 2);
+  // Torn: a last line cut short by the kill; and a damaged complete line.
+  {
+    std::ofstream j(journal, std::ios::app);
+    j << "15\tok 0x1.8p+1 0x1";
+  }
+  auto r = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(std::to_string(journaled) + " from the journal"), std::string::npos) << r.out;
+  EXPECT_EQ(table_body(out), table_body(ref));
+
+  // Stale: the same journal name after the sweep file changed.
+  {
+    std::ofstream j(journal);
+    j << "# fourbar sweep journal 0123456789abcdef 16 points\n0\tok 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x0p+0\n";
+  }
+  r = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("from other inputs"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("from the journal"), std::string::npos) << r.out;
+  EXPECT_EQ(table_body(out), table_body(ref)) << "nothing of the stale journal was used";
+}
+
+TEST(SweepCommand, MpiRanksGiveTheSerialTableBitForBit) {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "mpirun is not installed (Debian package openmpi-bin; scripts/install-deps.sh installs it)";
+  TempDir dir;
+  dir.write("g.toml", std::string(kBase) + "radial_mm = [0.1016, 0.254]\ncrank_speed_rpm = [300, 350, 400]\n"
+                                           "restitution = [0.5, 0.8]\nrevolutions = 4\nskip_revolutions = 1\n");
+  const auto serial = dir.path() / "serial.csv", ranks = dir.path() / "ranks.csv";
+  ASSERT_EQ(run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --jobs 1 --out " + serial.string()).status, 0);
+  // Root in a container is allowed explicitly (Open MPI refuses it otherwise).
+  const std::string cmd = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none "
+                          "mpirun --oversubscribe -np 3 " FOURBAR_EXE " sweep " + (dir.path() / "g.toml").string() +
+                          " --out " + ranks.string() + " >" + (dir.path() / "mpi.out").string() + " 2>&1";
+  const int raw = std::system(cmd.c_str());
+  const std::string said = testing::read_file(dir.path() / "mpi.out");
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << said;
+  EXPECT_NE(said.find("3 MPI ranks"), std::string::npos) << said;
+  EXPECT_EQ(testing::count_lines(said), 1) << "only rank 0 talks: " << said;
+  EXPECT_EQ(table_body(ranks), table_body(serial));
+}
+
+TEST(SweepCommand, KeysLeftOutTakeTheScenesValues) {
+  // The base scene runs at 350 rpm with 0.254 mm: a sweep over e only must
+  // use exactly those (the fallbacks are in the file's units, mm and rpm).
+  TempDir dir;
+  dir.write("g.toml", std::string(kBase) + "restitution = [0.5]\nrevolutions = 2\nskip_revolutions = 0\n");
+  const auto out = dir.path() / "t.csv";
+  const auto r = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> header;
+  const auto rows = rows_of(testing::read_file(out), header);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_NEAR(rows[0][0], 0.254, 1e-12);
+  EXPECT_NEAR(rows[0][1], 350.0, 1e-9);
 }
 
 TEST(SweepCommand, BadSweepFileExitTwo) {

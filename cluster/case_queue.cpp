@@ -1,0 +1,184 @@
+#include "cluster/case_queue.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <exception>
+#include <iostream>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "cluster/mpi_session.hpp"
+
+#if FOURBAR_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace fourbar {
+
+namespace {
+
+/// The cases not handed out yet, shared by every taker of this process.
+class CaseCursor {
+ public:
+  explicit CaseCursor(std::span<const std::size_t> cases) : cases_(cases) {}
+  std::optional<std::size_t> take() {
+    const std::size_t k = next_.fetch_add(1);
+    if (k >= cases_.size()) return std::nullopt;
+    return cases_[k];
+  }
+
+ private:
+  std::span<const std::size_t> cases_;
+  std::atomic<std::size_t> next_{0};
+};
+
+CaseQueueStats run_on_threads(std::span<const std::size_t> cases, unsigned threads, const CaseCompute& compute,
+                              const CaseDone& done) {
+  CaseCursor cursor(cases);
+  std::mutex done_mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    while (const auto i = cursor.take()) {
+      try {
+        std::string r = compute(*i);
+        const std::lock_guard lock(done_mutex);
+        if (!failure) done(*i, std::move(r));
+      } catch (...) {  // `done` failed (an output that cannot be written): stop taking cases
+        const std::lock_guard lock(done_mutex);
+        if (!failure) failure = std::current_exception();
+        while (cursor.take()) {
+        }
+      }
+    }
+  };
+  threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(1, cases.size()))));
+  {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+  }
+  if (failure) std::rethrow_exception(failure);
+  return {cases.size(), cases.size(), 1, threads};
+}
+
+#if FOURBAR_HAVE_MPI
+
+enum Tag : int { kRequest = 1, kWork = 2, kStop = 3, kResult = 4 };
+
+/// Every rank but 0: ask, compute, send the result back (which asks again).
+CaseQueueStats run_worker_rank(const MpiSession& mpi, const CaseCompute& compute) {
+  CaseQueueStats stats{0, 0, mpi.size(), 1};
+  MPI_Send(nullptr, 0, MPI_BYTE, 0, kRequest, MPI_COMM_WORLD);
+  std::string message;
+  for (;;) {
+    std::uint64_t index = 0;
+    MPI_Status status;
+    MPI_Recv(&index, 1, MPI_UINT64_T, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+    if (status.MPI_TAG == kStop) break;
+    std::string result = compute(static_cast<std::size_t>(index));
+    message.resize(sizeof index + result.size());
+    std::memcpy(message.data(), &index, sizeof index);
+    std::memcpy(message.data() + sizeof index, result.data(), result.size());
+    MPI_Send(message.data(), static_cast<int>(message.size()), MPI_BYTE, 0, kResult, MPI_COMM_WORLD);
+    ++stats.computed_here;
+  }
+  return stats;
+}
+
+/// Rank 0: serves the other ranks from the main thread (the only one that
+/// calls MPI) while a thread of its own computes cases too.
+CaseQueueStats run_leader_rank(const MpiSession& mpi, std::span<const std::size_t> cases, const CaseCompute& compute,
+                               const CaseDone& done) {
+  CaseCursor cursor(cases);
+  std::mutex local_mutex;
+  std::deque<std::pair<std::size_t, std::string>> local_results;
+  std::atomic<bool> local_finished{false};
+  std::size_t computed_here = 0;
+  std::jthread local([&] {
+    while (const auto i = cursor.take()) {
+      std::string r = compute(*i);
+      const std::lock_guard lock(local_mutex);
+      local_results.emplace_back(*i, std::move(r));
+      ++computed_here;
+    }
+    local_finished = true;
+  });
+
+  int serving = mpi.size() - 1;
+  std::vector<char> buffer;
+  auto drain_local = [&] {
+    std::deque<std::pair<std::size_t, std::string>> ready;
+    {
+      const std::lock_guard lock(local_mutex);
+      ready.swap(local_results);
+    }
+    for (auto& [i, r] : ready) done(i, std::move(r));
+    return !ready.empty();
+  };
+  try {
+    for (;;) {
+      bool progressed = drain_local();
+      int waiting = 0;
+      MPI_Status status;
+      if (serving > 0) MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
+      if (waiting) {
+        int bytes = 0;
+        MPI_Get_count(&status, MPI_BYTE, &bytes);
+        buffer.resize(static_cast<std::size_t>(bytes));
+        MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (status.MPI_TAG == kResult) {
+          std::uint64_t index = 0;
+          std::memcpy(&index, buffer.data(), sizeof index);
+          done(static_cast<std::size_t>(index),
+               std::string(buffer.data() + sizeof index, buffer.size() - sizeof index));
+        }
+        if (const auto next = cursor.take()) {
+          const std::uint64_t index = *next;
+          MPI_Send(&index, 1, MPI_UINT64_T, status.MPI_SOURCE, kWork, MPI_COMM_WORLD);
+        } else {
+          MPI_Send(nullptr, 0, MPI_BYTE, status.MPI_SOURCE, kStop, MPI_COMM_WORLD);
+          --serving;
+        }
+        progressed = true;
+      }
+      if (serving == 0 && local_finished) {
+        local.join();
+        drain_local();
+        break;
+      }
+      // Idle: a short nap instead of spinning, so the compute thread keeps its
+      // core (an answer waits at most this long: well below 1 ms per case).
+      if (!progressed) std::this_thread::sleep_for(std::chrono::microseconds(50));
+    }
+  } catch (const std::exception& e) {
+    // `done` failed (an output that cannot be written); the other ranks and
+    // the compute thread would wait for ever.
+    std::cerr << "fourbar: rank 0: " << e.what() << "; stopping every rank\n";
+    MpiSession::abort_all(1);
+    throw;
+  }
+  return {cases.size(), computed_here, mpi.size(), 1};
+}
+
+#endif
+
+}  // namespace
+
+CaseQueueStats run_case_queue(std::span<const std::size_t> cases, unsigned threads, const CaseCompute& compute,
+                              const CaseDone& done) {
+#if FOURBAR_HAVE_MPI
+  const MpiSession& mpi = MpiSession::get();
+  if (mpi.distributed()) {
+    return mpi.leader() ? run_leader_rank(mpi, cases, compute, done) : run_worker_rank(mpi, compute);
+  }
+#endif
+  return run_on_threads(cases, threads, compute, done);
+}
+
+}  // namespace fourbar
