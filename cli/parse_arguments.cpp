@@ -1,4 +1,6 @@
 #include <iostream>
+#include <sstream>
+#include <vector>
 
 #include "cli/command.hpp"
 #include "common/error.hpp"
@@ -6,6 +8,27 @@
 namespace po = boost::program_options;
 
 namespace fourbar::cli {
+
+namespace {
+
+/// The name the usage line gives the positional argument that fills
+/// option `option` ("SESSION_DIR"), or empty if `option` is not positional.
+std::string positional_name(const std::string& option, std::string_view usage,
+                            const po::positional_options_description& positionals) {
+  std::string bare = option;
+  while (!bare.empty() && bare.front() == '-') bare.erase(0, 1);
+  std::istringstream words{std::string(usage)};
+  std::vector<std::string> names;  // the usage's words outside [...], in order
+  for (std::string w; words >> w;) {
+    if (w.front() == '[' || w.starts_with("--")) continue;
+    names.push_back(w);
+  }
+  for (unsigned k = 0; k < positionals.max_total_count() && k < names.size(); ++k)
+    if (positionals.name_for_position(k) == bare) return names[k];
+  return {};
+}
+
+}  // namespace
 
 bool parse_arguments(std::string_view command, std::string_view usage, std::string_view details,
                      po::options_description& options, const po::positional_options_description& positionals,
@@ -18,6 +41,12 @@ bool parse_arguments(std::string_view command, std::string_view usage, std::stri
       return false;
     }
     po::notify(vm);
+  } catch (const po::required_option& e) {
+    const std::string name = positional_name(e.get_option_name(), usage, positionals);
+    if (!name.empty())
+      throw InputError(std::string(command) + ": " + name + " is missing; usage: fourbar " + std::string(command) +
+                       " " + std::string(usage));
+    throw InputError(std::string(command) + ": " + e.what() + "; see 'fourbar " + std::string(command) + " --help'");
   } catch (const po::error& e) {
     throw InputError(std::string(command) + ": " + e.what() + "; see 'fourbar " + std::string(command) + " --help'");
   }

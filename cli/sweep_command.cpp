@@ -4,6 +4,8 @@
 // of an MPI job (cluster/case_queue.hpp); each finished point is journaled so
 // an interrupted sweep resumes where it stopped (sweep_journal.hpp).
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -80,6 +82,16 @@ std::string inputs_fingerprint(const std::string& sweep_file, const Scene& base,
   return fingerprint_of(text);
 }
 
+/// A grid value converted back from SI to the file's unit (mm, rpm) carries
+/// the conversion's rounding in its last digit (350 rpm came back as
+/// 350.00000000000006): 15 significant digits give back the decimal the
+/// sweep file holds.
+std::string in_file_units(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.15g", value);
+  return format_double(std::strtod(buf, nullptr));
+}
+
 void write_table(const std::filesystem::path& out_path, const Provenance& prov, const std::vector<SweepPoint>& points) {
   CsvWriter csv(out_path, prov.comment_lines(),
                 {"radial_mm", "crank_speed_rpm", "restitution", "friction_coefficient", "impacts_per_rev",
@@ -99,7 +111,7 @@ void write_table(const std::filesystem::path& out_path, const Provenance& prov, 
                              p.max_penetration_rel};
     std::vector<std::string> cells;
     for (std::size_t k = 0; k < std::size(values); ++k)
-      cells.push_back(p.failed() && k >= 4 ? std::string() : format_double(values[k]));
+      cells.push_back(p.failed() && k >= 4 ? std::string() : k < 2 ? in_file_units(values[k]) : format_double(values[k]));
     cells.push_back(p.failed() ? "failed" : "ok");
     cells.push_back(p.error);
     csv.text_row(cells);

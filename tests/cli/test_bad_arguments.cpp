@@ -42,7 +42,7 @@ TEST_F(BadArguments, Sim) {
   const std::string empty = file("empty.toml", "").string();
   const std::string plain = file("plain_file", "x").string();
   for (const BadCase& c : std::vector<BadCase>{
-           {"sim", "scene"},
+           {"sim", "SCENE.toml"},
            {"sim --frobnicate " + scene, "frobnicate"},
            {"sim " + scene + " " + scene + " --out " + out(), "sim"},
            {"sim /nonexistent/scene.toml --out " + out(), "/nonexistent/scene.toml"},

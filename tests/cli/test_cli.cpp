@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -33,6 +37,24 @@ TEST(Cli, NoArgumentsOrUnknownCommandIsUsageError) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("fourbar: unknown command 'simulate'", 0), 0u) << r.err;
   EXPECT_EQ(count_lines(r.err), 1);
+  EXPECT_EQ(r.err.find("did you mean"), std::string::npos) << "nothing close to 'simulate': " << r.err;
+  for (const auto& [typed, meant] : std::vector<std::pair<std::string, std::string>>{
+           {"reprot", "report"}, {"swep", "sweep"}, {"acquier", "acquire"}, {"analyse", "analyze"}}) {
+    r = run_fourbar(typed + " x");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("did you mean '" + meant + "'?"), std::string::npos) << r.err;
+  }
+}
+
+TEST(Cli, AMissingPositionalArgumentIsNamedAsTheUsageNamesIt) {
+  for (const auto& [command, name] : std::vector<std::pair<std::string, std::string>>{
+           {"report", "SESSION_DIR"}, {"sweep", "SWEEP.toml"}, {"sim", "SCENE.toml"}}) {
+    const auto r = run_fourbar(command);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("fourbar: " + command + ": " + name + " is missing"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("--session"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("'--sweep'"), std::string::npos) << r.err;
+  }
 }
 
 TEST(Cli, BadOptionsFailCleanly) {
@@ -43,7 +65,7 @@ TEST(Cli, BadOptionsFailCleanly) {
   EXPECT_EQ(count_lines(r.err), 1);
   r = run_fourbar("sim");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("scene"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("SCENE.toml is missing"), std::string::npos) << r.err;
   r = run_fourbar("sim a.toml b.toml");
   EXPECT_EQ(r.status, 2);
 }
