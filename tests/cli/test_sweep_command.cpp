@@ -118,6 +118,19 @@ void write_slow_sweep(TempDir& dir, const std::string& extra = "") {
                                            "skip_revolutions = 1\n" + extra);
 }
 
+/// Starts `fourbar sweep SWEEP --jobs 1 --out OUT` in the background (output
+/// discarded); its pid, to be killed and waited for.
+pid_t start_sweep(const std::filesystem::path& sweep, const std::filesystem::path& out) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execl(FOURBAR_EXE, FOURBAR_EXE, "sweep", sweep.c_str(), "--jobs", "1", "--out", out.c_str(), (char*)nullptr);
+    _exit(127);
+  }
+  return pid;
+}
+
 int journal_points(const std::filesystem::path& journal) {
   return std::max(0, testing::count_lines(testing::read_file(journal)) - 1);  // minus the header line
 }
@@ -130,15 +143,8 @@ TEST(SweepCommand, KilledHalfWayResumesWithEachPointComputedOnce) {
   const auto whole = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --jobs 1 --out " + ref.string());
   ASSERT_EQ(whole.status, 0) << whole.err;
 
-  const pid_t pid = fork();
+  const pid_t pid = start_sweep(dir.path() / "g.toml", out);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    std::freopen("/dev/null", "w", stdout);
-    std::freopen("/dev/null", "w", stderr);
-    const std::string sweep = (dir.path() / "g.toml").string(), o = out.string();
-    execl(FOURBAR_EXE, FOURBAR_EXE, "sweep", sweep.c_str(), "--jobs", "1", "--out", o.c_str(), (char*)nullptr);
-    _exit(127);
-  }
   // Kill it (SIGKILL: no clean-up at all) once a few points are journaled.
   int seen = 0;
   for (int k = 0; k < 3000 && seen < 3; ++k) {
@@ -172,15 +178,8 @@ TEST(SweepCommand, ATornOrStaleJournalIsNotTrusted) {
   // A journal from an earlier run of these inputs: take its header from a
   // real run that is stopped at once (SIGTERM after the journal appears).
   {
-    const pid_t pid = fork();
+    const pid_t pid = start_sweep(dir.path() / "g.toml", out);
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      std::freopen("/dev/null", "w", stdout);
-      std::freopen("/dev/null", "w", stderr);
-      const std::string sweep = (dir.path() / "g.toml").string(), o = out.string();
-      execl(FOURBAR_EXE, FOURBAR_EXE, "sweep", sweep.c_str(), "--jobs", "1", "--out", o.c_str(), (char*)nullptr);
-      _exit(127);
-    }
     for (int k = 0; k < 3000 && journal_points(journal) < 2; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     kill(pid, SIGKILL);
     waitpid(pid, nullptr, 0);
