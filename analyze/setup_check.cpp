@@ -52,6 +52,10 @@ constexpr double kTemplateTail = 1e-4;
 /// leaves even with the right set-up (see confidence()).
 constexpr double kMisfitFloor = 0.02;
 
+/// Share of a reading's energy the crank-pin and gravity term must carry
+/// (beyond what α explains) for its position to be estimated: 5 × the floor.
+constexpr double kPositionShare = 5 * kMisfitFloor;
+
 constexpr std::size_t link_index(SensedLink l) { return l == SensedLink::coupler ? 0 : 1; }
 constexpr std::size_t tau_index(double tau) { return tau > 0 ? 0 : 1; }
 
@@ -381,7 +385,11 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     const TwoTerm two = two_term(ch, f, best.ti, best.s);
     e.scale = one.k;
     e.fit = two.r2;
-    e.position_mm = std::abs(two.a) > 1e-3 ? units::m_to_mm(two.b / two.a) : std::numeric_limits<double>::quiet_NaN();
+    // The position is B/A: it is known only when the f0 term (the part of it
+    // f1 does not explain) carries a share of the reading well above the floor.
+    const double f0_alone = f.g11 > 0 ? (f.g00 - f.g01 * f.g01 / f.g11) * two.a * two.a : 0.0;
+    e.position_mm = ch.energy > 0 && f0_alone >= kPositionShare * ch.energy ? units::m_to_mm(two.b / two.a)
+                                                                           : std::numeric_limits<double>::quiet_NaN();
     e.position_confidence = confidence(1 - two.r2, 1 - one.r2);
     const std::string& name = ch.spec->name;
     if (l == ch.link && one.r2 >= lim.min_fit) {

@@ -68,7 +68,7 @@ struct ChannelSetupEstimate {
   ChannelRole role = ChannelRole::ignore;
   std::string fitted_as;       ///< the role whose template fits it best (differs when swapped)
   double scale = 0;            ///< A with the manifest's position: sign × calibration ratio (1: as the manifest)
-  double position_mm = 0;      ///< from the two-term fit
+  double position_mm = 0;      ///< from the two-term fit; NaN when the reading cannot tell it (a rocker sensor: only gravity's term beside α)
   double position_confidence = 0;
   double fit = 0;              ///< share of the reading's energy the data's set-up explains
   double fit_manifest = 0;     ///< … that the manifest's set-up explains (no free parameter)
