@@ -249,9 +249,9 @@ int run_analyze(const Invocation& inv) {
       a.setup_check ? setup_check_json(*a.setup_check, a.manifest_file.string()) : nlohmann::json(nullptr);
   const std::vector<std::string> setup_lines = a.setup_check ? setup_check_lines(setup) : std::vector<std::string>{};
   if (strict && !setup_lines.empty()) {
-    std::string msg = "analyze: --strict: the set-up check of " + recording + " found likely mistakes in its manifest:";
-    for (const std::string& line : setup_lines) msg += "\n  " + line;
-    throw InputError(msg + "\nfix the keys named (README \"The set-up check\"), or run without --strict");
+    std::string msg = "analyze: --strict: the set-up check of " + recording + " found likely mistakes in its manifest: ";
+    for (const std::string& line : setup_lines) msg += line + "; ";
+    throw InputError(msg + "fix the keys named (README \"The set-up check\"), or run without --strict");
   }
   ensure_output_dir(dir);
 
