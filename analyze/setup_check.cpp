@@ -320,7 +320,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     bool swapped = false;
     std::size_t ti = 0, s = 0;
   };
-  Best best, best_dir_m, best_offset_m, best_straight;
+  Best best, best_dir_m, best_offset_m, best_straight, best_crank_m;
   for (bool swapped : {false, true}) {
     if (swapped && !can_swap) continue;
     for (std::size_t ti = 0; ti < 2; ++ti)
@@ -331,6 +331,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
         if (score > best.score) best = here;
         if (ti == tau_index(dir_m) && score > best_dir_m.score) best_dir_m = here;
         if (s == 0 && score > best_offset_m.score) best_offset_m = here;
+        if (s == 0 && ti == tau_index(dir_m) && score > best_crank_m.score) best_crank_m = here;
         if (!swapped && score > best_straight.score) best_straight = here;
       }
   }
@@ -342,21 +343,35 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   out.swapped = best.swapped;
   out.fit = best.score / n_ch;
 
+  // The crank: direction and pulse angle. Each alone is judged against the
+  // best fit that keeps the manifest's value of it. With few channels the
+  // response can look nearly the same mirrored (other direction) at another
+  // pulse angle; then neither alone is sure, but the manifest's pair still
+  // fits far worse than the data's: one finding names both keys.
   const ChannelSpec& pulse = manifest.pulse_channel();
-  if (tau != dir_m) {
-    const double conf = confidence(u_best, 1 - best_dir_m.score / n_ch);
-    if (conf >= lim.min_confidence)
-      add_finding(out, "crank_direction", "", "crank_direction", dir_m > 0 ? "\"ccw\"" : "\"cw\"",
-                  tau > 0 ? "\"ccw\"" : "\"cw\"", conf);
-  }
+  const std::string offset_key = channel_key(pulse.name, "crank_offset_deg");
+  auto direction_name = [](double d) { return std::string(d > 0 ? "\"ccw\"" : "\"cw\""); };
+  auto pulse_deg = [&](const Best& b) {
+    return wrap_deg(a.crank_deg[0] + 360.0 * static_cast<double>(b.s) / static_cast<double>(N));
+  };
   const double offset_diff = wrap_deg(360.0 * static_cast<double>(best.s) / static_cast<double>(N));
-  if (std::abs(offset_diff) > lim.offset_tolerance_deg) {
-    const double conf = confidence(u_best, 1 - best_offset_m.score / n_ch);
-    if (conf >= lim.min_confidence)
-      add_finding(out, "crank_offset_deg", pulse.name, channel_key(pulse.name, "crank_offset_deg"),
-                  format_number(units::rad_to_deg(pulse.crank_offset_rad), 4), format_number(out.crank_offset_deg, 4),
-                  conf);
-  }
+  const bool offset_off = std::abs(offset_diff) > lim.offset_tolerance_deg;
+  const double conf_crank = confidence(u_best, 1 - best_crank_m.score / n_ch);
+  const double conf_dir = tau != dir_m ? confidence(u_best, 1 - best_dir_m.score / n_ch) : 0.0;
+  const double conf_offset = offset_off ? confidence(u_best, 1 - best_offset_m.score / n_ch) : 0.0;
+  if (tau != dir_m && conf_dir >= lim.min_confidence)
+    add_finding(out, "crank_direction", "", "crank_direction", direction_name(dir_m), direction_name(tau), conf_dir);
+  if (offset_off && conf_offset >= lim.min_confidence)
+    add_finding(out, "crank_offset_deg", pulse.name, offset_key, format_number(units::rad_to_deg(pulse.crank_offset_rad), 4),
+                format_number(out.crank_offset_deg, 4), conf_offset);
+  const bool ambiguous = (tau != dir_m && conf_dir < lim.min_confidence) || (offset_off && conf_offset < lim.min_confidence);
+  if (ambiguous && out.findings.empty() && conf_crank >= lim.min_confidence)
+    add_finding(out, tau != dir_m ? "crank_direction" : "crank_offset_deg", "", "crank_direction or " + offset_key,
+                direction_name(dir_m) + " with crank_offset_deg = " + format_number(units::rad_to_deg(pulse.crank_offset_rad), 4),
+                direction_name(tau) + " with crank_offset_deg = " + format_number(pulse_deg(best), 4) + ", or " +
+                    direction_name(dir_m) + " with crank_offset_deg = " + format_number(pulse_deg(best_dir_m), 4) +
+                    " (these channels cannot tell the two apart)",
+                conf_crank);
   std::string coupler_t, rocker_t;
   for (const Channel& ch : channels)
     if (ch.axis == SensorAxis::tangential) (ch.link == SensedLink::coupler ? coupler_t : rocker_t) = ch.spec->name;

@@ -5,7 +5,10 @@
 // into it. Prints the table the README quotes, and (--cost) the check's
 // cost against the analysis's on the same recordings.
 //
-//   build/bench/setup_check_matrix [--seeds S=3] [--revolutions R=12] [--verbose]
+//   build/bench/setup_check_matrix [--seeds S=3] [--revolutions R=12] [--coupler-only] [--verbose]
+//
+// --coupler-only: the manifest has only the coupler's tangential channel (the
+// analysis's minimum), so the rocker and swap mistakes do not apply.
 //
 // The CI version (a smaller matrix) is tests/analyze/test_setup_check.cpp.
 
@@ -24,22 +27,22 @@ using namespace fourbar::testing;
 int main(int argc, char** argv) {
   int seeds = 3;
   double revolutions = 12;
-  bool verbose = false;
+  bool verbose = false, coupler_only = false;
   SetupCheckLimits limits;
-  limits.min_confidence = 0;  // every candidate, to see the margins; judged below against the default
-  const double min_conf = SetupCheckLimits{}.min_confidence;
+  limits.min_confidence = 0;  // every candidate, to see the margins
   std::map<Mistake, double> conf_margin;  // mistake: lowest confidence of its finding; none: highest of any
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--seeds") && i + 1 < argc) seeds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--revolutions") && i + 1 < argc) revolutions = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--verbose")) verbose = true;
+    else if (!std::strcmp(argv[i], "--coupler-only")) coupler_only = true;
     else {
-      std::fprintf(stderr, "usage: setup_check_matrix [--seeds S] [--revolutions R] [--verbose]\n");
+      std::fprintf(stderr, "usage: setup_check_matrix [--seeds S] [--revolutions R] [--coupler-only] [--verbose]\n");
       return 2;
     }
   }
   std::vector<Mistake> mistakes{Mistake::none};
-  for (Mistake m : all_mistakes()) mistakes.push_back(m);
+  for (Mistake m : coupler_only ? coupler_only_mistakes() : all_mistakes()) mistakes.push_back(m);
   std::map<Mistake, std::pair<int, int>> counts;  // flagged, cases
   double analysis_s = 0, check_s = 0;
   int cases = 0;
@@ -52,6 +55,7 @@ int main(int argc, char** argv) {
             VirtualSetup v(rpm);
             SetupCase c;
             c.rpm = rpm, c.clearance = clearance, c.snr_db = snr, c.ac_coupled = ac, c.revolutions = revolutions;
+            c.coupler_only = coupler_only;
             c.seed = ++seed;
             const auto rec = write_setup_case(v, c, "rec.wav");
             for (Mistake m : mistakes) {
@@ -63,28 +67,18 @@ int main(int argc, char** argv) {
               const RecordingAnalysis a = analyze_recording(rec, manifest_file, o);
               const Manifest manifest = load_manifest(manifest_file);
               const auto t1 = std::chrono::steady_clock::now();
-              SetupCheck check = check_setup(a, manifest, limits);
-              double extreme = m == Mistake::none ? 0.0 : 1.0;
-              {
-                const SetupCheck all = check;
-                check.findings.clear();
-                for (const SetupFinding& f : all.findings) {
-                  if (f.confidence >= min_conf) check.findings.push_back(f);
-                  if (m == Mistake::none) extreme = std::max(extreme, f.confidence);
-                }
-                if (m != Mistake::none) {
-                  double best = 0;
-                  SetupCheck one;
-                  for (const SetupFinding& f : all.findings) {
-                    one.findings = {f};
-                    if (flags(one, m)) best = std::max(best, f.confidence);
-                  }
-                  extreme = best;
-                }
+              const SetupCheck check = check_setup(a, manifest);
+              const auto t2 = std::chrono::steady_clock::now();
+              const SetupCheck all = check_setup(a, manifest, limits);
+              double extreme = 0;
+              // A mistake: the confidence of its finding; the correct manifest: of any candidate.
+              for (const SetupFinding& f : (m == Mistake::none ? all : check).findings) {
+                SetupCheck one;
+                one.findings = {f};
+                if (m == Mistake::none || flags(one, m)) extreme = std::max(extreme, f.confidence);
               }
               if (!conf_margin.count(m)) conf_margin[m] = extreme;
               conf_margin[m] = m == Mistake::none ? std::max(conf_margin[m], extreme) : std::min(conf_margin[m], extreme);
-              const auto t2 = std::chrono::steady_clock::now();
               analysis_s += std::chrono::duration<double>(t1 - t0).count();
               check_s += std::chrono::duration<double>(t2 - t1).count();
               ++cases;

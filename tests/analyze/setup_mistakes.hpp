@@ -26,6 +26,12 @@ enum class Mistake {
   swapped,           ///< coupler_t and rocker_t channel indices exchanged
   rocker_sign,       ///< rocker_t axis_sign flipped
 };
+/// The mistakes a manifest with only the coupler's tangential channel can make.
+inline const std::vector<Mistake>& coupler_only_mistakes() {
+  static const std::vector<Mistake> m{Mistake::coupler_sign, Mistake::coupler_scale, Mistake::crank_offset,
+                                      Mistake::crank_direction, Mistake::coupler_position};
+  return m;
+}
 inline const std::vector<Mistake>& all_mistakes() {
   static const std::vector<Mistake> m{Mistake::coupler_sign,     Mistake::coupler_scale, Mistake::crank_offset,
                                       Mistake::crank_direction,  Mistake::coupler_position, Mistake::swapped,
@@ -68,6 +74,7 @@ struct SetupCase {
   double revolutions = 8;
   double sample_rate_hz = 10240;
   std::uint64_t seed = 1;
+  bool coupler_only = false;  ///< only the coupler's tangential sensor (no normal, no rocker channel)
 };
 
 /// Writes the recording of `c` into `v`'s folder; returns the recording path.
@@ -82,10 +89,12 @@ inline std::filesystem::path write_setup_case(VirtualSetup& v, const SetupCase& 
   v.spec.sensors.clear();
   ChannelSpec& ct = v.add_sensor("coupler_t", ChannelRole::coupler_tangential, 289, 1);
   ct.offset_m = 0.012;
-  ChannelSpec& cn = v.add_sensor("coupler_n", ChannelRole::coupler_normal, 289, -1);
-  cn.offset_m = 0.012;
-  ChannelSpec& rt = v.add_sensor("rocker_t", ChannelRole::rocker_tangential, 292, 1);
-  rt.offset_m = 0.010;
+  if (!c.coupler_only) {
+    ChannelSpec& cn = v.add_sensor("coupler_n", ChannelRole::coupler_normal, 289, -1);
+    cn.offset_m = 0.012;
+    ChannelSpec& rt = v.add_sensor("rocker_t", ChannelRole::rocker_tangential, 292, 1);
+    rt.offset_m = 0.010;
+  }
   for (ChannelSpec& s : v.spec.sensors) {
     s.volts_per_m_s2 = 0.002;  // ±5000 m/s² at ±10 V: the impacts at 600 rpm fit
     if (c.ac_coupled) s.ac_coupled = true, s.highpass_hz = 0.5;

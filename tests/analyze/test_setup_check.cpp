@@ -52,24 +52,28 @@ TEST_P(SetupCheckMatrix, EveryMistakeFlaggedCorrectSetUpNot) {
   const Analysed ok = analyse(rec, Mistake::none);
   EXPECT_EQ(ok.check.status(), "ok") << describe(ok.check);
   EXPECT_TRUE(ok.check.findings.empty()) << describe(ok.check);
-  for (Mistake m : testing::all_mistakes()) {
+  for (Mistake m : GetParam().coupler_only ? testing::coupler_only_mistakes() : testing::all_mistakes()) {
     const Analysed bad = analyse(rec, m);
     EXPECT_TRUE(testing::flags(bad.check, m)) << testing::to_string(m) << " not flagged:\n" << describe(bad.check);
     EXPECT_EQ(bad.check.status(), "check set-up") << testing::to_string(m);
   }
 }
 
-// Nominal and clearance motion, 250–600 rpm, 20–40 dB, DC and AC: 6 revolutions each.
+// Nominal and clearance motion, 250–600 rpm, 20–40 dB, DC and AC: 6 revolutions
+// each; the last two with only the coupler's tangential channel (the minimum).
 INSTANTIATE_TEST_SUITE_P(
     VirtualRig, SetupCheckMatrix,
     ::testing::Values(SetupCase{250, false, 20, false, 6, 10240, 11}, SetupCase{600, false, 40, true, 6, 10240, 12},
                       SetupCase{350, false, 30, true, 6, 10240, 13}, SetupCase{450, false, 20, false, 6, 10240, 14},
                       SetupCase{250, true, 40, true, 6, 10240, 15}, SetupCase{600, true, 20, false, 6, 10240, 16},
-                      SetupCase{350, true, 20, true, 6, 10240, 17}, SetupCase{450, true, 30, false, 6, 10240, 18}),
+                      SetupCase{350, true, 20, true, 6, 10240, 17}, SetupCase{450, true, 30, false, 6, 10240, 18},
+                      SetupCase{300, false, 30, false, 6, 10240, 19, true},
+                      SetupCase{500, true, 25, true, 6, 10240, 20, true}),
     [](const auto& info) {
       const SetupCase& c = info.param;
       return std::string(c.clearance ? "clearance" : "nominal") + std::to_string(static_cast<int>(c.rpm)) + "rpm" +
-             std::to_string(static_cast<int>(c.snr_db)) + "dB" + (c.ac_coupled ? "AC" : "DC");
+             std::to_string(static_cast<int>(c.snr_db)) + "dB" + (c.ac_coupled ? "AC" : "DC") +
+             (c.coupler_only ? "CouplerOnly" : "");
     });
 
 // What the data say is the truth, within the estimate's resolution: the
