@@ -12,6 +12,7 @@
 
 #include "analyze/analysis_channels.hpp"
 #include "analyze/fftw_plan.hpp"
+#include "analyze/filter_design.hpp"
 #include "analyze/link_motion.hpp"
 #include "analyze/pipeline.hpp"
 #include "common/format.hpp"
@@ -34,7 +35,8 @@ struct Channel {
   SensedLink link = SensedLink::coupler;  // as the manifest says
   SensorAxis axis = SensorAxis::tangential;
   double r_m = 0, h_m = 0;
-  std::vector<double> m;                  // recovered reading, mean removed
+  std::vector<double> m;                  // recovered reading (calibrated, on the grid)
+  std::vector<double> f0;                 // the part of it the manifest's model added back (not filtered)
   double energy = 0;                      // ‖m‖²
   struct Fit {
     std::array<std::vector<double>, 2> t;       // f0, f1 on φj = θ0 + 2πj/N, mean removed
@@ -55,6 +57,9 @@ constexpr double kMisfitFloor = 0.02;
 /// Share of a reading's energy the crank-pin and gravity term must carry
 /// (beyond what α explains) for its position to be estimated: 5 × the floor.
 constexpr double kPositionShare = 5 * kMisfitFloor;
+
+/// Gain below which the filter is taken to have removed an order.
+constexpr double kMinOrderGain = 0.5;
 
 constexpr std::size_t link_index(SensedLink l) { return l == SensedLink::coupler ? 0 : 1; }
 constexpr std::size_t tau_index(double tau) { return tau > 0 ? 0 : 1; }
@@ -88,15 +93,40 @@ std::array<std::vector<double>, 2> templates(const Rig& rig, SensedLink link, Se
   return t;
 }
 
-/// The spectrum of `x` (FFT bins 0 … N/2) with every bin outside orders
-/// 1 … K cleared: the mean and what lies above the nominal response's band.
-std::vector<std::complex<double>> band_spectrum(const std::vector<double>& x, std::size_t K, RealFft& fft) {
+/// The spectrum of `x` (FFT bins 0 … N/2) with bin q weighted by
+/// weight[q] (bins past the end cleared): the fitted orders only, each with
+/// the analysis filter's gain where that is what the data went through.
+std::vector<std::complex<double>> band_spectrum(const std::vector<double>& x, const std::vector<double>& weight,
+                                                RealFft& fft) {
   std::copy(x.begin(), x.end(), fft.time().begin());
   fft.forward();
   std::vector<std::complex<double>> X(fft.spectrum().begin(), fft.spectrum().end());
-  for (std::size_t q = 0; q < X.size(); ++q)
-    if (q == 0 || q > K) X[q] = 0;
+  for (std::size_t q = 0; q < X.size(); ++q) X[q] *= q < weight.size() ? weight[q] : 0.0;
   return X;
+}
+
+/// The zero-phase gain of an analysis filter at crank orders 0 … K (order 0
+/// set to 0: the mean is not fitted). `response` (optional): the filter's
+/// response at the bins k·fs/n of an n-point transform (the analysis keeps
+/// the α filter's, RecordingAnalysis::spectra), read by linear
+/// interpolation; without it the ideal response of `spec`.
+std::vector<double> order_gains(const FilterSpec& spec, std::span<const double> response, std::size_t n, double fs,
+                                double crank_hz, std::size_t K) {
+  std::vector<double> g(K + 1, 0.0);
+  const bool sampled = n > 0 && response.size() == n / 2 + 1;
+  const std::vector<Band> bands = pass_bands(spec, fs);
+  for (std::size_t q = 1; q <= K; ++q) {
+    const double f = static_cast<double>(q) * crank_hz;
+    if (!sampled) {
+      g[q] = passes(bands, f) ? 1.0 : 0.0;
+      continue;
+    }
+    const double x = f * static_cast<double>(n) / fs;
+    const auto i = std::min(static_cast<std::size_t>(x), response.size() - 2);
+    const double t = x - static_cast<double>(i);
+    g[q] = (1 - t) * response[i] + t * response[i + 1];
+  }
+  return g;
 }
 
 /// Σk a[k]·b[k] of two real signals from their spectra (Parseval).
@@ -213,7 +243,7 @@ double wrap_deg(double d) {
 SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, const SetupCheckLimits& lim) {
   SetupCheck out;
   if (a.options.conversion != ConversionMethod::full) {
-    out.not_checked = "the thesis conversion leaves out terms the check needs (give --conversion full)";
+    out.not_checked = "the thesis conversion leaves out terms the check needs (run without --thesis)";
     return out;
   }
   const std::size_t N = a.grid_points_per_rev;
@@ -257,17 +287,19 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
       if (!ch.spec) continue;
       const ResolvedMount mount = resolve_mount(rig, (*ac)->mount);
       ch.link = lc.link, ch.axis = mount.axis, ch.r_m = mount.r_m, ch.h_m = mount.h_m;
-      ch.m.resize(N);
+      ch.m.resize(N), ch.f0.resize(N);
       for (std::size_t k = 0; k < N; ++k) {
         const SensedLinkMotion mo = nominal_link_motion(rig, lc.link, crank[k]);
         const Vec2 u = mo.u, n = u.perp();
         const double alpha = lr->alpha_rad_s2.mean[k];
-        if (tangential)
-          ch.m[k] = fourbar::dot(mo.joint_accel_m_s2, n) + mount.r_m * alpha -
-                    mount.h_m * mo.omega_rad_s * mo.omega_rad_s + rig.gravity_m_s2 * n.y;
-        else
-          ch.m[k] = fourbar::dot(mo.joint_accel_m_s2, u) - mount.r_m * lr->normal->omega_sq_rad2_s2.mean[k] -
-                    mount.h_m * alpha + rig.gravity_m_s2 * u.y;
+        if (tangential) {
+          ch.f0[k] = fourbar::dot(mo.joint_accel_m_s2, n) - mount.h_m * mo.omega_rad_s * mo.omega_rad_s +
+                     rig.gravity_m_s2 * n.y;
+          ch.m[k] = ch.f0[k] + mount.r_m * alpha;
+        } else {
+          ch.f0[k] = fourbar::dot(mo.joint_accel_m_s2, u) - mount.h_m * alpha + rig.gravity_m_s2 * u.y;
+          ch.m[k] = ch.f0[k] - mount.r_m * lr->normal->omega_sq_rad2_s2.mean[k];
+        }
       }
       channels.push_back(std::move(ch));
       if (!tangential) out.normal_consistency.emplace_back((*ac)->mount.channel, lr->normal->rel_rms_difference);
@@ -280,9 +312,8 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
 
   // Templates, the band they occupy, and their correlations with each reading.
   RealFft fft(N);
-  std::size_t tangentials = 0, K = 3;
+  std::size_t K = 3;
   for (Channel& ch : channels) {
-    if (ch.axis == SensorAxis::tangential) ++tangentials;
     for (SensedLink l : {SensedLink::coupler, SensedLink::rocker}) {
       if (l != ch.link && ch.axis != SensorAxis::tangential) continue;
       Channel::Fit f;
@@ -292,12 +323,34 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     }
   }
   K = std::min(K, N / 2 - 1);
+  const double fs = a.acquisition.recording.sample_rate_hz, crank_hz = w_mean / units::kTwoPi;
+  // What the analysis filter did to each order: the α (or ω²) was filtered,
+  // the terms added back above were not, so per order the recovered reading
+  // is G·m + (1 − G)·f0_manifest. Fitted: G·m against G·template.
+  const std::vector<double> alpha_gain =
+      order_gains(a.filter, a.spectra.filter_gain, a.spectra.segment_length, fs, crank_hz, K);
+  const std::vector<double> normal_gain = order_gains(a.normal_filter, {}, 0, fs, crank_hz, K);
+  std::erase_if(channels, [&](const Channel& ch) {
+    const auto& g = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
+    return std::count_if(g.begin(), g.end(), [](double v) { return v >= kMinOrderGain; }) < 2;
+  });
+  if (channels.empty()) {
+    out.not_checked = "the analysis filter passes fewer than 2 of the crank orders 1-" + std::to_string(K) +
+                      " that hold the nominal response";
+    return out;
+  }
   for (Channel& ch : channels) {
-    const auto m_hat = band_spectrum(ch.m, K, fft);
+    const auto& gain = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
+    std::vector<double> ones(K + 1, 1.0), rest(K + 1, 0.0);
+    ones[0] = 0;
+    for (std::size_t q = 1; q <= K; ++q) rest[q] = 1 - gain[q];
+    auto m_hat = band_spectrum(ch.m, ones, fft);
+    const auto f0_hat = band_spectrum(ch.f0, rest, fft);
+    for (std::size_t q = 0; q < m_hat.size(); ++q) m_hat[q] -= f0_hat[q];
     ch.energy = inner(m_hat, m_hat, N);
     for (auto& f : ch.fit) {
       if (!f) continue;
-      const auto t0 = band_spectrum(f->t[0], K, fft), t1 = band_spectrum(f->t[1], K, fft);
+      const auto t0 = band_spectrum(f->t[0], gain, fft), t1 = band_spectrum(f->t[1], gain, fft);
       f->g00 = inner(t0, t0, N), f->g01 = inner(t0, t1, N), f->g11 = inner(t1, t1, N);
       for (std::size_t p = 0; p < 2; ++p) {
         const auto c = correlations(m_hat, p == 0 ? t0 : t1, fft);
@@ -307,7 +360,8 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     }
   }
   out.band_orders = K;
-  const bool can_swap = tangentials == 2;
+  const bool can_swap = std::count_if(channels.begin(), channels.end(),
+                                      [](const Channel& ch) { return ch.axis == SensorAxis::tangential; }) == 2;
   auto fitted_link = [&](const Channel& ch, bool swapped) {
     if (!swapped || ch.axis != SensorAxis::tangential) return ch.link;
     return ch.link == SensedLink::coupler ? SensedLink::rocker : SensedLink::coupler;
