@@ -37,9 +37,9 @@ struct Channel {
   double r_m = 0, h_m = 0;
   std::vector<double> m;                  // recovered reading (calibrated, on the grid)
   std::vector<double> f0;                 // the part of it the manifest's model added back (not filtered)
-  double energy = 0;                      // ‖m‖²
+  double energy = 0;                      // ‖G·m‖² over the fitted orders
   struct Fit {
-    std::array<std::vector<double>, 2> t;       // f0, f1 on φj = θ0 + 2πj/N, mean removed
+    std::array<std::vector<double>, 2> t;       // f0, f1 on φj = θ0 + 2πj/N
     double g00 = 0, g01 = 0, g11 = 0;           // Gram matrix
     std::array<std::array<std::vector<double>, 2>, 2> c;  // [τ index][template][s]
   };
@@ -188,8 +188,8 @@ TwoTerm two_term(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::
   return out;
 }
 
-/// The one-term fit k·(f0 + r·f1): k and the share explained; `fixed` (when
-/// given) the share explained with k fixed.
+/// The one-term fit k·(f0 + r·f1) with r fixed: the share explained with a
+/// given k (one_term_r2), and k fitted (one_term).
 struct OneTerm {
   double k = 0, r2 = 0;
 };

@@ -5,8 +5,10 @@
 // The analysis inverts the conversion with the manifest's values, so the
 // averaged α (tangential channel) or ω² (normal channel) of a link, put back
 // through the same affine conversion (conversion.hpp) with the manifest's
-// mount, gives the calibrated reading itself on the crank-angle grid
-// (in the filter's band; its mean is not kept). The nominal mechanism
+// mount, gives the calibrated reading itself on the crank-angle grid. Per
+// crank order q that is G_q·m + (1 − G_q)·f0_manifest, G the analysis
+// filter's gain (α was filtered, the terms added back were not), so the fit
+// compares G·m with G·template; its mean is not fitted. The nominal mechanism
 // predicts that reading for any set-up: at the mean crank speed a sensor at
 // distance r along the link reads f(θ2) = f0(θ2) + r·f1(θ2), with
 //   tangential  f0 = a_J·n − h·ω² + g·cos θ,  f1 = α        (centripetal
@@ -24,13 +26,17 @@
 //   axis_sign                          the sign of A (r fixed at the manifest's);
 //   volts_per_unit                     |A|;
 //   position_mm                        B/A from the two-term fit A·f0 + B·f1.
+// Only the crank orders that hold the nominal response are fitted (1 … K, K
+// holding all but 1e-4 of the templates' energy: 5 for the thesis rig).
 // Each is flagged when the data's value lies outside a tolerance of the
 // manifest's AND explains the data clearly better: the confidence is the
 // share of the misfit with the manifest's value that the data's value
 // removes, 1 − U_data/U_manifest (U: the unexplained share of the reading's
 // energy, the other parameters fitted). Impacts (clearance) add broadband
 // content nearly orthogonal to the smooth nominal templates; an AC-coupled
-// sensor loses only the mean, which the fit leaves out anyway.
+// sensor loses only the mean, which the fit leaves out anyway. With few
+// channels the response mirrored (other direction) at another pulse angle
+// can fit nearly as well: then one finding names both crank keys.
 
 #include <optional>
 #include <string>
