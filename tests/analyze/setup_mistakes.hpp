@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -76,6 +77,12 @@ struct SetupCase {
   std::uint64_t seed = 1;
   bool coupler_only = false;  ///< only the coupler's tangential sensor (no normal, no rocker channel)
 };
+
+/// For test names and failure messages.
+inline void PrintTo(const SetupCase& c, std::ostream* os) {
+  *os << (c.clearance ? "clearance " : "nominal ") << c.rpm << " rpm " << c.snr_db << " dB "
+      << (c.ac_coupled ? "AC" : "DC") << (c.coupler_only ? " coupler only" : "") << " seed " << c.seed;
+}
 
 /// Writes the recording of `c` into `v`'s folder; returns the recording path.
 inline std::filesystem::path write_setup_case(VirtualSetup& v, const SetupCase& c, const std::string& name) {
