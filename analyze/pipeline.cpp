@@ -107,6 +107,7 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   result.acquisition.grid_points_per_rev = static_cast<int>(result.grid_points_per_rev);
   result.warnings.insert(result.warnings.begin(), result.acquisition.warnings.begin(),
                          result.acquisition.warnings.end());
+  if (options.setup_check) result.setup_check = check_setup(result, manifest);
   return result;
 }
 

@@ -38,6 +38,7 @@
 #include "analyze/averaging.hpp"
 #include "analyze/filter_design.hpp"
 #include "analyze/sensor_mount.hpp"
+#include "analyze/setup_check.hpp"
 
 namespace fourbar {
 
@@ -101,6 +102,8 @@ struct AnalyzeOptions {
   /// being one period. Results do not depend on it.
   std::size_t chunk_revolutions = 0;
   bool progress = true;  ///< progress bar on stderr when it is a terminal
+  /// Run the set-up check (setup_check.hpp) on the finished analysis.
+  bool setup_check = true;
 
   /// The thesis's processing (§7.2): thesis conversion, ideal (bin-wise,
   /// rectangular) band-pass, running trapezoid. For comparison.
@@ -160,6 +163,8 @@ struct RecordingAnalysis {
   std::optional<LinkResult> coupler, rocker;  ///< present when the manifest has the link's tangential channel
   SpectrumAxes spectra;
   std::vector<std::string> warnings;        ///< acquire's and analyze's
+  /// The set-up check (options.setup_check); its findings are not in `warnings`.
+  std::optional<SetupCheck> setup_check;
 };
 
 /// One analysed revolution, as it is finished (time order).

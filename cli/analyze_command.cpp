@@ -17,6 +17,7 @@
 #include "common/format.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
+#include "report/setup_check_record.hpp"
 
 namespace po = boost::program_options;
 
@@ -54,7 +55,8 @@ Writes into DIR:
   summary.json       provenance, recording and acquisition summary (pulses,
                      revolutions, rpm), settings (filter, kernel taps, grid,
                      conversion, integration), RMS of the averaged curves and
-                     of their spread, normal-channel check, warnings
+                     of their spread, normal-channel check, warnings,
+                     setup_check (status "ok" or "check set-up", findings)
 )";
 
 // The defaults paragraph of the details, its numbers from analyze/analysis_defaults.hpp.
@@ -73,9 +75,15 @@ constexpr const char* kDetailsAfterDefaults = R"(--thesis: the thesis's processi
 at the mean crank speed, sensor at the joint, no gravity, no AC correction;
 ideal rectangular band-pass; running trapezoid in time, eq. 7.2.1-8).
 Options given with --thesis override its settings.
+Set-up check: from the data alone, the axis sign, calibration scale and
+position of each accelerometer, the crank offset and direction of rotation,
+and whether the coupler and rocker channels are swapped, compared with the
+manifest; a likely mistake is a warning naming the key to change (and in
+summary.json's setup_check; README "The set-up check").
 Errors (exit 2, nothing written): no coupler_tangential channel, a sensor
 outside its link, a corner at or above the Nyquist frequency, a window
-parameter out of range (tukey 0..1, kaiser 0..50), a record too short.
+parameter out of range (tukey 0..1, kaiser 0..50), a record too short; with
+--strict, a likely set-up mistake.
 )";
 
 BandType parse_band(const std::string& s) {
@@ -173,7 +181,7 @@ int run_analyze(const Invocation& inv) {
   std::string recording, manifest_file, out_dir, band = "bandpass", window, integration;
   double low = 0, high = 0, mains = 0, mains_width = 1, transition = 0;
   std::size_t points = 0, guard = 0, spectrum_segment = 0, chunk = 0;
-  bool thesis = false, per_revolution = false;
+  bool thesis = false, per_revolution = false, strict = false;
   namespace d = analysis_defaults;
   const std::string low_help =
       "lower corner in Hz (default: " + format_number(d::kLowCornerPerCrankHz) + " x the mean crank frequency)";
@@ -205,6 +213,7 @@ int run_analyze(const Invocation& inv) {
       "guard-revolutions", po::value(&guard), "revolutions left out of the averages at each end of a pulse-train "
                                               "segment (default 0)")(
       "per-revolution", po::bool_switch(&per_revolution), "also write per_revolution.csv (every revolution)")(
+      "strict", po::bool_switch(&strict), "a likely set-up mistake (the set-up check) is an error: exit 2, nothing written")(
       "spectrum-segment", po::value(&spectrum_segment),
       "samples per spectrum segment (default: a power of two >= 8 revolutions)")(
       "chunk-revolutions", po::value(&chunk), chunk_help.c_str())(
@@ -236,6 +245,14 @@ int run_analyze(const Invocation& inv) {
   RevolutionCsv per_rev(dir, prov);
   RecordingAnalysis a = analyze_recording(recording, manifest_file, o, per_revolution ? &per_rev : nullptr);
   prov.inputs = {recording, a.manifest_file, a.rig_file};
+  const nlohmann::json setup =
+      a.setup_check ? setup_check_json(*a.setup_check, a.manifest_file.string()) : nlohmann::json(nullptr);
+  const std::vector<std::string> setup_lines = a.setup_check ? setup_check_lines(setup) : std::vector<std::string>{};
+  if (strict && !setup_lines.empty()) {
+    std::string msg = "analyze: --strict: the set-up check of " + recording + " found likely mistakes in its manifest: ";
+    for (const std::string& line : setup_lines) msg += line + "; ";
+    throw InputError(msg + "fix the keys named (README \"The set-up check\"), or run without --strict");
+  }
   ensure_output_dir(dir);
 
   // averaged.csv
@@ -324,6 +341,7 @@ int run_analyze(const Invocation& inv) {
   if (a.coupler) j["links"]["coupler"] = link_json(*a.coupler);
   if (a.rocker) j["links"]["rocker"] = link_json(*a.rocker);
   j["warnings"] = a.warnings;
+  j["setup_check"] = setup;
   j["outputs"] = nlohmann::json::array({"averaged.csv", "spectra.csv", "summary.json"});
   if (per_revolution) j["outputs"].push_back("per_revolution.csv");
 
@@ -335,6 +353,7 @@ int run_analyze(const Invocation& inv) {
   summary.commit();
 
   for (const auto& w : a.warnings) std::cerr << "fourbar: warning: " << w << "\n";
+  for (const auto& line : setup_lines) std::cerr << "fourbar: warning: " << line << "\n";
   std::cout << "analysed " << a.revolutions << " revolutions (" << units::rad_s_to_rpm(std::abs(a.mean_crank_speed_rad_s))
             << " rpm mean, " << N << " crank angles each) of " << recording << " into " << out_dir << ": alpha3 RMS "
             << a.coupler->alpha_rms_rad_s2 << " rad/s^2, omega3 RMS " << a.coupler->omega_rms_rad_s << " rad/s\n";

@@ -36,16 +36,21 @@ Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
              averaged_revolutions (20), tolerance (1e-8), max_order (50);
   [[recording]] file = "REC.flac" and any [theory] key for that recording.
 
+A recording whose set-up check (README "The set-up check") finds a likely
+manifest mistake gets status "check set-up" instead of "ok": its findings are
+warned on stderr and shown at the top of the report and in summary.json.
+
 Exit status: 0 every recording analysed; 1 the report was written but some
 recordings failed (each named on stderr and in the report), or the run
-failed; 2 bad arguments, session.toml or session folder (nothing written).
+failed; 2 bad arguments, session.toml or session folder (nothing written),
+or with --strict a recording to check set-up (the report is written).
 )";
 
 }  // namespace
 
 int run_report(const Invocation& inv) {
   std::string dir, out, cache;
-  bool no_cache = false, quiet = false;
+  bool no_cache = false, quiet = false, strict = false;
   int jobs = 0;
   po::options_description opts("options");
   opts.add_options()("session", po::value(&dir)->required(), "session folder with the recordings and manifests")(
@@ -53,11 +58,12 @@ int run_report(const Invocation& inv) {
       "cache", po::value(&cache), "cache folder (default: .fourbar-cache beside the report)")(
       "no-cache", po::bool_switch(&no_cache), "recompute everything; read and write no cache")(
       "jobs,j", po::value(&jobs), "recordings processed at once (default: every core); the outputs do not depend on it")(
-      "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
+      "quiet,q", po::bool_switch(&quiet), "no progress on stderr")(
+      "strict", po::bool_switch(&strict), "a likely set-up mistake in a recording is an error (exit 2; the report is written)");
   po::positional_options_description pos;
   pos.add("session", 1);
   po::variables_map vm;
-  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache] [--jobs N]", kDetails, opts, pos, inv,
+  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache] [--jobs N] [--strict]", kDetails, opts, pos, inv,
                        vm))
     return 0;
   ReportOptions o;
@@ -71,7 +77,13 @@ int run_report(const Invocation& inv) {
   o.command_line = inv.command_line;
   const ReportOutcome r = run_session_report(o);
   std::cout << "wrote " << r.html.string() << " and " << r.summary.string() << ": " << r.recordings << " recordings, "
-            << r.failed << " failed, " << r.from_cache << " from the cache\n";
+            << r.failed << " failed, " << r.from_cache << " from the cache";
+  if (r.check_setup > 0) std::cout << ", " << r.check_setup << " to check set-up";
+  std::cout << "\n";
+  if (strict && r.check_setup > 0)
+    throw InputError("report: --strict: the set-up check found likely manifest mistakes in " +
+                     std::to_string(r.check_setup) + " recordings (named above and at the top of " + r.html.string() +
+                     "); fix the keys named (README \"The set-up check\"), or run without --strict");
   return r.failed > 0 ? 1 : 0;
 }
 

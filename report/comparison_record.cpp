@@ -4,6 +4,7 @@
 
 #include "common/units.hpp"
 #include "compare/session_severity.hpp"
+#include "report/setup_check_record.hpp"
 
 namespace fourbar {
 
@@ -129,7 +130,7 @@ json comparison_record(const MeasuredResponse& measured, const MatchedTheory& t,
 json severity_record(const json& records) {
   std::vector<SeverityPoint> points;
   for (const json& r : records) {
-    if (r["status"] != "ok") continue;
+    if (!is_analysed(r)) continue;
     SeverityPoint p;
     p.recording = r["name"];
     p.clearance_mm = r["operating_point"]["clearance_mm"];

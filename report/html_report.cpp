@@ -1,4 +1,5 @@
 #include "report/html_report.hpp"
+#include "report/setup_check_record.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -219,7 +220,7 @@ const char* kScript = R"JS(
   var names = {alpha3_rad_s2:['α3','rad/s²'], omega3_rad_s:['ω3','rad/s'], alpha4_rad_s2:['α4','rad/s²'], omega4_rad_s:['ω4','rad/s']};
 
   R.recordings.forEach(function(rec, ri){
-    if (rec.status !== 'ok') return;
+    if (rec.status !== 'ok' && rec.status !== 'check set-up') return;
     var x = rec.grid.crank_deg;
     Object.keys(rec.series).forEach(function(q){
       var s = rec.series[q], id = 'r' + ri + '-' + q; if (!document.getElementById(id)) return;
@@ -312,10 +313,11 @@ void files_table(std::ostringstream& h, const json& files) {
 
 void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
   const std::string name = r["name"];
-  const bool ok = r["status"] == "ok";
+  const bool ok = is_analysed(r);
   h << "<section class=\"recording\" id=\"rec" << ri << "\"><h2>" << esc(name) << " <span class=\""
-    << (ok ? "ok\">analysed" : "failed\">failed") << "</span>" << (r.value("from_cache", false) ? " <span class=\"note\">(from cache)</span>" : "")
-    << "</h2>";
+    << (!ok ? "failed\">failed" : r["status"] == "ok" ? "ok\">analysed" : "failed\">analysed: check set-up") << "</span>"
+    << (r.value("from_cache", false) ? " <span class=\"note\">(from cache)</span>" : "") << "</h2>";
+  if (ok) h << setup_check_html(r.value("setup_check", json::object()), name);
   if (!ok) {
     h << "<p class=\"err\"><b>" << (r["error_kind"] == "input" ? "Bad input" : "Run failed") << ":</b> " << esc(r["error"])
       << "</p><h3>Input files</h3>";
@@ -387,6 +389,8 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
 
 }  // namespace
 
+std::string html_escape(const std::string& s) { return esc(s); }
+
 std::filesystem::path dygraphs_dir() {
   if (const char* env = std::getenv("FOURBAR_DYGRAPHS_DIR")) return env;
   return FOURBAR_DYGRAPHS_DIR;
@@ -414,7 +418,10 @@ std::string render_html_report(const json& session_in) {
 
   // Summary table.
   const int failed = data["recordings_failed"];
-  h << "<section id=\"summary\"><h2>Summary</h2><p>" << recs.size() << " recordings, "
+  h << "<section id=\"summary\"><h2>Summary</h2>";
+  for (const json& r : recs)
+    if (is_analysed(r)) h << setup_check_html(r.value("setup_check", json::object()), r["name"]);
+  h << "<p>" << recs.size() << " recordings, "
     << (failed ? "<span class=\"failed\">" + std::to_string(failed) + " failed</span>" : std::string("all analysed"))
     << ". Theory: clearance model and nominal mechanism at each recording's measured mean crank speed and clearance. "
        "a = RMS(model − nominal) / RMS(measured − nominal) on α3 (thesis sec. 8.1): how many times more violent the model is "
@@ -424,7 +431,7 @@ std::string render_html_report(const json& session_in) {
   for (std::size_t i = 0; i < recs.size(); ++i) {
     const json& r = recs[i];
     h << "<tr><td class=\"l\"><a href=\"#rec" << i << "\">" << esc(r["name"]) << "</a></td>";
-    if (r["status"] != "ok") {
+    if (!is_analysed(r)) {
       h << "<td class=\"l failed\" colspan=\"10\">failed: " << esc(r["error"]) << "</td></tr>";
       continue;
     }
@@ -433,7 +440,8 @@ std::string render_html_report(const json& session_in) {
       return m.empty() ? std::string("–") : fmt(b ? m[a][b] : m[a], f);
     };
     const json& sv = r["theory"]["severity"];
-    h << "<td class=\"l ok\">ok</td><td>" << fmt(r["operating_point"]["speed_rpm"], "%.2f") << "</td><td>"
+    h << (r["status"] == "ok" ? "<td class=\"l ok\">ok" : "<td class=\"l failed\">check set-up") << "</td><td>"
+      << fmt(r["operating_point"]["speed_rpm"], "%.2f") << "</td><td>"
       << fmt(r["operating_point"]["clearance_mm"], "%.4g") << "</td><td>" << fmt(r["operating_point"]["revolutions_averaged"], "%.0f")
       << "</td><td>" << mm("magnification", "time_domain", "%.3g") << "</td><td>" << mm("magnification", "spectral", "%.3g")
       << "</td><td>" << mm("correlation_simulated", nullptr, "%.3f") << "</td><td>" << fmt(sv["impacts_per_rev"], "%.1f")

@@ -29,6 +29,9 @@ namespace fourbar {
 /// FOURBAR_DYGRAPHS_DIR in the environment overrides the built-in path.
 std::filesystem::path dygraphs_dir();
 
+/// `s` with & < > " escaped for HTML text and attributes.
+std::string html_escape(const std::string& s);
+
 /// The HTML text. RunError when dygraphs is not installed (names the package).
 std::string render_html_report(const nlohmann::json& session);
 

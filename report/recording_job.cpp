@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "report/comparison_record.hpp"
+#include "report/setup_check_record.hpp"
 
 namespace fourbar {
 
@@ -104,7 +105,12 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
     }
     apply_pass_band(t, a.filter);
     const RecordingComparison c = compare_response(measured, t);
-    return recording_record(a, measured, t, c);
+    json r = recording_record(a, measured, t, c);
+    if (a.setup_check) {
+      r["status"] = analysed_status(*a.setup_check);
+      r["setup_check"] = setup_check_json(*a.setup_check, a.manifest_file.filename().string());
+    }
+    return r;
   } catch (const InputError& e) {
     return {{"status", "failed"}, {"error_kind", "input"}, {"error", e.what()}};
   } catch (const RunError& e) {

@@ -5,6 +5,7 @@
 
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
+#include "report/setup_check_record.hpp"
 
 namespace fourbar {
 
@@ -96,7 +97,7 @@ void write_series_files(const json& session, const std::filesystem::path& out_di
   const std::filesystem::path dir = out_dir / "series";
   ensure_output_dir(dir);
   for (const json& r : session["recordings"])
-    if (r["status"] == "ok") write_recording(session, r, dir);
+    if (is_analysed(r)) write_recording(session, r, dir);
 
   std::vector<std::string> c{"made by fourbar " + session["version"].get<std::string>() + ": " +
                              session["command"].get<std::string>()};

@@ -22,6 +22,7 @@
 #include "report/recording_job.hpp"
 #include "report/series_files.hpp"
 #include "report/session_settings.hpp"
+#include "report/setup_check_record.hpp"
 
 namespace fourbar {
 
@@ -60,7 +61,7 @@ std::optional<json> read_cache(const std::filesystem::path& file) {
   if (!in) return std::nullopt;
   try {
     json j = json::parse(in);
-    if (j.value("status", "") == "ok") return j;
+    if (is_analysed(j) && j.contains("setup_check")) return j;
   } catch (const std::exception&) {
     // A damaged cache entry is recomputed.
   }
@@ -114,7 +115,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     const bool cached = record.has_value();
     if (!record) {
       record = process_recording(rec, analysis, theory);
-      if (o.use_cache && (*record)["status"] == "ok") write_text_file(cache_file, record->dump());
+      if (o.use_cache && is_analysed(*record)) write_text_file(cache_file, record->dump());
     }
     json& r = *record;
     r["name"] = name;
@@ -158,9 +159,14 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   for (json& r : computed) {
     ++out.recordings;
     out.from_cache += r["from_cache"].get<bool>();
-    if (r["status"] != "ok") {
+    if (!is_analysed(r)) {
       ++out.failed;
       std::cerr << "fourbar: report: " << r["name"].get<std::string>() << ": " << r["error"].get<std::string>() << "\n";
+    }
+    if (r.contains("setup_check") && !r["setup_check"]["findings"].empty()) {
+      ++out.check_setup;
+      for (const std::string& line : setup_check_lines(r["setup_check"]))
+        std::cerr << "fourbar: warning: report: " << r["name"].get<std::string>() << ": " << line << "\n";
     }
     records.push_back(std::move(r));
   }

@@ -28,6 +28,7 @@ struct ReportOptions {
 
 struct ReportOutcome {
   int recordings = 0, failed = 0, from_cache = 0;
+  int check_setup = 0;  ///< analysed, but the set-up check found a likely manifest mistake (status "check set-up")
   std::filesystem::path html, summary;
 };
 
@@ -37,7 +38,8 @@ std::size_t default_jobs();
 /// Runs the whole session. Recordings are processed `jobs` at a time; the
 /// outputs are the same for every `jobs` (records in the folder's order). InputError (exit 2) for a bad session folder,
 /// session.toml or output path; a bad recording is reported in the outputs
-/// and on stderr and counted in `failed`.
+/// and on stderr and counted in `failed`; a set-up check's findings are
+/// warned on stderr, shown at the top of the report and counted in `check_setup`.
 ReportOutcome run_session_report(const ReportOptions& options);
 
 /// The session record without the bulky per-angle series and spectra (what

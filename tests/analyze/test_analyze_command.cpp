@@ -111,6 +111,42 @@ TEST_F(AnalyzeCommand, ExampleSceneEndToEnd) {
   EXPECT_EQ(jt["settings"]["kernel_taps"], 0);
 }
 
+// The set-up check: silent and "ok" with the right manifest; with the crank
+// direction wrong, a warning naming the key and "check set-up" in
+// summary.json; with --strict an error (exit 2, nothing written).
+TEST_F(AnalyzeCommand, SetupCheckWarnsAndStrictFails) {
+  const auto rec = recording();
+  {
+    const auto r = analyze(rec, "--strict");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("check set-up"), std::string::npos) << r.err;
+    std::ifstream in(out() / "summary.json");
+    const auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["setup_check"]["status"], "ok");
+    EXPECT_TRUE(j["setup_check"]["findings"].empty());
+    std::filesystem::remove_all(out());
+  }
+  edit_manifest(rec, "crank_direction = \"ccw\"", "crank_direction = \"cw\"");
+  {
+    const auto r = analyze(rec, "--strict");
+    expect_clean_failure(r, "crank_direction");
+    EXPECT_NE(r.err.find("--strict"), std::string::npos) << r.err;
+  }
+  const auto r = analyze(rec);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("fourbar: warning: check set-up: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("change crank_direction"), std::string::npos) << r.err;
+  std::ifstream in(out() / "summary.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["setup_check"]["status"], "check set-up");
+  ASSERT_EQ(j["setup_check"]["findings"].size(), 1u) << j["setup_check"].dump(1);
+  const auto& f = j["setup_check"]["findings"][0];
+  EXPECT_EQ(f["item"], "crank_direction");
+  EXPECT_EQ(f["manifest"], "\"cw\"");
+  EXPECT_EQ(f["data"], "\"ccw\"");
+  EXPECT_GE(f["confidence"].get<double>(), 0.5);
+}
+
 TEST_F(AnalyzeCommand, NoCouplerChannel) {
   const auto rec = recording();
   edit_manifest(rec, "role = \"coupler_tangential\"", "role = \"rocker_normal\"");

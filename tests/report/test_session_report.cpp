@@ -284,6 +284,46 @@ TEST_F(SessionReport, PageDrawsInHeadlessChromium) {
   EXPECT_EQ(std::stoi(m[1]), 2 * 7 + 4);  // two analysed recordings × 7 charts + 4 session charts
 }
 
+// A manifest with the coupler sensor's axis_sign flipped: the recording is
+// analysed with status "check set-up", the finding on stderr, at the top of
+// the report and in summary.json; --strict makes it exit 2 with the report written.
+TEST_F(SessionReport, SetupMistakeIsFlaggedAndStrictExits2) {
+  const auto d = dir_->path();
+  std::filesystem::create_directories(d / "bad");
+  std::filesystem::copy_file(d / "session" / "nominal.flac", d / "bad" / "nominal.flac");
+  std::string manifest = testing::read_file(d / "session" / "nominal.toml");
+  const auto at = manifest.find("axis_sign = 1");  // the first channel: coupler_t
+  ASSERT_NE(at, std::string::npos) << manifest;
+  manifest.replace(at, 13, "axis_sign = -1");
+  dir_->write("bad/nominal.toml", manifest);
+  dir_->write("bad/session.toml", "[theory]\nwarmup_revolutions = 2\naveraged_revolutions = 2\n");
+  const std::string cmd = "report " + (d / "bad").string() + " --out " + (d / "bad_out" / "report.html").string();
+  const auto run = testing::run_fourbar(cmd);
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("fourbar: warning: report: nominal.flac: check set-up: nominal.toml: channel 'coupler_t': axis_sign"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.out.find("1 to check set-up"), std::string::npos) << run.out;
+  std::ifstream in(d / "bad_out" / "summary.json");
+  const json s = json::parse(in);
+  const json& r = s["recordings"][0];
+  EXPECT_EQ(r["status"], "check set-up");
+  EXPECT_EQ(r["setup_check"]["status"], "check set-up");
+  ASSERT_FALSE(r["setup_check"]["findings"].empty());
+  EXPECT_EQ(r["setup_check"]["findings"][0]["key"], "[[channel]] name=\"coupler_t\" axis_sign");
+  EXPECT_TRUE(r.contains("metrics"));  // analysed and compared all the same
+  const std::string html = testing::read_file(d / "bad_out" / "report.html");
+  const auto box = html.find("Check set-up: nominal.flac");
+  ASSERT_NE(box, std::string::npos);
+  EXPECT_LT(box, html.find("<table>")) << "the finding comes before the summary table";
+
+  std::filesystem::remove(d / "bad_out" / "report.html");
+  const auto strict = testing::run_fourbar(cmd + " --strict");
+  EXPECT_EQ(strict.status, 2) << strict.err;
+  EXPECT_NE(strict.err.find("--strict"), std::string::npos) << strict.err;
+  EXPECT_TRUE(std::filesystem::exists(d / "bad_out" / "report.html"));
+}
+
 TEST(ReportCommand, BadSessionFolderOrSettingsExit2) {
   testing::TempDir d;
   auto r = testing::run_fourbar("report " + (d.path() / "missing").string());

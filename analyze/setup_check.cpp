@@ -1,0 +1,489 @@
+// The set-up check (setup_check.hpp): the reading put back together from
+// the analysed averages, the nominal templates, the joint search over pulse
+// angle, direction and coupler/rocker assignment, the per-channel fits and
+// the findings.
+#include "analyze/setup_check.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <limits>
+
+#include "analyze/analysis_channels.hpp"
+#include "analyze/fftw_plan.hpp"
+#include "analyze/filter_design.hpp"
+#include "analyze/link_motion.hpp"
+#include "analyze/pipeline.hpp"
+#include "common/format.hpp"
+#include "common/units.hpp"
+#include "mechanism/kinematics.hpp"
+
+namespace fourbar {
+
+std::string SetupCheck::status() const {
+  if (!checked) return "not checked";
+  return findings.empty() ? "ok" : "check set-up";
+}
+
+namespace {
+
+/// One analysed accelerometer channel: the reading recovered on the grid,
+/// its templates for each link it may belong to, and its correlations.
+struct Channel {
+  const ChannelSpec* spec = nullptr;
+  SensedLink link = SensedLink::coupler;  // as the manifest says
+  SensorAxis axis = SensorAxis::tangential;
+  double r_m = 0, h_m = 0;
+  std::vector<double> m;                  // recovered reading (calibrated, on the grid)
+  std::vector<double> f0;                 // the part of it the manifest's model added back (not filtered)
+  double energy = 0;                      // ‖G·m‖² over the fitted orders
+  struct Fit {
+    std::array<std::vector<double>, 2> t;       // f0, f1 on φj = θ0 + 2πj/N
+    double g00 = 0, g01 = 0, g11 = 0;           // Gram matrix
+    std::array<std::array<std::vector<double>, 2>, 2> c;  // [τ index][template][s]
+  };
+  std::array<std::optional<Fit>, 2> fit;  // by link (coupler, rocker)
+};
+
+/// The nominal templates' energy left above the fitted band: the band ends
+/// at the order that holds all but this share of each template's energy.
+constexpr double kTemplateTail = 1e-4;
+
+/// Unexplained share of a reading's in-band energy that the nominal model
+/// leaves even with the right set-up (see confidence()).
+constexpr double kMisfitFloor = 0.02;
+
+/// Share of a reading's energy the crank-pin and gravity term must carry
+/// (beyond what α explains) for its position to be estimated: 5 × the floor.
+constexpr double kPositionShare = 5 * kMisfitFloor;
+
+/// Gain below which the filter is taken to have removed an order.
+constexpr double kMinOrderGain = 0.5;
+
+constexpr std::size_t link_index(SensedLink l) { return l == SensedLink::coupler ? 0 : 1; }
+constexpr std::size_t tau_index(double tau) { return tau > 0 ? 0 : 1; }
+
+void remove_mean(std::vector<double>& x) {
+  double s = 0;
+  for (double v : x) s += v;
+  s /= static_cast<double>(x.size());
+  for (double& v : x) v -= s;
+}
+
+/// f0, f1 of a sensor on `link` at offset h, steady crank speed w, at φj.
+std::array<std::vector<double>, 2> templates(const Rig& rig, SensedLink link, SensorAxis axis, double h_m, double w,
+                                             double theta0, std::size_t N) {
+  std::array<std::vector<double>, 2> t{std::vector<double>(N), std::vector<double>(N)};
+  for (std::size_t j = 0; j < N; ++j) {
+    const double phi = theta0 + units::kTwoPi * static_cast<double>(j) / static_cast<double>(N);
+    const SensedLinkMotion k = nominal_link_motion(rig, link, CrankState{phi, w, 0.0});
+    const Vec2 u = k.u, n = u.perp();
+    const double w2 = k.omega_rad_s * k.omega_rad_s;
+    if (axis == SensorAxis::tangential) {
+      t[0][j] = fourbar::dot(k.joint_accel_m_s2, n) - h_m * w2 + rig.gravity_m_s2 * n.y;
+      t[1][j] = k.alpha_rad_s2;
+    } else {
+      t[0][j] = fourbar::dot(k.joint_accel_m_s2, u) - h_m * k.alpha_rad_s2 + rig.gravity_m_s2 * u.y;
+      t[1][j] = -w2;
+    }
+  }
+  remove_mean(t[0]);
+  remove_mean(t[1]);
+  return t;
+}
+
+/// The spectrum of `x` (FFT bins 0 … N/2) with bin q weighted by
+/// weight[q] (bins past the end cleared): the fitted orders only, each with
+/// the analysis filter's gain where that is what the data went through.
+std::vector<std::complex<double>> band_spectrum(const std::vector<double>& x, const std::vector<double>& weight,
+                                                RealFft& fft) {
+  std::copy(x.begin(), x.end(), fft.time().begin());
+  fft.forward();
+  std::vector<std::complex<double>> X(fft.spectrum().begin(), fft.spectrum().end());
+  for (std::size_t q = 0; q < X.size(); ++q) X[q] *= q < weight.size() ? weight[q] : 0.0;
+  return X;
+}
+
+/// The zero-phase gain of an analysis filter at crank orders 0 … K (order 0
+/// set to 0: the mean is not fitted). `response` (optional): the filter's
+/// response at the bins k·fs/n of an n-point transform (the analysis keeps
+/// the α filter's, RecordingAnalysis::spectra), read by linear
+/// interpolation; without it the ideal response of `spec`.
+std::vector<double> order_gains(const FilterSpec& spec, std::span<const double> response, std::size_t n, double fs,
+                                double crank_hz, std::size_t K) {
+  std::vector<double> g(K + 1, 0.0);
+  const bool sampled = n > 0 && response.size() == n / 2 + 1;
+  const std::vector<Band> bands = pass_bands(spec, fs);
+  for (std::size_t q = 1; q <= K; ++q) {
+    const double f = static_cast<double>(q) * crank_hz;
+    if (!sampled) {
+      g[q] = passes(bands, f) ? 1.0 : 0.0;
+      continue;
+    }
+    const double x = f * static_cast<double>(n) / fs;
+    const auto i = std::min(static_cast<std::size_t>(x), response.size() - 2);
+    const double t = x - static_cast<double>(i);
+    g[q] = (1 - t) * response[i] + t * response[i + 1];
+  }
+  return g;
+}
+
+/// Σk a[k]·b[k] of two real signals from their spectra (Parseval).
+double inner(const std::vector<std::complex<double>>& A, const std::vector<std::complex<double>>& B, std::size_t N) {
+  double s = 0;
+  for (std::size_t q = 0; q < A.size(); ++q) {
+    const double w = (q == 0 || 2 * q == N) ? 1.0 : 2.0;
+    s += w * std::real(std::conj(A[q]) * B[q]);
+  }
+  return s / static_cast<double>(N);
+}
+
+/// Smallest order K holding all but `share` of the energy of `x` (mean removed).
+std::size_t band_order(const std::vector<double>& x, double share, RealFft& fft) {
+  std::copy(x.begin(), x.end(), fft.time().begin());
+  fft.forward();
+  const auto X = fft.spectrum();
+  double total = 0;
+  for (std::size_t q = 1; q < X.size(); ++q) total += std::norm(X[q]);
+  double tail = total;
+  for (std::size_t q = 1; q < X.size(); ++q) {
+    tail -= std::norm(X[q]);
+    if (tail <= share * total) return q;
+  }
+  return X.size() - 1;
+}
+
+/// c[τ][s] = Σk m[k]·t[(s + τk) mod N] for τ = +1, −1, by FFT (band-limited spectra).
+std::array<std::vector<double>, 2> correlations(const std::vector<std::complex<double>>& m_hat,
+                                               const std::vector<std::complex<double>>& t_hat, RealFft& fft) {
+  const std::size_t N = fft.size();
+  std::array<std::vector<double>, 2> c;
+  for (std::size_t ti = 0; ti < 2; ++ti) {
+    auto spec = fft.spectrum();
+    for (std::size_t q = 0; q < spec.size(); ++q) spec[q] = (ti == 0 ? std::conj(m_hat[q]) : m_hat[q]) * t_hat[q];
+    fft.inverse();
+    c[ti].assign(fft.time().begin(), fft.time().end());
+    for (double& v : c[ti]) v /= static_cast<double>(N);
+  }
+  return c;
+}
+
+/// Share of ‖m‖² the two-term fit explains, and its coefficients.
+struct TwoTerm {
+  double r2 = 0, a = 0, b = 0;
+};
+TwoTerm two_term(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s) {
+  const double c0 = f.c[ti][0][s], c1 = f.c[ti][1][s];
+  const double det = f.g00 * f.g11 - f.g01 * f.g01;
+  TwoTerm out;
+  if (!(det > 1e-12 * f.g00 * f.g11) || ch.energy <= 0) {
+    out.a = f.g00 > 0 ? c0 / f.g00 : 0.0;
+    out.r2 = ch.energy > 0 && f.g00 > 0 ? c0 * c0 / (f.g00 * ch.energy) : 0.0;
+    return out;
+  }
+  out.a = (f.g11 * c0 - f.g01 * c1) / det;
+  out.b = (f.g00 * c1 - f.g01 * c0) / det;
+  out.r2 = (out.a * c0 + out.b * c1) / ch.energy;
+  return out;
+}
+
+/// The one-term fit k·(f0 + r·f1) with r fixed: the share explained with a
+/// given k (one_term_r2), and k fitted (one_term).
+struct OneTerm {
+  double k = 0, r2 = 0;
+};
+double one_term_r2(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s, double r, double k) {
+  const double c = f.c[ti][0][s] + r * f.c[ti][1][s];
+  const double tt = f.g00 + 2 * r * f.g01 + r * r * f.g11;
+  return ch.energy > 0 ? (2 * k * c - k * k * tt) / ch.energy : 0.0;
+}
+OneTerm one_term(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s, double r) {
+  const double c = f.c[ti][0][s] + r * f.c[ti][1][s];
+  const double tt = f.g00 + 2 * r * f.g01 + r * r * f.g11;
+  OneTerm o;
+  o.k = tt > 0 ? c / tt : 0.0;
+  o.r2 = one_term_r2(ch, f, ti, s, r, o.k);
+  return o;
+}
+
+/// The share of the misfit with the manifest's value that the data's value
+/// removes. Both shares carry kMisfitFloor: the nominal templates are not the
+/// rig's exact motion (crank-speed wander, the filter's edges, a sensor's
+/// small misalignment), so a gain below that floor is no evidence.
+double confidence(double unexplained_data, double unexplained_manifest) {
+  const double u_data = std::max(0.0, unexplained_data) + kMisfitFloor;
+  const double u_manifest = std::max(0.0, unexplained_manifest) + kMisfitFloor;
+  return std::clamp(1.0 - u_data / u_manifest, 0.0, 1.0);
+}
+
+std::string percent(double x) { return std::to_string(static_cast<int>(std::lround(100 * x))) + " %"; }
+
+std::string channel_key(const std::string& name, const std::string& key) {
+  return "[[channel]] name=\"" + name + "\" " + key;
+}
+
+void add_finding(SetupCheck& out, std::string item, std::string channel, std::string key, std::string manifest,
+                 std::string data, double conf) {
+  SetupFinding f{std::move(item), std::move(channel), std::move(key), std::move(manifest), std::move(data), conf, {}};
+  f.message = (f.channel.empty() ? std::string() : "channel '" + f.channel + "': ") + f.item + ": the manifest says " +
+              f.manifest + ", the data say " + f.data + " (confidence " + percent(f.confidence) + "); change " + f.key;
+  out.findings.push_back(std::move(f));
+}
+
+double wrap_deg(double d) {
+  d = std::fmod(d, 360.0);
+  if (d > 180) d -= 360;
+  if (d <= -180) d += 360;
+  return d;
+}
+
+}  // namespace
+
+SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, const SetupCheckLimits& lim) {
+  SetupCheck out;
+  if (a.options.conversion != ConversionMethod::full) {
+    out.not_checked = "the thesis conversion leaves out terms the check needs (run without --thesis)";
+    return out;
+  }
+  const std::size_t N = a.grid_points_per_rev;
+  if (!a.rig || N < 8 || a.crank_deg.size() != N || a.crank_speed_rad_s.mean.size() != N) {
+    out.not_checked = "no averaged revolutions";
+    return out;
+  }
+  const Rig& rig = *a.rig;
+  const double dir_m = manifest.crank_direction;
+  const double theta0 = units::deg_to_rad(a.crank_deg[0]);
+  double w_mean = 0;
+  for (double w : a.crank_speed_rad_s.mean) w_mean += std::abs(w) / static_cast<double>(N);
+
+  // The crank state on the grid: θ2 as the manifest says, ω2 averaged, α2 = ω2·dω2/dθ2.
+  std::vector<CrankState> crank(N);
+  const double dtheta = dir_m * units::kTwoPi / static_cast<double>(N);
+  for (std::size_t k = 0; k < N; ++k) {
+    const auto& w = a.crank_speed_rad_s.mean;
+    const double dw = w[(k + 1) % N] - w[(k + N - 1) % N];
+    crank[k] = {units::deg_to_rad(a.crank_deg[k]), w[k], w[k] * dw / (2 * dtheta)};
+  }
+
+  // The channels: the reading recovered by running the conversion forward.
+  const AnalysisChannels chosen = analysis_channels(manifest);
+  auto spec_of = [&](const std::string& name) -> const ChannelSpec* {
+    for (const ChannelSpec& c : manifest.channels)
+      if (c.name == name) return &c;
+    return nullptr;
+  };
+  std::vector<Channel> channels;
+  for (const LinkChannels& lc : chosen.links) {
+    const LinkResult* lr = lc.link == SensedLink::coupler ? (a.coupler ? &*a.coupler : nullptr)
+                                                          : (a.rocker ? &*a.rocker : nullptr);
+    if (!lr || lr->alpha_rad_s2.mean.size() != N) continue;
+    for (const auto* ac : {&lc.tangential, &lc.normal}) {
+      if (!*ac) continue;
+      const bool tangential = (*ac)->mount.axis == SensorAxis::tangential;
+      if (!tangential && (!lr->normal || lr->normal->omega_sq_rad2_s2.mean.size() != N)) continue;
+      Channel ch;
+      ch.spec = spec_of((*ac)->mount.channel);
+      if (!ch.spec) continue;
+      const ResolvedMount mount = resolve_mount(rig, (*ac)->mount);
+      ch.link = lc.link, ch.axis = mount.axis, ch.r_m = mount.r_m, ch.h_m = mount.h_m;
+      ch.m.resize(N), ch.f0.resize(N);
+      for (std::size_t k = 0; k < N; ++k) {
+        const SensedLinkMotion mo = nominal_link_motion(rig, lc.link, crank[k]);
+        const Vec2 u = mo.u, n = u.perp();
+        const double alpha = lr->alpha_rad_s2.mean[k];
+        if (tangential) {
+          ch.f0[k] = fourbar::dot(mo.joint_accel_m_s2, n) - mount.h_m * mo.omega_rad_s * mo.omega_rad_s +
+                     rig.gravity_m_s2 * n.y;
+          ch.m[k] = ch.f0[k] + mount.r_m * alpha;
+        } else {
+          ch.f0[k] = fourbar::dot(mo.joint_accel_m_s2, u) - mount.h_m * alpha + rig.gravity_m_s2 * u.y;
+          ch.m[k] = ch.f0[k] - mount.r_m * lr->normal->omega_sq_rad2_s2.mean[k];
+        }
+      }
+      channels.push_back(std::move(ch));
+      if (!tangential) out.normal_consistency.emplace_back((*ac)->mount.channel, lr->normal->rel_rms_difference);
+    }
+  }
+  if (channels.empty()) {
+    out.not_checked = "no analysed accelerometer channel";
+    return out;
+  }
+
+  // Templates, the band they occupy, and their correlations with each reading.
+  RealFft fft(N);
+  std::size_t K = 3;
+  for (Channel& ch : channels) {
+    for (SensedLink l : {SensedLink::coupler, SensedLink::rocker}) {
+      if (l != ch.link && ch.axis != SensorAxis::tangential) continue;
+      Channel::Fit f;
+      f.t = templates(rig, l, ch.axis, ch.h_m, w_mean, theta0, N);
+      for (const auto& t : f.t) K = std::max(K, band_order(t, kTemplateTail, fft));
+      ch.fit[link_index(l)] = std::move(f);
+    }
+  }
+  K = std::min(K, N / 2 - 1);
+  const double fs = a.acquisition.recording.sample_rate_hz, crank_hz = w_mean / units::kTwoPi;
+  // What the analysis filter did to each order: the α (or ω²) was filtered,
+  // the terms added back above were not, so per order the recovered reading
+  // is G·m + (1 − G)·f0_manifest. Fitted: G·m against G·template.
+  const std::vector<double> alpha_gain =
+      order_gains(a.filter, a.spectra.filter_gain, a.spectra.segment_length, fs, crank_hz, K);
+  const std::vector<double> normal_gain = order_gains(a.normal_filter, {}, 0, fs, crank_hz, K);
+  std::erase_if(channels, [&](const Channel& ch) {
+    const auto& g = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
+    return std::count_if(g.begin(), g.end(), [](double v) { return v >= kMinOrderGain; }) < 2;
+  });
+  if (channels.empty()) {
+    out.not_checked = "the analysis filter passes fewer than 2 of the crank orders 1-" + std::to_string(K) +
+                      " that hold the nominal response";
+    return out;
+  }
+  for (Channel& ch : channels) {
+    const auto& gain = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
+    std::vector<double> ones(K + 1, 1.0), rest(K + 1, 0.0);
+    ones[0] = 0;
+    for (std::size_t q = 1; q <= K; ++q) rest[q] = 1 - gain[q];
+    auto m_hat = band_spectrum(ch.m, ones, fft);
+    const auto f0_hat = band_spectrum(ch.f0, rest, fft);
+    for (std::size_t q = 0; q < m_hat.size(); ++q) m_hat[q] -= f0_hat[q];
+    ch.energy = inner(m_hat, m_hat, N);
+    for (auto& f : ch.fit) {
+      if (!f) continue;
+      const auto t0 = band_spectrum(f->t[0], gain, fft), t1 = band_spectrum(f->t[1], gain, fft);
+      f->g00 = inner(t0, t0, N), f->g01 = inner(t0, t1, N), f->g11 = inner(t1, t1, N);
+      for (std::size_t p = 0; p < 2; ++p) {
+        const auto c = correlations(m_hat, p == 0 ? t0 : t1, fft);
+        f->c[0][p] = c[0];
+        f->c[1][p] = c[1];
+      }
+    }
+  }
+  out.band_orders = K;
+  const bool can_swap = std::count_if(channels.begin(), channels.end(),
+                                      [](const Channel& ch) { return ch.axis == SensorAxis::tangential; }) == 2;
+  auto fitted_link = [&](const Channel& ch, bool swapped) {
+    if (!swapped || ch.axis != SensorAxis::tangential) return ch.link;
+    return ch.link == SensedLink::coupler ? SensedLink::rocker : SensedLink::coupler;
+  };
+
+  // Joint search: assignment × direction × pulse angle, score Σ share explained.
+  const double n_ch = static_cast<double>(channels.size());
+  struct Best {
+    double score = -std::numeric_limits<double>::infinity();
+    bool swapped = false;
+    std::size_t ti = 0, s = 0;
+  };
+  Best best, best_dir_m, best_offset_m, best_straight, best_crank_m;
+  for (bool swapped : {false, true}) {
+    if (swapped && !can_swap) continue;
+    for (std::size_t ti = 0; ti < 2; ++ti)
+      for (std::size_t s = 0; s < N; ++s) {
+        double score = 0;
+        for (const Channel& ch : channels) score += two_term(ch, *ch.fit[link_index(fitted_link(ch, swapped))], ti, s).r2;
+        const Best here{score, swapped, ti, s};
+        if (score > best.score) best = here;
+        if (ti == tau_index(dir_m) && score > best_dir_m.score) best_dir_m = here;
+        if (s == 0 && score > best_offset_m.score) best_offset_m = here;
+        if (s == 0 && ti == tau_index(dir_m) && score > best_crank_m.score) best_crank_m = here;
+        if (!swapped && score > best_straight.score) best_straight = here;
+      }
+  }
+  const double u_best = 1 - best.score / n_ch;
+  const double tau = best.ti == 0 ? 1.0 : -1.0;
+  out.checked = true;
+  out.crank_direction = tau;
+  out.crank_offset_deg = wrap_deg(a.crank_deg[0] + 360.0 * static_cast<double>(best.s) / static_cast<double>(N));
+  out.swapped = best.swapped;
+  out.fit = best.score / n_ch;
+
+  // The crank: direction and pulse angle. Each alone is judged against the
+  // best fit that keeps the manifest's value of it. With few channels the
+  // response can look nearly the same mirrored (other direction) at another
+  // pulse angle; then neither alone is sure, but the manifest's pair still
+  // fits far worse than the data's: one finding names both keys.
+  const ChannelSpec& pulse = manifest.pulse_channel();
+  const std::string offset_key = channel_key(pulse.name, "crank_offset_deg");
+  auto direction_name = [](double d) { return std::string(d > 0 ? "\"ccw\"" : "\"cw\""); };
+  auto pulse_deg = [&](const Best& b) {
+    return wrap_deg(a.crank_deg[0] + 360.0 * static_cast<double>(b.s) / static_cast<double>(N));
+  };
+  const double offset_diff = wrap_deg(360.0 * static_cast<double>(best.s) / static_cast<double>(N));
+  const bool offset_off = std::abs(offset_diff) > lim.offset_tolerance_deg;
+  const double conf_crank = confidence(u_best, 1 - best_crank_m.score / n_ch);
+  const double conf_dir = tau != dir_m ? confidence(u_best, 1 - best_dir_m.score / n_ch) : 0.0;
+  const double conf_offset = offset_off ? confidence(u_best, 1 - best_offset_m.score / n_ch) : 0.0;
+  if (tau != dir_m && conf_dir >= lim.min_confidence)
+    add_finding(out, "crank_direction", "", "crank_direction", direction_name(dir_m), direction_name(tau), conf_dir);
+  if (offset_off && conf_offset >= lim.min_confidence)
+    add_finding(out, "crank_offset_deg", pulse.name, offset_key, format_number(units::rad_to_deg(pulse.crank_offset_rad), 4),
+                format_number(out.crank_offset_deg, 4), conf_offset);
+  const bool ambiguous = (tau != dir_m && conf_dir < lim.min_confidence) || (offset_off && conf_offset < lim.min_confidence);
+  if (ambiguous && out.findings.empty() && conf_crank >= lim.min_confidence)
+    add_finding(out, tau != dir_m ? "crank_direction" : "crank_offset_deg", "", "crank_direction or " + offset_key,
+                direction_name(dir_m) + " with crank_offset_deg = " + format_number(units::rad_to_deg(pulse.crank_offset_rad), 4),
+                direction_name(tau) + " with crank_offset_deg = " + format_number(pulse_deg(best), 4) + ", or " +
+                    direction_name(dir_m) + " with crank_offset_deg = " + format_number(pulse_deg(best_dir_m), 4) +
+                    " (these channels cannot tell the two apart)",
+                conf_crank);
+  std::string coupler_t, rocker_t;
+  for (const Channel& ch : channels)
+    if (ch.axis == SensorAxis::tangential) (ch.link == SensedLink::coupler ? coupler_t : rocker_t) = ch.spec->name;
+  if (best.swapped) {
+    const double conf = confidence(u_best, 1 - best_straight.score / n_ch);
+    if (conf >= lim.min_confidence)
+      add_finding(out, "channels_swapped", "", channel_key(coupler_t, "index") + " and " + channel_key(rocker_t, "index"),
+                  "'" + coupler_t + "' on the coupler, '" + rocker_t + "' on the rocker",
+                  "'" + coupler_t + "' reads the rocker, '" + rocker_t + "' the coupler", conf);
+  }
+
+  // Per channel at the joint best: sign and scale (manifest position), position.
+  double fit_manifest = 0;
+  for (const Channel& ch : channels) {
+    ChannelSetupEstimate e;
+    e.channel = ch.spec->name;
+    e.role = ch.spec->role;
+    const SensedLink l = fitted_link(ch, best.swapped);
+    e.fitted_as = std::string(to_string(l)) + "_" + to_string(ch.axis);
+    const Channel::Fit& f = *ch.fit[link_index(l)];
+    const Channel::Fit& fm = *ch.fit[link_index(ch.link)];
+    const double ch_fit_manifest = std::max(0.0, one_term_r2(ch, fm, tau_index(dir_m), 0, ch.r_m, 1.0));
+    fit_manifest += ch_fit_manifest / n_ch;
+    e.fit_manifest = ch_fit_manifest;
+    const OneTerm one = one_term(ch, f, best.ti, best.s, ch.r_m);
+    const TwoTerm two = two_term(ch, f, best.ti, best.s);
+    e.scale = one.k;
+    e.fit = two.r2;
+    // The position is B/A: it is known only when the f0 term (the part of it
+    // f1 does not explain) carries a share of the reading well above the floor.
+    const double f0_alone = f.g11 > 0 ? (f.g00 - f.g01 * f.g01 / f.g11) * two.a * two.a : 0.0;
+    e.position_mm = ch.energy > 0 && f0_alone >= kPositionShare * ch.energy ? units::m_to_mm(two.b / two.a)
+                                                                           : std::numeric_limits<double>::quiet_NaN();
+    e.position_confidence = confidence(1 - two.r2, 1 - one.r2);
+    const std::string& name = ch.spec->name;
+    if (l == ch.link && one.r2 >= lim.min_fit) {
+      if (one.k < 0)
+        add_finding(out, "axis_sign", name, channel_key(name, "axis_sign"), ch.spec->axis_sign > 0 ? "+1" : "-1",
+                    ch.spec->axis_sign > 0 ? "-1" : "+1", confidence(1 - one.r2, 1.0));
+      const double ratio = std::abs(one.k);
+      if (ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance) {
+        const double sign = one.k < 0 ? -1.0 : 1.0;
+        const double conf = confidence(1 - one.r2, 1 - one_term_r2(ch, f, best.ti, best.s, ch.r_m, sign));
+        if (conf >= lim.min_confidence)
+          add_finding(out, "volts_per_unit", name, channel_key(name, "volts_per_unit"),
+                      format_number(ch.spec->volts_per_m_s2, 4), format_number(ch.spec->volts_per_m_s2 * ratio, 3) +
+                      " (" + format_number(ratio, 3) + " x)", conf);
+      }
+    }
+    if (l == ch.link && two.r2 >= lim.min_fit && std::isfinite(e.position_mm) &&
+        std::abs(e.position_mm - units::m_to_mm(ch.r_m)) > lim.position_tolerance_mm &&
+        e.position_confidence >= lim.min_confidence)
+      add_finding(out, "position_mm", name, channel_key(name, "position_mm"), format_number(units::m_to_mm(ch.r_m), 4),
+                  format_number(e.position_mm, 3), e.position_confidence);
+    out.channels.push_back(std::move(e));
+  }
+  out.fit_manifest = fit_manifest;
+  return out;
+}
+
+}  // namespace fourbar

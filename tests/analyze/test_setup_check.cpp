@@ -1,0 +1,165 @@
+// The set-up check (analyze/setup_check.hpp) on virtual-rig recordings of
+// the thesis rig: every common manifest mistake is flagged with the right key
+// and the data's value near the truth, the correct manifest is not flagged.
+// The CI matrix is small (8 short recordings × 8 manifests, seconds); the
+// larger one whose table the README quotes is bench/setup_check_matrix.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "setup_mistakes.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::Mistake;
+using testing::SetupCase;
+using testing::VirtualSetup;
+
+struct Analysed {
+  RecordingAnalysis analysis;
+  SetupCheck check;
+};
+
+Analysed analyse(const std::filesystem::path& rec, Mistake m) {
+  AnalyzeOptions o;
+  o.progress = false;
+  Analysed out{analyze_recording(rec, testing::manifest_with(rec, m), o), {}};
+  EXPECT_TRUE(out.analysis.setup_check.has_value());
+  if (out.analysis.setup_check) out.check = *out.analysis.setup_check;
+  return out;
+}
+
+std::string describe(const SetupCheck& c) {
+  std::string s = "status " + c.status() + ", data: offset " + std::to_string(c.crank_offset_deg) + " deg, direction " +
+                  std::to_string(c.crank_direction) + (c.swapped ? ", swapped" : "") + "\n";
+  for (const ChannelSetupEstimate& e : c.channels)
+    s += "  " + e.channel + " as " + e.fitted_as + ": scale " + std::to_string(e.scale) + ", position " +
+         std::to_string(e.position_mm) + " mm (confidence " + std::to_string(e.position_confidence) + "), fit " +
+         std::to_string(e.fit) + "\n";
+  for (const SetupFinding& f : c.findings) s += "  finding: " + f.message + "\n";
+  return s;
+}
+
+class SetupCheckMatrix : public ::testing::TestWithParam<SetupCase> {};
+
+// Each recording with the correct manifest and with each mistake.
+TEST_P(SetupCheckMatrix, EveryMistakeFlaggedCorrectSetUpNot) {
+  VirtualSetup v(GetParam().rpm);
+  const auto rec = testing::write_setup_case(v, GetParam(), "rec.wav");
+  const Analysed ok = analyse(rec, Mistake::none);
+  EXPECT_EQ(ok.check.status(), "ok") << describe(ok.check);
+  EXPECT_TRUE(ok.check.findings.empty()) << describe(ok.check);
+  for (Mistake m : GetParam().coupler_only ? testing::coupler_only_mistakes() : testing::all_mistakes()) {
+    const Analysed bad = analyse(rec, m);
+    EXPECT_TRUE(testing::flags(bad.check, m)) << testing::to_string(m) << " not flagged:\n" << describe(bad.check);
+    EXPECT_EQ(bad.check.status(), "check set-up") << testing::to_string(m);
+  }
+}
+
+// Nominal and clearance motion, 250–600 rpm, 20–40 dB, DC and AC: 6 revolutions
+// each; the last two with only the coupler's tangential channel (the minimum).
+INSTANTIATE_TEST_SUITE_P(
+    VirtualRig, SetupCheckMatrix,
+    ::testing::Values(SetupCase{250, false, 20, false, 6, 10240, 11}, SetupCase{600, false, 40, true, 6, 10240, 12},
+                      SetupCase{350, false, 30, true, 6, 10240, 13}, SetupCase{450, false, 20, false, 6, 10240, 14},
+                      SetupCase{250, true, 40, true, 6, 10240, 15}, SetupCase{600, true, 20, false, 6, 10240, 16},
+                      SetupCase{350, true, 20, true, 6, 10240, 17}, SetupCase{450, true, 30, false, 6, 10240, 18},
+                      SetupCase{300, false, 30, false, 6, 10240, 19, true},
+                      SetupCase{500, true, 25, true, 6, 10240, 20, true}),
+    [](const auto& info) {
+      const SetupCase& c = info.param;
+      return std::string(c.clearance ? "clearance" : "nominal") + std::to_string(static_cast<int>(c.rpm)) + "rpm" +
+             std::to_string(static_cast<int>(c.snr_db)) + "dB" + (c.ac_coupled ? "AC" : "DC") +
+             (c.coupler_only ? "CouplerOnly" : "");
+    });
+
+// What the data say is the truth, within the estimate's resolution: the
+// finding tells the technician the value to write, not only that one is wrong.
+TEST(SetupCheck, FindingsCarryTheTrueValues) {
+  VirtualSetup v(350);
+  SetupCase c;
+  c.clearance = true;
+  c.ac_coupled = true;
+  c.snr_db = 25;
+  const auto rec = testing::write_setup_case(v, c, "rec.wav");
+  auto finding = [](const SetupCheck& check, const std::string& item) -> const SetupFinding& {
+    for (const SetupFinding& f : check.findings)
+      if (f.item == item) return f;
+    throw std::runtime_error("no finding " + item + "\n" + describe(check));
+  };
+  auto channel = [](const SetupCheck& check, const std::string& name) -> const ChannelSetupEstimate& {
+    for (const ChannelSetupEstimate& e : check.channels)
+      if (e.channel == name) return e;
+    throw std::runtime_error("no channel " + name);
+  };
+  {
+    const SetupCheck k = analyse(rec, Mistake::crank_offset).check;
+    EXPECT_NEAR(k.crank_offset_deg, 0.0, 1.0) << describe(k);  // the virtual rig's pulse is at 0°
+    EXPECT_EQ(finding(k, "crank_offset_deg").manifest, "90");
+    EXPECT_NE(finding(k, "crank_offset_deg").key.find("crank_offset_deg"), std::string::npos);
+    EXPECT_GE(finding(k, "crank_offset_deg").confidence, 0.5);
+  }
+  {
+    const SetupCheck k = analyse(rec, Mistake::crank_direction).check;
+    EXPECT_EQ(k.crank_direction, 1.0);
+    EXPECT_EQ(finding(k, "crank_direction").data, "\"ccw\"");
+    EXPECT_EQ(finding(k, "crank_direction").key, "crank_direction");
+  }
+  {
+    const SetupCheck k = analyse(rec, Mistake::coupler_scale).check;
+    EXPECT_NEAR(channel(k, "coupler_t").scale, 0.1, 0.005) << describe(k);
+    EXPECT_EQ(finding(k, "volts_per_unit").key, "[[channel]] name=\"coupler_t\" volts_per_unit");
+  }
+  {
+    const SetupCheck k = analyse(rec, Mistake::coupler_sign).check;
+    EXPECT_NEAR(channel(k, "coupler_t").scale, -1.0, 0.05) << describe(k);
+    EXPECT_EQ(finding(k, "axis_sign").manifest, "-1");  // the truth: +1
+    EXPECT_EQ(finding(k, "axis_sign").data, "+1");
+    EXPECT_EQ(finding(k, "axis_sign").channel, "coupler_t");
+  }
+  {
+    const SetupCheck k = analyse(rec, Mistake::coupler_position).check;
+    EXPECT_NEAR(channel(k, "coupler_t").position_mm, 289.0, 5.0) << describe(k);  // the manifest says 239
+    EXPECT_EQ(finding(k, "position_mm").manifest, "239");
+  }
+  {
+    const SetupCheck k = analyse(rec, Mistake::swapped).check;
+    EXPECT_TRUE(k.swapped);
+    EXPECT_EQ(channel(k, "coupler_t").fitted_as, "rocker_tangential");
+    EXPECT_EQ(channel(k, "rocker_t").fitted_as, "coupler_tangential");
+  }
+  {
+    const SetupCheck k = analyse(rec, Mistake::none).check;
+    EXPECT_NEAR(channel(k, "coupler_t").scale, 1.0, 0.05) << describe(k);
+    EXPECT_NEAR(channel(k, "rocker_t").scale, 1.0, 0.05) << describe(k);
+    EXPECT_NEAR(channel(k, "coupler_n").scale, 1.0, 0.05) << describe(k);
+    EXPECT_NEAR(channel(k, "coupler_t").position_mm, 289.0, 5.0) << describe(k);
+    EXPECT_GT(k.fit, 0.95) << describe(k);
+  }
+}
+
+TEST(SetupCheck, ThesisConversionIsNotChecked) {
+  VirtualSetup v(350);
+  const auto rec = testing::write_setup_case(v, SetupCase{}, "rec.wav");
+  AnalyzeOptions o = AnalyzeOptions::thesis_method();
+  o.progress = false;
+  const RecordingAnalysis a = analyze_recording(rec, testing::manifest_with(rec, Mistake::coupler_sign), o);
+  ASSERT_TRUE(a.setup_check);
+  EXPECT_EQ(a.setup_check->status(), "not checked");
+  EXPECT_FALSE(a.setup_check->not_checked.empty());
+}
+
+TEST(SetupCheck, OffWhenNotAsked) {
+  VirtualSetup v(350);
+  const auto rec = testing::write_setup_case(v, SetupCase{}, "rec.wav");
+  AnalyzeOptions o;
+  o.progress = false;
+  o.setup_check = false;
+  EXPECT_FALSE(analyze_recording(rec, {}, o).setup_check.has_value());
+}
+
+}  // namespace
+}  // namespace fourbar
