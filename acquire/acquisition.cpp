@@ -87,7 +87,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   clock.lap(AcquirePass::pulses);
   report.edges_debounced = edges.edges_debounced;
   report.edge_level_V = edges.edge_level_V;
-  report.pulses = pulse_train_from_edges(edges.edges_s, options.pulses, manifest, info.file);
+  report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
   report.revolutions = report.pulses.revolutions();
 
   RevolutionSchedule schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);

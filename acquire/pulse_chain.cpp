@@ -1,0 +1,107 @@
+#include "acquire/pulse_chain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace fourbar {
+
+namespace {
+
+double sq(double x) { return x * x; }
+
+/// misfit² of period d, capped.
+/// Relative discount on leaving out an edge right after another (see below).
+constexpr double kEchoPreference = 1e-4;
+
+double misfit_cost(double d, double reference) { return std::min(sq(std::log(d / reference)), kMisfitCap); }
+
+/// misfit² of a period d that may span k = 1 … kMaxMissedTurns turns (missed
+/// pulses), each missed pulse at kMissedCost.
+double period_cost(double d, double reference) {
+  double best = misfit_cost(d, reference);
+  for (int k = 2; k <= kMaxMissedTurns && best > kMissedCost * (k - 1); ++k)
+    best = std::min(best, misfit_cost(d / k, reference) + kMissedCost * (k - 1));
+  return best;
+}
+
+}  // namespace
+
+double constant_acceleration_period(double a_s, double b_s) {
+  return 1.0 / std::sqrt(0.5 * (1.0 / (a_s * a_s) + 1.0 / (b_s * b_s)));
+}
+
+std::vector<std::size_t> smoothest_pulse_chain(std::span<const double> e) {
+  const std::size_t n = e.size();
+  if (n < 3) {
+    std::vector<std::size_t> all(n);
+    for (std::size_t i = 0; i < n; ++i) all[i] = i;
+    return all;
+  }
+  // State at edge j: (a, b) = edges skipped before j's predecessor i (i = j − a − 1)
+  // and before i's predecessor h (h = i − b − 1); kNone: no such pulse (chain start).
+  constexpr std::size_t kNone = kMaxSkipped, kS = kMaxSkipped + 1;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  auto at = [&](std::size_t j, std::size_t a, std::size_t b) { return (j * kS + a) * kS + b; };
+  std::vector<double> cost(n * kS * kS, kInf);
+  std::vector<std::uint8_t> back(n * kS * kS, 0);  // b of the predecessor state
+  // Cost of leaving edge m out, a hair less for an edge that follows its
+  // predecessor closely (g small): of an exact tie (a doubled mark on every
+  // turn) the second edge of each pair, the echo, goes. prefix[m]: edges 0 … m−1.
+  std::vector<double> prefix(n + 1, 0.0);
+  for (std::size_t m = 0; m < n; ++m) {
+    const double g = m == 0 || m + 1 == n ? 1.0 : (e[m] - e[m - 1]) / (e[m + 1] - e[m - 1]);
+    prefix[m + 1] = prefix[m] + kRemoveCost * (1 + kEchoPreference * g);
+  }
+  auto left_out = [&](std::size_t from, std::size_t to) { return prefix[to] - prefix[from]; };  // edges from … to−1
+  for (std::size_t j = 0; j < n; ++j) cost[at(j, kNone, kNone)] = left_out(0, j);
+
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t a = 0; a < kS; ++a)
+      for (std::size_t b = 0; b < kS; ++b) {
+        const double c = cost[at(j, a, b)];
+        if (c == kInf || (a == kNone && b != kNone)) continue;
+        for (std::size_t s = 0; s < kMaxSkipped && j + 1 + s < n; ++s) {
+          const std::size_t l = j + 1 + s;
+          double add = left_out(j + 1, l);
+          if (a != kNone) {
+            const std::size_t i = j - a - 1;
+            const double d = e[j] - e[i], r = e[l] - e[j];
+            if (b != kNone) {
+              const std::size_t h = i - b - 1;
+              add += period_cost(d, constant_acceleration_period(e[i] - e[h], r));
+            } else {
+              add += kBoundaryWeight * misfit_cost(d, r);
+            }
+          }
+          const std::size_t to = at(l, s, a);
+          if (c + add < cost[to]) cost[to] = c + add, back[to] = static_cast<std::uint8_t>(b);
+        }
+      }
+
+  // End: the last period counts with its one neighbour; edges after are left out.
+  double best = kInf;
+  std::size_t bj = 0, ba = kNone, bb = kNone;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t a = 0; a < kS; ++a)
+      for (std::size_t b = 0; b < kS; ++b) {
+        double c = cost[at(j, a, b)];
+        if (c == kInf) continue;
+        c += left_out(j + 1, n);
+        if (a != kNone && b != kNone) {
+          const std::size_t i = j - a - 1, h = i - b - 1;
+          c += kBoundaryWeight * misfit_cost(e[j] - e[i], e[i] - e[h]);
+        }
+        if (c < best) best = c, bj = j, ba = a, bb = b;
+      }
+  std::vector<std::size_t> chain{bj};
+  for (std::size_t j = bj, a = ba, b = bb; a != kNone;) {
+    const std::size_t i = j - a - 1, prev_b = back[at(j, a, b)];
+    chain.push_back(i);
+    j = i, a = b, b = prev_b;
+  }
+  return {chain.rbegin(), chain.rend()};
+}
+
+}  // namespace fourbar
