@@ -10,15 +10,20 @@
 
 namespace fourbar {
 
-EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds) {
+EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds,
+                         const LocalLevels* baseline) {
   const RecordingInfo& info = stream.reader.info();
   const auto channels = static_cast<std::size_t>(info.channels);
   const ChannelSpec& pulse = manifest.pulse_channel();
   const PulseInput input = pulse_input(manifest);
   EdgeDetector detector(thresholds, pulse.polarity, info.sample_rate_hz, info.start_time_s, pulse.debounce_s);
-  for_each_block(stream, AcquirePass::pulses, [&](std::span<const double> block, std::size_t frames, std::uint64_t) {
+  const bool detrend = thresholds.follows_baseline && baseline;
+  for_each_block(stream, AcquirePass::pulses, [&](std::span<const double> block, std::size_t frames,
+                                                  std::uint64_t first) {
     std::vector<double> volts(frames);
     for (std::size_t f = 0; f < frames; ++f) volts[f] = block[f * channels + input.index] * input.volts_per_unit;
+    if (detrend)
+      for (std::size_t f = 0; f < frames; ++f) volts[f] -= baseline->mid_at(first + f);
     detector.push(volts.data(), frames, 1);
   });
   EdgePassResult result{detector.edges(), detector.widths(), detector.debounced(), detector.mid_level()};

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "acquire/level_histogram.hpp"
+#include "acquire/local_levels.hpp"
 #include "acquire/manifest.hpp"
 #include "acquire/pulse_train.hpp"
 #include "acquire/streaming_pass.hpp"
@@ -27,7 +28,10 @@ struct EdgePassResult {
 
 /// Reads the recording once through the manifest's pulse channel. InputError
 /// when it never crosses the thresholds (no pulses).
-EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds);
+/// With `thresholds.follows_baseline`, the signal minus `baseline`'s local
+/// mid-level is what crosses them.
+EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds,
+                         const LocalLevels* baseline = nullptr);
 
 /// The cleaned pulse train of the edges. InputError naming the recording and
 /// the pulse channel when it holds fewer than two complete revolutions, or
