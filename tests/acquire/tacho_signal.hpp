@@ -81,4 +81,42 @@ inline TachoSignal tacho_signal(const SpeedLaw& law, double fs, double width_tur
   return s;
 }
 
+/// A pickup's analog faults on a 0/1 signal (levels 0 and 1, × swing_V).
+struct PickupFaults {
+  double swing_V = 5;
+  double overshoot = 0;     ///< ringing: second-order response with this overshoot (0.5: 50 %)
+  double ring_hz = 2000;    ///< its natural frequency
+  double drift_of_swing = 0;  ///< baseline ± half this × swing, a slow sine (1.5 cycles over the record)
+  double snr_db = 0;        ///< white noise, swing²/σ² in dB (0: none)
+  unsigned seed = 1;
+};
+
+inline std::vector<double> with_faults(const std::vector<double>& clean, double fs, const PickupFaults& f) {
+  std::vector<double> x(clean.size());
+  // Second-order low-pass step response, overshoot OS = exp(−πζ/√(1−ζ²)).
+  const double lnos = std::log(std::max(f.overshoot, 1e-9));
+  const double zeta = f.overshoot > 0 ? -lnos / std::sqrt(M_PI * M_PI + lnos * lnos) : 1.0;
+  const double wn = 2 * M_PI * f.ring_hz;
+  constexpr int kSub = 32;
+  const double dt = 1 / (fs * kSub);
+  double y = clean.empty() ? 0 : clean[0], v = 0;
+  std::mt19937_64 rng(f.seed);
+  std::normal_distribution<double> noise(0, f.snr_db > 0 ? std::pow(10.0, -f.snr_db / 20) : 0.0);
+  const double duration = static_cast<double>(clean.size()) / fs;
+  for (std::size_t i = 0; i < clean.size(); ++i) {
+    if (f.overshoot > 0) {
+      for (int k = 0; k < kSub; ++k) {  // semi-implicit Euler
+        v += dt * (wn * wn * (clean[i] - y) - 2 * zeta * wn * v);
+        y += dt * v;
+      }
+    } else {
+      y = clean[i];
+    }
+    const double t = static_cast<double>(i) / fs;
+    const double drift = 0.5 * f.drift_of_swing * std::sin(2 * M_PI * 1.5 * t / duration);
+    x[i] = f.swing_V * (y + drift + (f.snr_db > 0 ? noise(rng) : 0.0));
+  }
+  return x;
+}
+
 }  // namespace fourbar::testing
