@@ -43,9 +43,13 @@ std::vector<std::size_t> smoothest_pulse_chain(std::span<const double> e) {
   // and before i's predecessor h (h = i − b − 1); kNone: no such pulse (chain start).
   constexpr std::size_t kNone = kMaxSkipped, kS = kMaxSkipped + 1;
   constexpr double kInf = std::numeric_limits<double>::infinity();
+  // Costs of the states of the last kS edges (a ring: transitions reach at
+  // most kMaxSkipped edges ahead); the back pointers of all (1 byte each).
+  constexpr std::size_t kStates = kS * kS;
+  auto slot = [&](std::size_t j, std::size_t a, std::size_t b) { return ((j % kS) * kS + a) * kS + b; };
   auto at = [&](std::size_t j, std::size_t a, std::size_t b) { return (j * kS + a) * kS + b; };
-  std::vector<double> cost(n * kS * kS, kInf);
-  std::vector<std::uint8_t> back(n * kS * kS, 0);  // b of the predecessor state
+  std::vector<double> cost(kS * kStates, kInf);
+  std::vector<std::uint8_t> back(n * kStates, 0);  // b of the predecessor state
   // Cost of leaving edge m out, a hair less for an edge that follows its
   // predecessor closely (g small): of an exact tie (a doubled mark on every
   // turn) the second edge of each pair, the echo, goes. prefix[m]: edges 0 … m−1.
@@ -55,13 +59,32 @@ std::vector<std::size_t> smoothest_pulse_chain(std::span<const double> e) {
     prefix[m + 1] = prefix[m] + kRemoveCost * (1 + kEchoPreference * g);
   }
   auto left_out = [&](std::size_t from, std::size_t to) { return prefix[to] - prefix[from]; };  // edges from … to−1
-  for (std::size_t j = 0; j < n; ++j) cost[at(j, kNone, kNone)] = left_out(0, j);
+  auto fresh_row = [&](std::size_t j) {
+    std::fill_n(cost.begin() + static_cast<std::ptrdiff_t>((j % kS) * kStates), kStates, kInf);
+    cost[slot(j, kNone, kNone)] = left_out(0, j);  // the chain starts at j
+  };
+  for (std::size_t j = 0; j < kS && j < n; ++j) fresh_row(j);
 
-  for (std::size_t j = 0; j < n; ++j)
+  // Two states at one edge differ in what follows by at most the two
+  // period costs that involve their last two periods (each ≤ kMisfitCap) and
+  // the end term: a state dearer than the best by more cannot win (exact pruning).
+  constexpr double kPrune = (2 + kBoundaryWeight) * kMisfitCap;
+  double best = kInf;  // best complete chain, ended at an edge so far
+  std::size_t bj = 0, ba = kNone, bb = kNone;
+  for (std::size_t j = 0; j < n; ++j) {
+    double row_best = kInf;
+    for (std::size_t k = 0; k < kStates; ++k) row_best = std::min(row_best, cost[(j % kS) * kStates + k]);
     for (std::size_t a = 0; a < kS; ++a)
       for (std::size_t b = 0; b < kS; ++b) {
-        const double c = cost[at(j, a, b)];
-        if (c == kInf || (a == kNone && b != kNone)) continue;
+        const double c = cost[slot(j, a, b)];
+        if (c > row_best + kPrune || (a == kNone && b != kNone)) continue;
+        // End here: the last period counts with its one neighbour; edges after are left out.
+        double end = c + left_out(j + 1, n);
+        if (a != kNone && b != kNone) {
+          const std::size_t i = j - a - 1, h = i - b - 1;
+          end += kBoundaryWeight * misfit_cost(e[j] - e[i], e[i] - e[h]);
+        }
+        if (end < best) best = end, bj = j, ba = a, bb = b;
         for (std::size_t s = 0; s < kMaxSkipped && j + 1 + s < n; ++s) {
           const std::size_t l = j + 1 + s;
           double add = left_out(j + 1, l);
@@ -75,26 +98,12 @@ std::vector<std::size_t> smoothest_pulse_chain(std::span<const double> e) {
               add += kBoundaryWeight * misfit_cost(d, r);
             }
           }
-          const std::size_t to = at(l, s, a);
-          if (c + add < cost[to]) cost[to] = c + add, back[to] = static_cast<std::uint8_t>(b);
+          if (c + add < cost[slot(l, s, a)]) cost[slot(l, s, a)] = c + add, back[at(l, s, a)] = static_cast<std::uint8_t>(b);
         }
       }
+    if (j + kS < n) fresh_row(j + kS);
+  }
 
-  // End: the last period counts with its one neighbour; edges after are left out.
-  double best = kInf;
-  std::size_t bj = 0, ba = kNone, bb = kNone;
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t a = 0; a < kS; ++a)
-      for (std::size_t b = 0; b < kS; ++b) {
-        double c = cost[at(j, a, b)];
-        if (c == kInf) continue;
-        c += left_out(j + 1, n);
-        if (a != kNone && b != kNone) {
-          const std::size_t i = j - a - 1, h = i - b - 1;
-          c += kBoundaryWeight * misfit_cost(e[j] - e[i], e[i] - e[h]);
-        }
-        if (c < best) best = c, bj = j, ba = a, bb = b;
-      }
   std::vector<std::size_t> chain{bj};
   for (std::size_t j = bj, a = ba, b = bb; a != kNone;) {
     const std::size_t i = j - a - 1, prev_b = back[at(j, a, b)];
