@@ -49,7 +49,9 @@ std::vector<std::size_t> smoothest_pulse_chain(std::span<const double> e) {
   auto slot = [&](std::size_t j, std::size_t a, std::size_t b) { return ((j % kS) * kS + a) * kS + b; };
   auto at = [&](std::size_t j, std::size_t a, std::size_t b) { return (j * kS + a) * kS + b; };
   std::vector<double> cost(kS * kStates, kInf);
-  std::vector<std::uint8_t> back(n * kStates, 0);  // b of the predecessor state
+  // Per state, b of the predecessor state; for (j, none, none) 0 (the chain
+  // starts at j) or 1 + the state the break came from, (s·kS + a)·kS + b.
+  std::vector<std::uint8_t> back(n * kStates, 0);
   // Cost of leaving edge m out, a hair less for an edge that follows its
   // predecessor closely (g small): of an exact tie (a doubled mark on every
   // turn) the second edge of each pair, the echo, goes. prefix[m]: edges 0 … m−1.
@@ -99,16 +101,32 @@ std::vector<std::size_t> smoothest_pulse_chain(std::span<const double> e) {
             }
           }
           if (c + add < cost[slot(l, s, a)]) cost[slot(l, s, a)] = c + add, back[at(l, s, a)] = static_cast<std::uint8_t>(b);
+          // Or a break after j: the period to l judges nothing, the chain goes on from l.
+          double brk = left_out(j + 1, l) + kBreakCost;
+          if (a != kNone && b != kNone) {
+            const std::size_t i = j - a - 1, h = i - b - 1;
+            brk += kBoundaryWeight * misfit_cost(e[j] - e[i], e[i] - e[h]);
+          }
+          if (c + brk < cost[slot(l, kNone, kNone)])
+            cost[slot(l, kNone, kNone)] = c + brk,
+            back[at(l, kNone, kNone)] = static_cast<std::uint8_t>(1 + (s * kS + a) * kS + b);
         }
       }
     if (j + kS < n) fresh_row(j + kS);
   }
 
-  std::vector<std::size_t> chain{bj};
-  for (std::size_t j = bj, a = ba, b = bb; a != kNone;) {
-    const std::size_t i = j - a - 1, prev_b = back[at(j, a, b)];
-    chain.push_back(i);
-    j = i, a = b, b = prev_b;
+  std::vector<std::size_t> chain;
+  for (std::size_t j = bj, a = ba, b = bb;;) {
+    chain.push_back(j);
+    if (a != kNone) {
+      const std::size_t prev_b = back[at(j, a, b)];
+      j = j - a - 1, a = b, b = prev_b;
+      continue;
+    }
+    const std::size_t code = back[at(j, kNone, kNone)];  // 0: the chain starts here; else a break
+    if (code == 0) break;
+    const std::size_t c = code - 1;
+    j = j - c / (kS * kS) - 1, a = (c / kS) % kS, b = c % kS;
   }
   return {chain.rbegin(), chain.rend()};
 }

@@ -9,8 +9,8 @@
 // 1/d² is the mean of 1/a² and 1/b²: a run-up from standstill (periods
 // 1 : 0.41 : 0.32 …) fits it as well as steady running. The misfit of d is
 // ln(d / reference); the chain minimises Σ min(misfit², kMisfitCap) + kRemoveCost · (edges left
-// out), found exactly by dynamic programming over the last three chosen edges
-// (at most kMaxSkipped edges between two pulses).
+// out + kBreakCost · (breaks), found exactly by dynamic programming over the
+// last three chosen edges (at most kMaxSkipped edges between two pulses).
 //
 // What that does: an echo or a bounce a little after a pulse, noise before
 // it, a doubled mark on every turn split a period into two very unequal
@@ -38,6 +38,11 @@ inline constexpr double kMisfitCap = 1.0;
 /// (pulse_train.hpp).
 inline constexpr int kMaxMissedTurns = 5;
 inline constexpr double kMissedCost = 0.3;
+/// Cost of breaking the chain (the period across the break judges nothing
+/// and is no neighbour): a stall or a run of lost pulses longer than
+/// kMaxMissedTurns does not make the pulses between two of them look
+/// spurious. Whether a long period is a gap is decided afterwards.
+inline constexpr double kBreakCost = 1.0;
 /// Weight of the misfit² of the chain's first and last period (one neighbour).
 inline constexpr double kBoundaryWeight = 0.25;
 /// At most this many consecutive edges are left out between two pulses.

@@ -72,20 +72,35 @@ double extrapolated_period(double d1, double d2) {
   return q > 0.25 / (d1 * d1) ? 1 / std::sqrt(q) : 2 * d1;
 }
 
-/// What period k of `d` should be from its neighbours: the constant-
-/// acceleration period between them when they agree within kNeighboursApart;
-/// else (one of them out of line, or a chain end) the trend of the side it
-/// fits best. NaN for a single period.
-double reference_period(const std::vector<double>& d, std::size_t k) {
-  const bool left = k >= 1, right = k + 1 < d.size();
+/// Periods longer than e^kPeriodOutlier times a neighbour: possibly a stall
+/// or lost pulses, so no reference for the periods beside them.
+std::vector<bool> long_periods(const std::vector<double>& d) {
+  std::vector<bool> suspect(d.size(), false);
+  const double ratio = std::exp(kPeriodOutlier);
+  for (std::size_t k = 0; k < d.size(); ++k)
+    suspect[k] = (k >= 1 && d[k] > ratio * d[k - 1]) || (k + 1 < d.size() && d[k] > ratio * d[k + 1]);
+  return suspect;
+}
+
+/// What period k of `d` should be from its neighbours (those not `suspect`,
+/// if any):
+/// the constant-acceleration period between them when they agree within
+/// kNeighboursApart; else (one of them out of line, or a chain end) the trend
+/// of the side it fits best. NaN with no usable neighbour.
+double reference_period(const std::vector<double>& d, const std::vector<bool>& suspect, std::size_t k) {
+  // Neighbours that are long themselves are skipped, unless both are (a
+  // period between two long ones is judged against them).
+  const bool all_long = (k < 1 || suspect[k - 1]) && (k + 1 >= d.size() || suspect[k + 1]);
+  auto usable = [&](std::size_t m, bool exists) { return exists && (all_long || !suspect[m]); };
+  const bool left = usable(k - 1, k >= 1), right = usable(k + 1, k + 1 < d.size());
   if (left && right && std::abs(std::log(d[k - 1] / d[k + 1])) <= kNeighboursApart)
     return constant_acceleration_period(d[k - 1], d[k + 1]);
   double best = NAN;
   auto consider = [&](double ref) {
     if (std::isnan(best) || std::abs(std::log(d[k] / ref)) < std::abs(std::log(d[k] / best))) best = ref;
   };
-  if (left) consider(k >= 2 ? extrapolated_period(d[k - 1], d[k - 2]) : d[k - 1]);
-  if (right) consider(k + 2 < d.size() ? extrapolated_period(d[k + 1], d[k + 2]) : d[k + 1]);
+  if (left) consider(usable(k - 2, k >= 2) ? extrapolated_period(d[k - 1], d[k - 2]) : d[k - 1]);
+  if (right) consider(usable(k + 2, k + 2 < d.size()) ? extrapolated_period(d[k + 1], d[k + 2]) : d[k + 1]);
   return best;
 }
 
@@ -157,6 +172,7 @@ PulseTrain clean_pulse_train(std::span<const double> e, const PulseTrainOptions&
   }
   std::vector<double> d;
   for (std::size_t c = 0; c + 1 < chain.size(); ++c) d.push_back(e[chain[c + 1]] - e[chain[c]]);
+  const std::vector<bool> suspect = long_periods(d);
   auto width_of = [&](std::size_t edge) { return edge < widths_s.size() ? widths_s[edge] : NAN; };
 
   std::vector<double> normal_periods;
@@ -185,9 +201,12 @@ PulseTrain clean_pulse_train(std::span<const double> e, const PulseTrainOptions&
   };
   if (!chain.empty()) segment.push_back({e[chain[0]], false}), widths.push_back(width_of(chain[0]));
   for (std::size_t k = 0; k < d.size(); ++k) {
-    const double ref = reference_period(d, k);
+    const double ref = reference_period(d, suspect, k);
     const double next_s = e[chain[k + 1]];
-    const bool normal = std::isnan(ref) || std::abs(std::log(d[k] / ref)) <= kPeriodOutlier;
+    // Only a long period breaks the train: a short one the chain kept is
+    // smoother kept than left out (a speed change), and a sustained halving
+    // is checked below (find_period_steps).
+    const bool normal = std::isnan(ref) || std::log(d[k] / ref) <= kPeriodOutlier;
     const int missed = normal ? 0 : missed_pulses(d, k, opt);
     if (!normal && missed == 0) {
       train.gaps.push_back({segment.back().time_s, next_s, d[k] / ref});

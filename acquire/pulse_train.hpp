@@ -9,8 +9,8 @@
 //     start-up or global period. Edges left out are spurious (removed_s).
 //   • Each period of the chain is then checked against its neighbours (the
 //     period constant acceleration predicts from both sides, or the trend of
-//     one side where the other is itself out of line). Within
-//     kPeriodOutlier (in ln) it is one revolution. Beyond it, between steady
+//     one side where the other is itself long). Up to e^kPeriodOutlier
+//     times the reference it is one revolution. Longer, between steady
 //     neighbours and within `tolerance` of k = 2 … max_missing + 1 of their
 //     period, k − 1 pulses were missed: they are inserted at the times a
 //     cubic through the neighbouring pulses predicts. Anything else (a stall,
@@ -37,7 +37,7 @@ struct PulseTrainOptions {
   int max_missing = 4;      ///< longest run of missing pulses that is repaired
 };
 
-/// |ln(period / its neighbours' reference)| beyond which a period is not one
+/// ln(period / its neighbours' reference) beyond which a period is not one
 /// revolution of a continuous speed history (a missed pulse, a stall).
 inline constexpr double kPeriodOutlier = 0.35;
 
