@@ -8,10 +8,11 @@
 namespace fourbar {
 
 LocalLevels::LocalLevels(double sample_rate_hz)
-    : window_samples_(std::max<std::uint64_t>(64, static_cast<std::uint64_t>(kLocalLevelWindow_s * sample_rate_hz))) {}
+    : window_samples_(std::max<std::uint64_t>(64, static_cast<std::uint64_t>(kLocalLevelWindow_s * sample_rate_hz))),
+      stride_(std::max<std::uint64_t>(1, static_cast<std::uint64_t>(sample_rate_hz / kLocalLevelMinRate_hz))) {}
 
 void LocalLevels::add(double v) {
-  current_.add(v);
+  if (--until_next_ == 0) current_.add(v), until_next_ = stride_;
   if (++n_ - window_start_ == window_samples_) close_window();
 }
 
@@ -30,6 +31,7 @@ void LocalLevels::close_window() {
   }
   current_ = LevelHistogram(256);
   window_start_ = n_;
+  until_next_ = 1;
 }
 
 std::optional<LocalLevels::Summary> LocalLevels::summary() const {

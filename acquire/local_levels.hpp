@@ -19,6 +19,10 @@ namespace fourbar {
 /// Window of the local levels (s): a few periods at working speed, short
 /// against a drifting baseline.
 inline constexpr double kLocalLevelWindow_s = 0.5;
+/// The local levels look at one sample in every stride, the stride the
+/// largest that keeps at least this rate (a 0.4 ms pulse still gives two
+/// samples): a quarter of the scan pass's time at 25.6 kHz otherwise.
+inline constexpr double kLocalLevelMinRate_hz = 5000;
 /// Local mid-levels wandering more than this fraction of the swing make
 /// acquire follow them (below it the global levels are used unchanged).
 inline constexpr double kBaselineWanderOfSwing = 0.1;
@@ -27,7 +31,8 @@ class LocalLevels {
  public:
   explicit LocalLevels(double sample_rate_hz);
   void add(double v);
-  /// Closes the last window; call once after the last add.
+  /// Closes the last window; call once after the last add. Every sample is
+  /// given to add (the window counts them); one in `stride` is looked at.
   void finish();
 
   struct Window {
@@ -52,9 +57,9 @@ class LocalLevels {
 
  private:
   void close_window();
-  std::uint64_t window_samples_;
+  std::uint64_t window_samples_, stride_;
   LevelHistogram current_{256};
-  std::uint64_t n_ = 0, window_start_ = 0;
+  std::uint64_t n_ = 0, window_start_ = 0, until_next_ = 1;  // samples to the next one looked at
   std::vector<Window> windows_;
   mutable std::size_t cursor_ = 0;  // mid_at is called with increasing indices
 };
