@@ -79,15 +79,16 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   clock.lap(AcquirePass::scan);
   report.channel_stats = std::move(scan.channel_stats);
   report.pulse_stats = scan.pulse_stats;
-  ThresholdChoice thresholds = pulse_thresholds(scan.pulse_histogram, scan.pulse_stats, manifest, info.file);
+  ThresholdChoice thresholds = pulse_thresholds(scan.pulse_histogram, scan.pulse_stats, manifest, info.file,
+                                                &scan.pulse_local);
   report.thresholds = thresholds.thresholds;
   append(report.warnings, std::move(thresholds.warnings));
 
-  const EdgePassResult edges = edge_pass(stream, manifest, report.thresholds);
+  const EdgePassResult edges = edge_pass(stream, manifest, report.thresholds, &scan.pulse_local);
   clock.lap(AcquirePass::pulses);
   report.edges_debounced = edges.edges_debounced;
   report.edge_level_V = edges.edge_level_V;
-  report.pulses = pulse_train_from_edges(edges.edges_s, options.pulses, manifest, info.file);
+  report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
   report.revolutions = report.pulses.revolutions();
 
   RevolutionSchedule schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);

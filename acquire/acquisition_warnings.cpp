@@ -33,6 +33,12 @@ void pulse_train_warnings(const PulseTrain& train, std::vector<std::string>& war
     warnings.push_back("pulse train broken between " + format_number(g.from_s) + " s and " + format_number(g.to_s) +
                        " s (" + format_number(g.periods, 3) + " periods, no whole number): about " +
                        std::to_string(revolutions_lost(g)) + " revolutions dropped");
+  for (const auto& st : train.steps)
+    if (st.resolved)
+      warnings.push_back("crank speed changed twofold within a turn after " + format_number(st.time_s) +
+                         " s (period " + format_number(st.period_before_s * 1e3, 3) + " → " +
+                         format_number(st.period_after_s * 1e3, 3) +
+                         " ms; the pulse widths scale with it, so the pulses are real)");
   if (!train.orphan_s.empty())
     warnings.push_back(std::to_string(train.orphan_s.size()) +
                        " isolated pulses without a neighbour one period away, at " + time_list(train.orphan_s));

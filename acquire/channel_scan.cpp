@@ -48,6 +48,7 @@ ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInp
   std::vector<Accumulator> acc(accelerometers.size());
   Accumulator pulse_acc;
   ScanResult result;
+  result.pulse_local = LocalLevels(fs);
   for_each_block(stream, AcquirePass::scan, [&](std::span<const double> block, std::size_t frames,
                                                 std::uint64_t first) {
     for (std::size_t f = 0; f < frames; ++f) {
@@ -61,8 +62,10 @@ ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInp
       const double v = frame[pulse.index] * pulse.volts_per_unit;
       pulse_acc.add(v);
       result.pulse_histogram.add(v);
+      result.pulse_local.add(v);
     }
   });
+  result.pulse_local.finish();
   for (const auto& a : acc) result.channel_stats.push_back(a.stats());
   result.pulse_stats = pulse_acc.stats();
   return result;

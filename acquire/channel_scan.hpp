@@ -1,7 +1,7 @@
 #pragma once
 // Pass 1 of acquire: one read of the whole recording for each accelerometer's
 // statistics and clipped samples, the check that every value of every channel
-// is finite, and the pulse channel's statistics and level histogram (from
+// is finite, and the pulse channel's statistics and level histogram and local levels (from
 // which pulse_thresholds.hpp sets the Schmitt thresholds).
 
 #include <cstdint>
@@ -10,6 +10,7 @@
 
 #include "acquire/channel_inputs.hpp"
 #include "acquire/level_histogram.hpp"
+#include "acquire/local_levels.hpp"
 #include "acquire/streaming_pass.hpp"
 
 namespace fourbar {
@@ -25,6 +26,7 @@ struct ScanResult {
   std::vector<ChannelStats> channel_stats;  ///< per accelerometer, as `accelerometers`
   ChannelStats pulse_stats;                 ///< volts
   LevelHistogram pulse_histogram;           ///< volts
+  LocalLevels pulse_local{1.0};             ///< volts, window by window
 };
 
 /// Reads the recording once. InputError naming the channel, frame and time

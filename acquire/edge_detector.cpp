@@ -42,6 +42,8 @@ void EdgeDetector::push(const double* data, std::size_t frames, std::size_t stri
     }
     if (!armed_) {
       armed_ = s < arm_;
+      if (armed_ && !ramps_.empty() && std::isnan(widths_.back()))
+        widths_.back() = static_cast<double>(n_ - last_fire_) / sample_rate_hz_;
     } else if (s > fire_) {
       armed_ = false;
       const Ramp r = edge_ramp(n_);
@@ -50,6 +52,8 @@ void EdgeDetector::push(const double* data, std::size_t frames, std::size_t stri
         ++debounced_;
       } else {
         ramps_.push_back(r);
+        widths_.push_back(NAN);
+        last_fire_ = n_;
         last_time_ = t;
       }
     }

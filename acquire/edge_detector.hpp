@@ -31,6 +31,9 @@ class EdgeDetector {
   /// The refined mid-level (volts; between the levels, or the thresholds'
   /// middle when the levels are unknown).
   double mid_level() const;
+  /// Each edge's pulse width (s): from the edge to the sample where the signal
+  /// is back beyond the arming threshold; NaN when the recording ends first.
+  const std::vector<double>& widths() const { return widths_; }
   /// Edges dropped because they followed the previous one within the debounce time.
   std::size_t debounced() const { return debounced_; }
 
@@ -48,6 +51,8 @@ class EdgeDetector {
   std::uint64_t n_ = 0;  // samples seen
   bool armed_ = false;
   std::vector<Ramp> ramps_;
+  std::vector<double> widths_;
+  std::uint64_t last_fire_ = 0;  // sample index at which the last kept edge fired
   double last_time_ = -1e300;
   std::size_t debounced_ = 0;
   // Level refinement (in s = sign·x): sums of the samples near each level.

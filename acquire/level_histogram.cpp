@@ -93,10 +93,14 @@ std::optional<LevelHistogram::Levels> LevelHistogram::two_levels() const {
 std::optional<PulseThresholds> automatic_thresholds(const LevelHistogram& histogram) {
   const auto levels = histogram.two_levels();
   if (!levels) return std::nullopt;
+  return thresholds_between(levels->low.median, levels->high.median, std::max(levels->low.noise, levels->high.noise));
+}
+
+std::optional<PulseThresholds> thresholds_between(double bottom_level, double top_level, double noise) {
   PulseThresholds t;
-  t.bottom_level = levels->low.median;
-  t.top_level = levels->high.median;
-  t.noise = std::max(levels->low.noise, levels->high.noise);
+  t.bottom_level = bottom_level;
+  t.top_level = top_level;
+  t.noise = noise;
   const double swing = t.top_level - t.bottom_level;
   if (!(swing > 0) || swing < kLevelsMinSwingNoiseSigmas * t.noise) return std::nullopt;
   const double mid = 0.5 * (t.bottom_level + t.top_level);

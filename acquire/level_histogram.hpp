@@ -47,6 +47,9 @@ struct PulseThresholds {
   double noise = 0;                        ///< robust noise estimate of the levels
   bool automatic = true;
   bool hysteresis_widened = false;         ///< automatic, and the band was widened for the noise
+  /// Automatic on a wandering baseline: levels and thresholds are relative
+  /// to the local mid-level (local_levels.hpp), which the detector subtracts.
+  bool follows_baseline = false;
 };
 
 // The automatic hysteresis band: half of it on each side of mid-level.
@@ -65,5 +68,8 @@ inline constexpr double kLevelsMinSwingNoiseSigmas = 6.0;
 /// that decides it). Returns nullopt when the signal has no two distinct
 /// levels (swing under kLevelsMinSwingNoiseSigmas noise σ): no pulses.
 std::optional<PulseThresholds> automatic_thresholds(const LevelHistogram& histogram);
+
+/// The same rule for given levels and noise (nullopt: no two distinct levels).
+std::optional<PulseThresholds> thresholds_between(double bottom_level, double top_level, double noise);
 
 }  // namespace fourbar

@@ -10,18 +10,23 @@
 
 namespace fourbar {
 
-EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds) {
+EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds,
+                         const LocalLevels* baseline) {
   const RecordingInfo& info = stream.reader.info();
   const auto channels = static_cast<std::size_t>(info.channels);
   const ChannelSpec& pulse = manifest.pulse_channel();
   const PulseInput input = pulse_input(manifest);
   EdgeDetector detector(thresholds, pulse.polarity, info.sample_rate_hz, info.start_time_s, pulse.debounce_s);
-  for_each_block(stream, AcquirePass::pulses, [&](std::span<const double> block, std::size_t frames, std::uint64_t) {
+  const bool detrend = thresholds.follows_baseline && baseline;
+  for_each_block(stream, AcquirePass::pulses, [&](std::span<const double> block, std::size_t frames,
+                                                  std::uint64_t first) {
     std::vector<double> volts(frames);
     for (std::size_t f = 0; f < frames; ++f) volts[f] = block[f * channels + input.index] * input.volts_per_unit;
+    if (detrend)
+      for (std::size_t f = 0; f < frames; ++f) volts[f] -= baseline->mid_at(first + f);
     detector.push(volts.data(), frames, 1);
   });
-  EdgePassResult result{detector.edges(), detector.debounced(), detector.mid_level()};
+  EdgePassResult result{detector.edges(), detector.widths(), detector.debounced(), detector.mid_level()};
   if (result.edges_s.empty())
     throw InputError(info.file.string() + ": no crank pulses: " + pulse_channel_label(pulse) + " never crosses from " +
                      format_number(thresholds.low) + " V to " + format_number(thresholds.high) + " V (" +
@@ -30,13 +35,45 @@ EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, co
   return result;
 }
 
-PulseTrain pulse_train_from_edges(std::span<const double> edges_s, const PulseTrainOptions& options,
+namespace {
+
+std::string ms(double s) { return format_number(s * 1e3, 3) + " ms"; }
+
+/// What a twofold period step is, and how the manifest settles it.
+std::string ambiguous_step_message(const PeriodStep& step, const Manifest& manifest) {
+  const ChannelSpec& pulse = manifest.pulse_channel();
+  const bool halves = step.period_after_s < step.period_before_s;
+  std::string widths = std::isfinite(step.width_before_s) && std::isfinite(step.width_after_s)
+                           ? "the pulse widths (" + ms(step.width_before_s) + " before, " + ms(step.width_after_s) +
+                                 " after) do not scale with the period"
+                           : "the pulse widths are unknown";
+  std::string s = "the crank pulse period " + std::string(halves ? "halves" : "doubles") + " abruptly after " +
+                  format_number(step.time_s) + " s (from " + ms(step.period_before_s) + " to " +
+                  ms(step.period_after_s) + ") and stays; ";
+  if (halves)
+    return s + "either the crank sped up twofold within a turn or every pulse from there on has a second edge " +
+           ms(step.period_after_s) + " after it (an echo, a second mark), and " + widths +
+           "; if those edges are spurious set debounce_ms = " +
+           format_number(0.75 * step.period_after_s * 1e3, 3) + " for " + pulse_channel_label(pulse) + " in " +
+           manifest.file.string() + ", if the speed really changed cut the recording there";
+  return s + "either the crank slowed twofold within a turn or every other pulse is lost from there on, and " + widths +
+         "; check the pickup and threshold_low_V/threshold_high_V for " + pulse_channel_label(pulse) + " in " +
+         manifest.file.string() + ", or cut the recording there";
+}
+
+}  // namespace
+
+PulseTrain pulse_train_from_edges(const EdgePassResult& edges, const PulseTrainOptions& options,
                                   const Manifest& manifest, const std::filesystem::path& recording_file) {
-  PulseTrain train = clean_pulse_train(edges_s, options);
+  PulseTrain train = clean_pulse_train(edges.edges_s, options, edges.widths_s);
+  const auto ambiguous = train.ambiguous();
+  if (!ambiguous.empty())
+    throw InputError(recording_file.string() + ": " + ambiguous_step_message(ambiguous.front(), manifest) +
+                     (ambiguous.size() > 1 ? " (" + std::to_string(ambiguous.size()) + " such steps)" : ""));
   const std::size_t revolutions = train.revolutions();
   if (revolutions < 2)
     throw InputError(recording_file.string() + ": " + std::to_string(revolutions) + " complete revolution" +
-                     (revolutions == 1 ? "" : "s") + " between the " + std::to_string(edges_s.size()) +
+                     (revolutions == 1 ? "" : "s") + " between the " + std::to_string(edges.edges_s.size()) +
                      " crank pulse edges of " + pulse_channel_label(manifest.pulse_channel()) +
                      "; need at least 2: record longer or check the pulse channel");
   return train;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "acquire/level_histogram.hpp"
+#include "acquire/local_levels.hpp"
 #include "acquire/manifest.hpp"
 #include "acquire/pulse_train.hpp"
 #include "acquire/streaming_pass.hpp"
@@ -20,17 +21,24 @@ namespace fourbar {
 
 struct EdgePassResult {
   std::vector<double> edges_s;      ///< edge times (recording time), increasing
+  std::vector<double> widths_s;     ///< pulse width after each edge (NaN: the recording ended in it)
   std::size_t edges_debounced = 0;  ///< dropped within the debounce time
   double edge_level_V = 0;          ///< refined mid-level at which edge times are taken
 };
 
 /// Reads the recording once through the manifest's pulse channel. InputError
 /// when it never crosses the thresholds (no pulses).
-EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds);
+/// With `thresholds.follows_baseline`, the signal minus `baseline`'s local
+/// mid-level is what crosses them.
+EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, const PulseThresholds& thresholds,
+                         const LocalLevels* baseline = nullptr);
 
-/// The cleaned pulse train of `edges_s`. InputError naming the recording and
-/// the pulse channel when it holds fewer than two complete revolutions.
-PulseTrain pulse_train_from_edges(std::span<const double> edges_s, const PulseTrainOptions& options,
+/// The cleaned pulse train of the edges. InputError naming the recording and
+/// the pulse channel when it holds fewer than two complete revolutions, or
+/// when its period halves or doubles abruptly and the pulse widths cannot
+/// tell a real speed change from echoes or lost pulses (what was seen, and
+/// the manifest key that settles it).
+PulseTrain pulse_train_from_edges(const EdgePassResult& edges, const PulseTrainOptions& options,
                                   const Manifest& manifest, const std::filesystem::path& recording_file);
 
 /// Estimated whole revolutions lost in a gap of the pulse train (at least one).

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 
+#include "acquire/pulse_chain.hpp"
 #include "common/statistics.hpp"
 
 namespace fourbar {
@@ -18,24 +18,6 @@ std::size_t pairs_at(std::span<const double> e, double c) {
     score += it != e.end() && *it <= e[i] + 1.1 * c;
   }
   return score;
-}
-
-/// The next period from the recent ones: least-squares line through them,
-/// extrapolated one step; their median if there are too few or the line
-/// strays more than 30 % from the last period (an outlier among them).
-double predict_period(const std::deque<double>& recent) {
-  const double med = median({recent.begin(), recent.end()});
-  const std::size_t n = recent.size();
-  if (n < 3) return med;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = static_cast<double>(i);
-    sx += x, sy += recent[i], sxx += x * x, sxy += x * recent[i];
-  }
-  const double dn = static_cast<double>(n);
-  const double b = (dn * sxy - sx * sy) / (dn * sxx - sx * sx), a = (sy - b * sx) / dn;
-  const double next = a + b * dn;
-  return std::abs(next / recent.back() - 1) < 0.3 ? next : med;
 }
 
 /// Lagrange interpolation of time against pulse number through `known`.
@@ -74,87 +56,131 @@ double dominant_period(std::span<const double> e) {
   return candidates.back();
 }
 
-PulseTrain clean_pulse_train(std::span<const double> e, const PulseTrainOptions& opt) {
-  PulseTrain train;
-  train.edges = e.size();
-  const std::size_t n = e.size();
-  const double tol = opt.tolerance;
-  constexpr std::size_t kWindow = 32;  // edges used to (re)start the period estimate
-  std::vector<double> normal_periods;
+namespace {
 
-  std::size_t i = 0;
-  while (i < n) {
-    // Start a segment: the period from the edges ahead, then the first edge
-    // that has a partner one period later.
-    double period = dominant_period(e.subspan(i, std::min(kWindow, n - i)));
-    if (period <= 0) {
-      for (; i < n; ++i) train.orphan_s.push_back(e[i]);
+/// Neighbours further apart than this factor do not describe one speed trend.
+const double kNeighboursApart = std::log(1.9);
+/// Neighbours of a missed pulse agree within this (ln): steady running.
+constexpr double kSteadyForRepair = 0.2;
+
+/// The next period from the two before it (d1 nearer), at the constant
+/// acceleration they show (ω² linear in angle); a trend towards standstill
+/// is capped at twice the nearer period.
+double extrapolated_period(double d1, double d2) {
+  if (std::abs(std::log(d1 / d2)) > kNeighboursApart) return d1;
+  const double q = 2 / (d1 * d1) - 1 / (d2 * d2);
+  return q > 0.25 / (d1 * d1) ? 1 / std::sqrt(q) : 2 * d1;
+}
+
+/// Periods longer than e^kPeriodOutlier times a neighbour: possibly a stall
+/// or lost pulses, so no reference for the periods beside them.
+std::vector<bool> long_periods(const std::vector<double>& d) {
+  std::vector<bool> suspect(d.size(), false);
+  const double ratio = std::exp(kPeriodOutlier);
+  for (std::size_t k = 0; k < d.size(); ++k)
+    suspect[k] = (k >= 1 && d[k] > ratio * d[k - 1]) || (k + 1 < d.size() && d[k] > ratio * d[k + 1]);
+  return suspect;
+}
+
+/// What period k of `d` should be from its neighbours (those not `suspect`,
+/// if any):
+/// the constant-acceleration period between them when they agree within
+/// kNeighboursApart; else (one of them out of line, or a chain end) the trend
+/// of the side it fits best. NaN with no usable neighbour.
+double reference_period(const std::vector<double>& d, const std::vector<bool>& suspect, std::size_t k) {
+  // Neighbours that are long themselves are skipped, unless both are (a
+  // period between two long ones is judged against them).
+  const bool all_long = (k < 1 || suspect[k - 1]) && (k + 1 >= d.size() || suspect[k + 1]);
+  auto usable = [&](std::size_t m, bool exists) { return exists && (all_long || !suspect[m]); };
+  const bool left = usable(k - 1, k >= 1), right = usable(k + 1, k + 1 < d.size());
+  if (left && right && std::abs(std::log(d[k - 1] / d[k + 1])) <= kNeighboursApart)
+    return constant_acceleration_period(d[k - 1], d[k + 1]);
+  double best = NAN;
+  auto consider = [&](double ref) {
+    if (std::isnan(best) || std::abs(std::log(d[k] / ref)) < std::abs(std::log(d[k] / best))) best = ref;
+  };
+  if (left) consider(usable(k - 2, k >= 2) ? extrapolated_period(d[k - 1], d[k - 2]) : d[k - 1]);
+  if (right) consider(usable(k + 2, k + 2 < d.size()) ? extrapolated_period(d[k + 1], d[k + 2]) : d[k + 1]);
+  return best;
+}
+
+/// Missed pulses in period k: its steady neighbours' period fits k_missed + 1
+/// times (0 when not).
+int missed_pulses(const std::vector<double>& d, std::size_t k, const PulseTrainOptions& opt) {
+  if (k < 1 || k + 1 >= d.size() || std::abs(std::log(d[k - 1] / d[k + 1])) > kSteadyForRepair) return 0;
+  const double r = d[k] / std::sqrt(d[k - 1] * d[k + 1]);
+  const double whole = std::round(r);
+  if (whole < 2 || whole > opt.max_missing + 1 || std::abs(r - whole) > opt.tolerance) return 0;
+  return static_cast<int>(whole) - 1;
+}
+
+/// Twofold period steps between steady runs of three periods in a segment.
+void find_period_steps(const std::vector<Pulse>& seg, const std::vector<double>& widths, PulseTrain& train) {
+  constexpr std::size_t kRun = 3;
+  constexpr double kSteadyRun = 1.15, kDutyAgree = 1.4;
+  if (seg.size() < 2 * kRun + 1) return;
+  std::vector<double> d(seg.size() - 1);
+  for (std::size_t k = 0; k < d.size(); ++k) d[k] = seg[k + 1].time_s - seg[k].time_s;
+  auto steady = [&](std::size_t from) {
+    const auto [lo, hi] = std::minmax_element(d.begin() + static_cast<std::ptrdiff_t>(from),
+                                              d.begin() + static_cast<std::ptrdiff_t>(from + kRun));
+    return *hi <= kSteadyRun * *lo;
+  };
+  auto run_median = [&](std::size_t from) { return median({d.begin() + static_cast<std::ptrdiff_t>(from),
+                                                            d.begin() + static_cast<std::ptrdiff_t>(from + kRun)}); };
+  // Median pulse width as a fraction of its period over a run (NaN if unknown).
+  auto duty = [&](std::size_t from) {
+    std::vector<double> f;
+    for (std::size_t k = from; k < from + kRun; ++k)
+      if (std::isfinite(widths[k])) f.push_back(widths[k] / d[k]);
+    return f.size() == kRun ? median(f) : NAN;
+  };
+  for (std::size_t k = kRun; k + kRun <= d.size(); ++k) {
+    if (!steady(k - kRun)) continue;
+    for (std::size_t after : {k, k + 1}) {  // with no period or one period of transition
+      if (after + kRun > d.size() || !steady(after)) continue;
+      const double before_s = run_median(k - kRun), after_s = run_median(after);
+      const double ratio = after_s / before_s;
+      if (!(ratio >= 0.4 && ratio <= 0.625) && !(ratio >= 1.6 && ratio <= 2.5)) continue;
+      PeriodStep step{seg[k].time_s, before_s, after_s};
+      const double duty_before = duty(k - kRun), duty_after = duty(after);
+      step.width_before_s = duty_before * before_s, step.width_after_s = duty_after * after_s;
+      step.resolved = duty_before > 0 && duty_after > 0 && std::max(duty_before / duty_after, duty_after / duty_before) <= kDutyAgree;
+      train.steps.push_back(step);
+      k = after + kRun - 1;  // one finding per step
       break;
     }
-    auto partner = [&](std::size_t from, double p) {
-      auto it = std::lower_bound(e.begin() + static_cast<std::ptrdiff_t>(from) + 1, e.end(), e[from] + (1 - tol) * p);
-      return it != e.end() && *it <= e[from] + (1 + tol) * p;
-    };
-    while (i < n && !partner(i, period)) train.removed_s.push_back(e[i++]);
-    if (i >= n) break;
+  }
+}
 
-    std::vector<Pulse> segment{{e[i], false}};
-    std::deque<double> recent;
-    ++i;
-    for (;;) {
-      const double last = segment.back().time_s;
-      // Edges within half a period of the last pulse are echoes or doubled marks.
-      while (i < n && e[i] <= last + 0.5 * period) train.removed_s.push_back(e[i++]);
-      if (i >= n) break;
-      // The first k whose window [last + (k−tol)P, last + (k+tol)P] holds an
-      // edge; in it, the edge closest to last + k·P.
-      std::size_t chosen = n;
-      int k_found = 0;
-      for (int k = 1; k <= opt.max_missing + 1 && chosen == n; ++k) {
-        const double lo = last + (k - tol) * period, hi = last + (k + tol) * period, target = last + k * period;
-        for (std::size_t j = i; j < n && e[j] <= hi; ++j)
-          if (e[j] >= lo && (chosen == n || std::abs(e[j] - target) < std::abs(e[chosen] - target))) chosen = j;
-        if (chosen != n) k_found = k;
-      }
-      // Several edges one period on (an echo a few milliseconds after the
-      // pulse is closer to last + P than the drifting speed lets P predict):
-      // take the one that keeps the speed smoothest, i.e. whose own next
-      // period matches the one just ended, |e_next − 2·e_j + last| least.
-      if (k_found == 1) {
-        const double lo = last + (1 - tol) * period, hi = last + (1 + tol) * period;
-        double best = INFINITY;
-        for (std::size_t j = i; j < n && e[j] <= hi; ++j) {
-          if (e[j] < lo) continue;
-          const double step = e[j] - last;
-          auto it = std::lower_bound(e.begin() + static_cast<std::ptrdiff_t>(j) + 1, e.end(), e[j] + (1 - tol) * step);
-          double score = INFINITY;
-          for (; it != e.end() && *it <= e[j] + (1 + tol) * step; ++it)
-            score = std::min(score, std::abs(*it - 2 * e[j] + last));
-          if (score < best) best = score, chosen = j;
-        }
-      }
-      // With k = 1 the edges before the chosen one are spurious. With k > 1
-      // (missed pulses) any edge before it is unexplained, as is no edge at all:
-      // a gap that cuts the segment here.
-      if (chosen == n || (k_found > 1 && chosen != i)) {
-        train.gaps.push_back({last, e[i], (e[i] - last) / period});
-        break;
-      }
-      for (std::size_t j = i; j < chosen; ++j) train.removed_s.push_back(e[j]);
-      const double interval = e[chosen] - last;
-      for (int m = 1; m < k_found; ++m) segment.push_back({std::nan(""), true});
-      segment.push_back({e[chosen], false});
-      i = chosen + 1;
-      // Track the period: the trend of the last six (per-revolution) periods
-      // extrapolated one step, so that a run-up or coast-down is followed.
-      recent.push_back(interval / k_found);
-      if (recent.size() > 6) recent.pop_front();
-      period = predict_period(recent);
-      if (k_found == 1) normal_periods.push_back(interval);
-    }
+}  // namespace
 
-    // Times of inserted pulses: a cubic through up to two detected pulses
-    // on each side, against pulse number.
+std::vector<PeriodStep> PulseTrain::ambiguous() const {
+  std::vector<PeriodStep> out;
+  for (const auto& s : steps)
+    if (!s.resolved) out.push_back(s);
+  return out;
+}
+
+PulseTrain clean_pulse_train(std::span<const double> e, const PulseTrainOptions& opt, std::span<const double> widths_s) {
+  PulseTrain train;
+  train.edges = e.size();
+  const std::vector<std::size_t> chain = smoothest_pulse_chain(e);
+  for (std::size_t i = 0, c = 0; i < e.size(); ++i) {
+    if (c < chain.size() && chain[c] == i) ++c;
+    else train.removed_s.push_back(e[i]);
+  }
+  std::vector<double> d;
+  for (std::size_t c = 0; c + 1 < chain.size(); ++c) d.push_back(e[chain[c + 1]] - e[chain[c]]);
+  const std::vector<bool> suspect = long_periods(d);
+  auto width_of = [&](std::size_t edge) { return edge < widths_s.size() ? widths_s[edge] : NAN; };
+
+  std::vector<double> normal_periods;
+  std::vector<Pulse> segment;
+  std::vector<double> widths;  // per pulse of the segment
+  auto close_segment = [&] {
+    // Times of inserted pulses: a cubic through up to two detected pulses on
+    // each side, against pulse number.
     for (std::size_t m = 0; m < segment.size(); ++m) {
       if (!segment[m].inserted) continue;
       std::vector<std::pair<double, double>> known;
@@ -165,9 +191,34 @@ PulseTrain clean_pulse_train(std::span<const double> e, const PulseTrainOptions&
       segment[m].time_s = interpolate_time(known, static_cast<double>(m));
       train.inserted_s.push_back(segment[m].time_s);
     }
-    if (segment.size() >= 2) train.segments.push_back(std::move(segment));
-    else train.orphan_s.push_back(segment.front().time_s);
+    if (segment.size() >= 2) {
+      find_period_steps(segment, widths, train);
+      train.segments.push_back(std::move(segment));
+    } else if (segment.size() == 1) {
+      train.orphan_s.push_back(segment.front().time_s);
+    }
+    segment.clear(), widths.clear();
+  };
+  if (!chain.empty()) segment.push_back({e[chain[0]], false}), widths.push_back(width_of(chain[0]));
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const double ref = reference_period(d, suspect, k);
+    const double next_s = e[chain[k + 1]];
+    // Only a long period breaks the train: a short one the chain kept is
+    // smoother kept than left out (a speed change), and a sustained halving
+    // is checked below (find_period_steps).
+    const bool normal = std::isnan(ref) || std::log(d[k] / ref) <= kPeriodOutlier;
+    const int missed = normal ? 0 : missed_pulses(d, k, opt);
+    if (!normal && missed == 0) {
+      train.gaps.push_back({segment.back().time_s, next_s, d[k] / ref});
+      close_segment();
+    } else {
+      for (int m = 0; m < missed; ++m) segment.push_back({std::nan(""), true}), widths.push_back(NAN);
+      if (missed == 0) normal_periods.push_back(d[k]);
+    }
+    segment.push_back({next_s, false}), widths.push_back(width_of(chain[k + 1]));
   }
+
+  close_segment();
   train.typical_period_s = median(normal_periods);
   if (train.typical_period_s == 0) train.typical_period_s = dominant_period(e);
   return train;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "support/clean_failure.hpp"
+#include "tacho_signal.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -212,6 +213,46 @@ TEST_F(BadInput, VirtualRigMisspeltRecordingKey) {
   const auto s = dir.write("s.toml", replace(scene, "hum_mV", "hum_mv"));
   const auto r = run_fourbar("virtual-rig " + s.string() + " --out " + (out() / "R.wav").string());
   expect_clean_failure(r, "unknown key 'recording.hum_mv' (did you mean 'hum_mV'?)");
+}
+
+/// Tachometer recordings through `fourbar acquire`, good and ambiguous.
+using TachoCommand = BadInput;
+
+/// A 1 kHz CSV of a tachometer (one pulse per turn) and an idle accelerometer,
+/// with its sidecar manifest; returns the recording's path.
+std::filesystem::path tacho_csv(const TempDir& dir, const std::string& name, const testing::TachoSignal& s) {
+  std::ostringstream csv;
+  csv << "time_s,coupler_t,crank_pulse\n";
+  for (std::size_t i = 0; i < s.volts.size(); ++i) csv << static_cast<double>(i) / 1000 << ",0," << s.volts[i] << "\n";
+  dir.write(name + ".toml", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"\nclearance_mm = 0.0254\n"
+            "[[channel]]\nindex = 0\nname = \"coupler_t\"\nrole = \"coupler_tangential\"\nvolts_per_unit = 0.002\n"
+            "axis_sign = 1\nposition_mm = 289\n[[channel]]\nindex = 1\nname = \"crank_pulse\"\nrole = \"crank_pulse\"\n");
+  return dir.write(name + ".csv", csv.str());
+}
+
+// The tachometer run-up that used to come out at half speed with exit 0:
+// 600 → 3000 rpm in 10 s, 0/1 pulses at 1 kHz. Every pulse is kept, no warning
+// about spurious edges, the top speed is 3000 rpm.
+TEST_F(TachoCommand, RunUpKeepsEveryPulse) {
+  const auto s = testing::tacho_signal({{0, 10}, {10, 50}}, 1000, 0.1, 0.3);
+  const auto rec = tacho_csv(dir, "runup", s);
+  const auto r = acquire(rec, "--no-samples");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("spurious"), std::string::npos) << r.err;
+  const std::string summary = read_file(out() / "summary.json");
+  EXPECT_NE(summary.find("\"pulses\": " + std::to_string(s.pulse_times.size())), std::string::npos) << summary;
+  EXPECT_EQ(data_rows(out() / "revolution_list.csv"), s.pulse_times.size() - 1);
+}
+
+// The speed doubles within a turn but the tacho's pulses are 12 ms long
+// whatever the speed: the same edges as an echo half a period after each
+// pulse. Refused, naming what was seen and the key.
+TEST_F(TachoCommand, AmbiguousPeriodHalvingIsRefused) {
+  const auto s = testing::tacho_signal({{0, 3, 3.02, 6}, {10, 10, 20, 20}}, 1000, 0, 0.3, 0.012);
+  const auto rec = tacho_csv(dir, "step", s);
+  const auto r = acquire(rec);
+  expect_clean_failure(r, "period halves abruptly after");
+  EXPECT_NE(r.err.find("set debounce_ms = "), std::string::npos) << r.err;
 }
 
 TEST_F(BadInput, VirtualRigUnknownExtension) {
