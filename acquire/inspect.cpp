@@ -99,7 +99,7 @@ RecordingInspection inspect_recording(Reader& reader) {
     ChannelInspection& ch = r.channels[c];
     ch.min = std::min(ch.min, x), ch.max = std::max(ch.max, x);
     sum[c] += x, sum_sq[c] += x * x;
-    if (bits > 0 && (x >= rail_high || x <= -1.0)) ++ch.rail_samples;
+    if (bits > 0 && std::abs(x) >= rail_high) ++ch.rail_samples;  // writers put -1.0 at -32767 or -32768
   });
   const double n = static_cast<double>(std::max<std::uint64_t>(r.info.frames, 1));
   for (std::size_t c = 0; c < channels; ++c) {
