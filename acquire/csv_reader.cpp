@@ -73,7 +73,7 @@ class CsvReader final : public Reader {
     if (line.empty()) throw InputError(file.string() + ": no header row (the file is empty or only comments)");
     header_line_ = line_no_;
     delimiter_ = line.find('\t') != std::string::npos ? '\t' : line.find(';') != std::string::npos ? ';' : ',';
-    for (auto cell : split(line, delimiter_)) names_.emplace_back(cell);
+    for (auto cell : split(line, delimiter_)) names_.push_back(as_utf8(cell));
     for (std::size_t c = 0; c < names_.size(); ++c) {
       if (names_[c].empty())
         throw InputError(where(header_line_, c) + ": empty column name in the header row; name every column");
@@ -99,7 +99,7 @@ class CsvReader final : public Reader {
       const bool short_cells = std::all_of(cells.begin(), cells.end(), [](std::string_view c) { return c.size() <= 24; });
       if (cells.size() == names_.size() && short_cells && is_units_row(cells)) {
         for (std::size_t c = 0; c < cells.size(); ++c)
-          if (auto u = unit_cell(cells[c]); !u.empty()) units[c] = u;
+          if (auto u = unit_cell(cells[c]); !u.empty()) units[c] = as_utf8(u);
         units_line_ = line_no_;
       } else {
         in_.clear();

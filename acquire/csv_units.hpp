@@ -26,4 +26,9 @@ bool is_units_row(const std::vector<std::string_view>& cells);
 /// A units row cell without its brackets: "[V]" → "V".
 std::string unit_cell(std::string_view cell);
 
+/// `text` when it is valid UTF-8; otherwise read as Latin-1 (what Windows DAQ
+/// software often writes: "m/s²" as B2) and returned as UTF-8, so that every
+/// column name can be written into a TOML manifest and matched again.
+std::string as_utf8(std::string_view text);
+
 }  // namespace fourbar

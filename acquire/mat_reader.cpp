@@ -1,11 +1,13 @@
 #include "acquire/mat_reader.hpp"
 
+#include <hdf5.h>
 #include <matio.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 
 #include "common/error.hpp"
@@ -76,6 +78,34 @@ bool is_rate_name(const std::string& name) {
   return std::any_of(std::begin(kNames), std::end(kNames), [&](const char* n) { return name == n; });
 }
 
+/// v5 files: walks the top-level data elements (tag: type, byte count) and
+/// says whether the last one runs past the end of the file. libmatio stops
+/// quietly at a truncated element, which would drop the variables after it.
+bool v5_truncated(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() < 128) return true;
+  const bool swap = bytes[126] == 'M' && bytes[127] == 'I';  // "IM" as written by this machine's byte order
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    std::memcpy(&v, &bytes[at], 4);
+    return swap ? __builtin_bswap32(v) : v;
+  };
+  std::size_t at = 128;
+  while (at < bytes.size()) {
+    if (at + 8 > bytes.size()) return true;
+    const std::uint32_t type = u32(at), count = u32(at + 4);
+    if (type >> 16) {  // small data element: 4 bytes of data inside the tag
+      at += 8;
+      continue;
+    }
+    const std::size_t end = at + 8 + static_cast<std::size_t>(count);
+    if (end > bytes.size()) return true;
+    at = type == 15 ? end : (end + 7) / 8 * 8;  // miMATRIX is padded to 8 bytes, miCOMPRESSED is not
+  }
+  return false;
+}
+
 struct VarInfo {
   std::string name;
   const char* cls = nullptr;  ///< null: not a real numeric array
@@ -90,6 +120,8 @@ class MatReader final : public Reader {
   MatReader(const std::filesystem::path& file, const ReaderOptions& options) {
     info_.file = file;
     const std::string f = file.string();
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // HDF5 (v7.3) prints no error stacks: the errors below say it
+    Mat_LogInitFunc("fourbar", [](int, char*) {});  // nor libmatio its warnings
     MatFile m;
     m.mat = Mat_Open(f.c_str(), MAT_ACC_RDONLY);
     if (!m.mat) throw InputError(f + ": not a readable MATLAB file (damaged or not a .mat); re-export it from MATLAB");
@@ -97,6 +129,9 @@ class MatReader final : public Reader {
     info_.format = version == MAT_FT_MAT73 ? "MAT v7.3" : version == MAT_FT_MAT4 ? "MAT v4" : "MAT v5";
     std::error_code ec;
     const auto file_bytes = std::filesystem::file_size(file, ec);
+    if (version == MAT_FT_MAT5 && v5_truncated(file))
+      throw InputError(f + ": truncated: a variable runs past the end of the file (" + std::to_string(file_bytes) +
+                       " bytes; an interrupted copy?); copy the file again");
 
     // Every variable's header (class and size), without its data.
     std::vector<VarInfo> vars;
@@ -120,6 +155,8 @@ class MatReader final : public Reader {
                          std::to_string(vi.cols) + " values, more than the file can hold (a damaged file)");
       vars.push_back(vi);
     }
+    if (vars.empty() && info_.notes.empty())
+      throw InputError(f + ": no variable could be read (an empty or damaged " + info_.format + " file); re-export it");
     std::size_t length = 0;
     for (const auto& v : vars) length = std::max(length, v.length());
     if (length < 2)
@@ -172,8 +209,10 @@ class MatReader final : public Reader {
     if (!rate)
       throw InputError(f + ": no sample rate: no time variable (t, time, time_s) and no rate scalar (fs, sample_rate, …)" +
                        list_variables(vars) + "; set rate_variable (or sample_rate_hz) in the manifest");
-    if (!(*rate > 0) || !std::isfinite(*rate))
-      throw InputError(f + ": sample rate " + std::to_string(*rate) + " Hz must be positive");
+    if (!(*rate >= 1e-3 && *rate <= 1e9))
+      throw InputError(f + ": sample rate " + std::to_string(*rate) + " Hz" +
+                       (info_.rate_variable ? " (variable '" + *info_.rate_variable + "')" : std::string()) +
+                       " is not between 0.001 Hz and 1 GHz; check the rate variable or give sample_rate_hz");
     info_.sample_rate_hz = *rate;
     info_.frames = length;
     info_.channels = static_cast<int>(columns_.size());

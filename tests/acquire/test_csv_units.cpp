@@ -33,6 +33,17 @@ TEST(CsvUnits, SplitUnit) {
   EXPECT_EQ(split_unit("a [b [c]]").unit, "") << "nested brackets: not a unit";
 }
 
+TEST(CsvUnits, Latin1HeadersBecomeUtf8) {
+  EXPECT_EQ(as_utf8("acc [m/s\xB2]"), "acc [m/s\xC2\xB2]") << "Latin-1 superscript two";
+  EXPECT_EQ(as_utf8("acc [m/s\xC2\xB2]"), "acc [m/s\xC2\xB2]") << "already UTF-8: unchanged";
+  EXPECT_EQ(as_utf8("\xE2\x82"), "\xC3\xA2\xC2\x82") << "a cut UTF-8 sequence is not UTF-8";
+  EXPECT_EQ(as_utf8("\xC0\xAF"), "\xC3\x80\xC2\xAF") << "an overlong form is not UTF-8";
+  TempDir dir;
+  const auto f = dir.write("r.csv", "time_s;Beschleunigung [m/s\xB2];Impuls\n0;1;0\n0,1;2;5\n");
+  auto r = open_recording(f);
+  EXPECT_EQ(r->info().channel_units[0], "m/s\xC2\xB2");
+}
+
 TEST(CsvUnits, UnitsRowDetection) {
   EXPECT_TRUE(is_units_row({"s", "V", "[V]"}));
   EXPECT_TRUE(is_units_row({"s", "", "V"}));

@@ -158,6 +158,15 @@ TEST(InspectCommand, BadInput) {
   r = run_fourbar("acquire " + csv.string());
   testing::expect_clean_failure(r, "its channels are 'coupler_t', 'pulse', 'rocker_t', 'spare'", dir.path() / "none");
 
+  // A damaged v7.3 (HDF5) file: one line on stderr, no HDF5 error stack.
+  testing::write_mat(dir.path() / "full.mat", MAT_FT_MAT73, s);
+  {
+    std::ifstream in(dir.path() / "full.mat", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto cut = dir.write("cut.mat", bytes.substr(0, bytes.size() / 2));
+    testing::expect_clean_failure(run_fourbar("inspect " + cut.string()), cut.string() + ": ", dir.path() / "none");
+  }
+
   // inspect needs no manifest, but a text file without a time column needs a rate.
   const auto bare = dir.write("bare.csv", "a,b\n1,2\n3,4\n");
   testing::expect_clean_failure(run_fourbar("inspect " + bare.string()), "sample_rate_hz", dir.path() / "none");

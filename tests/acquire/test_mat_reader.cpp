@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "acquire/manifest.hpp"
 #include "acquire/reader.hpp"
 #include "common/error.hpp"
@@ -128,6 +130,17 @@ TEST(MatReader, ErrorsNameTheVariableAndListWhatTheFileHolds) {
   e = error_of(f);
   EXPECT_NE(e.find("no numeric variable with more than one value"), std::string::npos) << e;
 
+  // A copy cut short: libmatio alone would drop the variables after the cut.
+  testing::write_mat(f, MAT_FT_MAT5, s);
+  {
+    std::ifstream in(f, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::size_t keep : {bytes.size() - 1, bytes.size() - 20, bytes.size() / 2}) {
+      const auto cut = dir.write("cut.mat", bytes.substr(0, keep));
+      e = error_of(cut);
+      EXPECT_NE(e.find(cut.string() + ": truncated"), std::string::npos) << keep << ": " << e;
+    }
+  }
   const auto junk = dir.write("junk.mat", "MATLAB 5.0 MAT-file, but then nothing sensible at all\n");
   e = error_of(junk);
   EXPECT_EQ(e.rfind(junk.string() + ": ", 0), 0u) << e;
