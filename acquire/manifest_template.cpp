@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "acquire/csv_units.hpp"
 #include "acquire/manifest_placeholders.hpp"
 #include "common/toml_writer.hpp"
 
@@ -16,9 +17,28 @@ std::string number(double v) {
   return buf;
 }
 
+/// Text for a TOML comment: UTF-8, control characters (TOML forbids them in
+/// comments; a newline would end the comment) written as \xNN.
+std::string comment_text(const std::string& text) {
+  std::string out;
+  for (const char ch : as_utf8(text)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if ((c < 0x20 && c != '\t') || c == 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", c);
+      out += buf;
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
+void comment_line(std::ostream& os, const std::string& text) { os << "# " << comment_text(text) << "\n"; }
+
 /// `key = "FILL IN"  # what` as one line.
 std::string fill_in(const char* key, const std::string& what) {
-  return std::string(key) + " = " + toml_quoted(kFillIn) + "  # FILL IN: " + what + "\n";
+  return std::string(key) + " = " + toml_quoted(kFillIn) + "  # FILL IN: " + comment_text(what) + "\n";
 }
 
 /// The one unit every channel states, or empty.
@@ -31,9 +51,7 @@ std::string common_unit(const RecordingInspection& r) {
   return unit;
 }
 
-void comment_lines(std::ostream& os, const std::string& text) {
-  os << "# " << text << "\n";
-}
+
 
 }  // namespace
 
@@ -41,10 +59,11 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
   const RecordingInfo& info = r.info;
   const bool named = !info.channel_names.empty() && !info.channel_names.front().empty();
   std::ostringstream os;
-  os << "# Manifest for " << info.file.filename().string() << ", started by `fourbar inspect --manifest-template`.\n"
-     << "# " << info.format << " " << info.sample_format << ", " << info.channels << " channels, " << number(info.sample_rate_hz)
-     << " Hz, " << info.frames << " samples (" << number(info.duration_s()) << " s).\n"
-     << "# Replace every \"FILL IN\" by its value (the comment says what it is): acquire refuses this\n"
+  comment_line(os, "Manifest for " + info.file.filename().string() + ", started by `fourbar inspect --manifest-template`.");
+  comment_line(os, info.format + " " + info.sample_format + ", " + std::to_string(info.channels) + " channels, " +
+                       number(info.sample_rate_hz) + " Hz, " + std::to_string(info.frames) + " samples (" +
+                       number(info.duration_s()) + " s).");
+  os << "# Replace every \"FILL IN\" by its value (the comment says what it is): acquire refuses this\n"
      << "# file while one is left. Every key: README \"Recordings and manifests\".\n\n";
   os << fill_in("rig", "the rig file, relative to this manifest, e.g. \"../rigs/thesis.toml\"");
   os << "# clearance_mm = 0.1  # radial clearance of the coupler-rocker bearing in this recording (default: the rig's)\n";
@@ -71,7 +90,7 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
 
   for (const auto& ch : r.channels) {
     os << "\n";
-    comment_lines(os, "channel " + std::to_string(ch.index) + (ch.name.empty() ? "" : " '" + ch.name + "'") +
+    comment_line(os, "channel " + std::to_string(ch.index) + (ch.name.empty() ? "" : " '" + ch.name + "'") +
                           (ch.unit.empty() ? "" : " [" + ch.unit + "]") + ": " + ch.reason);
     if (ch.constant) {
       os << "# (not listed: a channel without a [[channel]] table is ignored)\n";

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "acquire/csv_units.hpp"
 #include "common/error.hpp"
 
 namespace fourbar {
@@ -107,7 +108,8 @@ bool v5_truncated(const std::filesystem::path& file) {
 }
 
 struct VarInfo {
-  std::string name;
+  std::string name;                ///< as UTF-8 (Latin-1 read as such)
+  std::string raw;                 ///< as stored, for libmatio
   const char* cls = nullptr;  ///< null: not a real numeric array
   std::size_t rows = 0, cols = 0;
   bool numeric() const { return cls != nullptr; }
@@ -137,7 +139,8 @@ class MatReader final : public Reader {
     std::vector<VarInfo> vars;
     while (Var v{Mat_VarReadNextInfo(m.mat)}) {
       VarInfo vi;
-      vi.name = v->name ? v->name : "";
+      vi.raw = v->name ? v->name : "";
+      vi.name = as_utf8(vi.raw);  // names go into TOML manifests
       if (v->rank == 2 && !v->isComplex && v->class_type != MAT_C_SPARSE) {
         vi.cls = class_name(v->class_type);
         vi.rows = v->dims[0], vi.cols = v->dims[1];
@@ -174,7 +177,7 @@ class MatReader final : public Reader {
       if (it->rows * it->cols != 1)
         throw InputError(f + ": rate_variable '" + it->name + "' is " + std::to_string(it->rows) + "x" +
                          std::to_string(it->cols) + ", not a scalar; name the scalar that holds the rate in Hz");
-      rate = read_scalar(m.mat, it->name, f);
+      rate = read_scalar(m.mat, it->raw, f);
       info_.rate_variable = it->name;
     }
 
@@ -201,7 +204,7 @@ class MatReader final : public Reader {
     if (!rate) {
       for (const auto& v : vars)
         if (v.rows * v.cols == 1 && is_rate_name(v.name)) {
-          rate = read_scalar(m.mat, v.name, f);
+          rate = read_scalar(m.mat, v.raw, f);
           info_.rate_variable = v.name;
           break;
         }
@@ -256,7 +259,7 @@ class MatReader final : public Reader {
   }
 
   void add_channels(mat_t* mat, const VarInfo& vi, const std::string& f) {
-    const Var v = read_var(mat, vi.name, f);
+    const Var v = read_var(mat, vi.raw, f);
     if (v->rank != 2 || v->dims[0] != vi.rows || v->dims[1] != vi.cols)
       throw InputError(f + ": variable '" + vi.name + "' changed size between its header and its data (a damaged file)");
     const bool by_column = vi.rows >= vi.cols;  // the longer dimension is time
@@ -279,7 +282,7 @@ class MatReader final : public Reader {
   }
 
   double rate_from_time(mat_t* mat, const VarInfo& tv, const std::string& f) {
-    const Var v = read_var(mat, tv.name, f);
+    const Var v = read_var(mat, tv.raw, f);
     const double unit = time_unit_s(tv.name);
     const std::size_t n = tv.length();
     const double t0 = element(*v, 0) * unit, tn = element(*v, n - 1) * unit;

@@ -87,13 +87,14 @@ TEST(ManifestTemplate, NamedChannelsByColumnRateVariableAndVoltUnits) {
   TempDir dir;
   dir.write("rig.toml", testing::thesis_rig_toml());
   auto s = testing::inspection_signals();
-  s.names[2] = "odd \"name\"\tx";  // quoted and escaped in the template
+  s.names[2] = "odd \"name\"\tx\ny\x01";  // quoted and escaped in the template, and in its comments
   const auto rec = dir.path() / "r.mat";
   testing::write_mat(rec, MAT_FT_MAT5, s, "Fs");
   const auto r = inspect_recording(*open_recording(rec));
   const std::string text = manifest_template(r, {});
   EXPECT_NE(text.find("rate_variable = \"Fs\""), std::string::npos) << text;
-  EXPECT_NE(text.find("column = \"odd \\\"name\\\"\\tx\""), std::string::npos) << text;
+  EXPECT_NE(text.find("column = \"odd \\\"name\\\"\\tx\\ny\\u0001\""), std::string::npos) << text;
+  EXPECT_NE(text.find("# channel 2 'odd \"name\"\tx\\x0Ay\\x01'"), std::string::npos) << text;
   EXPECT_NE(text.find("role = \"coupler_tangential\"  # from its name"), std::string::npos) << text;
   const auto manifest = dir.write("r.toml", fill_in(text));
   Manifest m = load_manifest(manifest);
