@@ -128,7 +128,12 @@ class MatReader final : public Reader {
     m.mat = Mat_Open(f.c_str(), MAT_ACC_RDONLY);
     if (!m.mat) throw InputError(f + ": not a readable MATLAB file (damaged or not a .mat); re-export it from MATLAB");
     const mat_ft version = Mat_GetVersion(m.mat);
-    info_.format = version == MAT_FT_MAT73 ? "MAT v7.3" : version == MAT_FT_MAT4 ? "MAT v4" : "MAT v5";
+    // v4 (MATLAB before 1996) has no header to check a file against, and
+    // libmatio spends seconds and gigabytes on a damaged one (fuzzing).
+    if (version == MAT_FT_MAT4)
+      throw InputError(f + ": a MATLAB v4 file (or not a MATLAB file at all): not read; save it from MATLAB as "
+                       "v7 (save -v7) or v7.3");
+    info_.format = version == MAT_FT_MAT73 ? "MAT v7.3" : "MAT v5";
     std::error_code ec;
     const auto file_bytes = std::filesystem::file_size(file, ec);
     if (version == MAT_FT_MAT5 && v5_truncated(file))

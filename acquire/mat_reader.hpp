@@ -1,5 +1,6 @@
 #pragma once
-// MATLAB recordings (.mat v4, v5 and v7.3/HDF5) through libmatio.
+// MATLAB recordings (.mat v5 — v6/v7, plain or compressed — and v7.3/HDF5)
+// through libmatio. v4 files are refused (no header to check them against).
 //
 // Channels are the file's real numeric variables of the recording's length
 // (the longest length found): a vector (1×N or N×1) is one channel named by

@@ -16,7 +16,7 @@ namespace fourbar::cli {
 namespace {
 
 constexpr const char* kDetails = R"(Reads a recording without a manifest (WAV/W64/RF64/FLAC/CAF/AIFF, MATLAB
-.mat v4/v5/v7.3, CSV/TSV text) and prints its format, sample rate and
+.mat v5/v7/v7.3, CSV/TSV text) and prints its format, sample rate and
 duration, and per channel: min, max, mean (the DC level), RMS, AC RMS (about
 the mean), clipping (samples at the digital rails of an integer format, or
 runs of >= 3 equal samples at the channel's min or max), whether it is a
