@@ -117,6 +117,27 @@ TEST(InspectCommand, TemplateFilledInAnalysesLikeTheVirtualRigsOwnManifest) {
   }
 }
 
+TEST(AcquireCommand, WithoutOutChecksOnlyAndDefaultOutputFolders) {
+  TempDir dir;
+  const auto rec = dir.path() / "REC.wav";
+  ASSERT_EQ(run_fourbar("virtual-rig " + kScene + " --no-truth --out " + rec.string()).status, 0);
+  const auto before = std::distance(std::filesystem::directory_iterator(dir.path()), {});
+  const auto previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());  // the default folders are relative to where fourbar runs
+  const auto check = run_fourbar("acquire REC.wav");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), before) << "a check writes nothing";
+  const auto acquired = run_fourbar("acquire REC.wav --out");
+  const auto analysed = run_fourbar("analyze REC.wav");
+  std::filesystem::current_path(previous);
+  ASSERT_EQ(check.status, 0) << check.err;
+  EXPECT_NE(check.out.find("19 complete revolutions"), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find("checked: "), std::string::npos) << check.out;
+  ASSERT_EQ(acquired.status, 0) << acquired.err;
+  ASSERT_EQ(analysed.status, 0) << analysed.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / "REC" / "acquire" / "revolutions.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / "REC" / "analyze" / "averaged.csv"));
+}
+
 TEST(InspectCommand, MatlabAndTextExports) {
   TempDir dir;
   const auto s = testing::inspection_signals();
