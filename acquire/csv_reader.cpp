@@ -8,6 +8,7 @@
 #include <regex>
 #include <sstream>
 
+#include "acquire/csv_units.hpp"
 #include "common/error.hpp"
 #include "common/toml_section.hpp"
 
@@ -19,6 +20,12 @@ std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
   if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
+  return s;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
   return s;
 }
 
@@ -66,7 +73,7 @@ class CsvReader final : public Reader {
     if (line.empty()) throw InputError(file.string() + ": no header row (the file is empty or only comments)");
     header_line_ = line_no_;
     delimiter_ = line.find('\t') != std::string::npos ? '\t' : line.find(';') != std::string::npos ? ';' : ',';
-    for (auto cell : split(line, delimiter_)) names_.emplace_back(cell);
+    for (auto cell : split(line, delimiter_)) names_.push_back(as_utf8(cell));
     for (std::size_t c = 0; c < names_.size(); ++c) {
       if (names_[c].empty())
         throw InputError(where(header_line_, c) + ": empty column name in the header row; name every column");
@@ -74,23 +81,69 @@ class CsvReader final : public Reader {
         if (names_[d] == names_[c])
           throw InputError(where(header_line_, c) + ": column name '" + names_[c] + "' appears twice in the header");
     }
+    // Units: in the header (`coupler_t [V]`) or a row of units under it.
+    std::vector<std::string> bare, units;
+    for (const auto& n : names_) {
+      auto [name, unit] = split_unit(n);
+      bare.push_back(std::move(name)), units.push_back(std::move(unit));
+    }
+    std::streampos after_header = in_.tellg();
+    while (std::getline(in_, line)) {
+      ++line_no_;
+      strip_cr(line);
+      if (is_skipped(line)) {
+        after_header = in_.tellg();
+        continue;
+      }
+      const auto cells = split(line, delimiter_);
+      const bool short_cells = std::all_of(cells.begin(), cells.end(), [](std::string_view c) { return c.size() <= 24; });
+      if (cells.size() == names_.size() && short_cells && is_units_row(cells)) {
+        for (std::size_t c = 0; c < cells.size(); ++c)
+          if (auto u = unit_cell(cells[c]); !u.empty()) units[c] = as_utf8(u);
+        units_line_ = line_no_;
+      } else {
+        in_.clear();
+        in_.seekg(after_header);
+        --line_no_;
+      }
+      break;
+    }
+    if (units_line_ == 0) {  // nothing consumed but blank or comment lines: count them back
+      in_.clear();
+      in_.seekg(after_header);
+    }
     // Time column: named by the manifest, else recognised by its name.
     if (options.time_column) {
-      const auto it = std::find(names_.begin(), names_.end(), *options.time_column);
+      auto it = std::find(names_.begin(), names_.end(), *options.time_column);
+      if (it == names_.end()) it = std::find(bare.begin(), bare.end(), *options.time_column) - bare.begin() + names_.begin();
       if (it == names_.end()) {
         std::string hint;
         if (auto m = closest_match(*options.time_column, names_)) hint = " (did you mean '" + *m + "'?)";
         throw InputError(file.string() + ":" + std::to_string(header_line_) + ": the manifest's time_column '" +
-                         *options.time_column + "' is not in the header" + hint);
+                         *options.time_column + "' is not in the header" + hint + "; its columns: " + joined(names_));
       }
       time_col_ = static_cast<int>(it - names_.begin());
-      time_unit_s_ = time_unit_s(*it) > 0 ? time_unit_s(*it) : 1.0;
+      const std::size_t c = static_cast<std::size_t>(time_col_);
+      const double u = time_unit_s(units[c].empty() ? names_[c] : bare[c] + "_" + units[c]);
+      time_unit_s_ = u > 0 ? u : 1.0;
     } else {
-      for (std::size_t c = 0; c < names_.size() && time_col_ < 0; ++c)
-        if (double u = time_unit_s(names_[c]); u > 0) time_col_ = static_cast<int>(c), time_unit_s_ = u;
+      for (std::size_t c = 0; c < names_.size() && time_col_ < 0; ++c)  // `time [ms]`, or `time` over `ms`
+        if (double u = time_unit_s(units[c].empty() ? names_[c] : bare[c] + "_" + units[c]); u > 0)
+          time_col_ = static_cast<int>(c), time_unit_s_ = u;
     }
+    bool any_unit = false;
     for (std::size_t c = 0; c < names_.size(); ++c)
-      if (static_cast<int>(c) != time_col_) info_.channel_names.push_back(names_[c]);
+      if (static_cast<int>(c) != time_col_) {
+        info_.channel_names.push_back(bare[c]);
+        info_.channel_units.push_back(units[c]);
+        any_unit = any_unit || !units[c].empty();
+      }
+    if (!any_unit) info_.channel_units.clear();
+    for (std::size_t c = 0; c < info_.channel_names.size(); ++c)
+      for (std::size_t d = 0; d < c; ++d)
+        if (info_.channel_names[c] == info_.channel_names[d])
+          throw InputError(file.string() + ":" + std::to_string(header_line_) + ": two columns are named '" +
+                           info_.channel_names[c] + "' once their units are set aside; name every column differently");
     info_.channels = static_cast<int>(info_.channel_names.size());
     if (info_.channels == 0) throw InputError(file.string() + ": only a time column; the recording needs channels");
     data_start_ = in_.tellg();
@@ -229,7 +282,7 @@ class CsvReader final : public Reader {
   double time_unit_s_ = 1.0;
   bool uniform_check_ = true;
   std::streampos data_start_{};
-  std::size_t header_line_ = 0, data_start_line_ = 0, line_no_ = 0;
+  std::size_t header_line_ = 0, units_line_ = 0, data_start_line_ = 0, line_no_ = 0;
   std::uint64_t row_ = 0;
   double previous_time_ = 0;
 };

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "acquire/csv_units.hpp"
+#include "acquire/manifest_placeholders.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
 #include "common/toml_section.hpp"
@@ -119,6 +121,7 @@ std::filesystem::path sidecar_manifest_path(const std::filesystem::path& recordi
 
 Manifest load_manifest(const std::filesystem::path& file) {
   const toml::table doc = parse_toml_file(file);
+  reject_placeholders(doc, file);
   TomlSection root(doc, file);
   Manifest m;
   m.file = file;
@@ -133,6 +136,9 @@ Manifest load_manifest(const std::filesystem::path& file) {
   if (root.has("adc_range_V")) m.adc_range_V = root.positive("adc_range_V");
   if (root.has("sample_rate_hz")) m.sample_rate_hz = root.positive("sample_rate_hz");
   m.time_column = root.optional_string("time_column");
+  m.rate_variable = root.optional_string("rate_variable");
+  if (m.rate_variable && m.sample_rate_hz)
+    root.fail("rate_variable", "and 'sample_rate_hz' both given; keep one of them");
   m.crank_direction = root.choice("crank_direction", {"ccw", "cw"}, "ccw") == "ccw" ? 1.0 : -1.0;
   if (auto n = root.optional_string("notes")) m.notes = *n;
 
@@ -173,15 +179,18 @@ void bind_channels(Manifest& m, const RecordingInfo& rec) {
     ChannelSpec& c = m.channels[i];
     if (c.column) {
       const auto& names = rec.channel_names;
-      const auto it = std::find(names.begin(), names.end(), *c.column);
+      auto it = std::find(names.begin(), names.end(), *c.column);
+      if (it == names.end()) it = std::find(names.begin(), names.end(), split_unit(*c.column).name);  // `coupler_t [V]`
       if (it == names.end() || c.column->empty()) {
-        std::string hint;
+        std::string hint, found;
         std::vector<std::string> present;
         for (const auto& n : names)
-          if (!n.empty()) present.push_back(n);
+          if (!n.empty()) present.push_back(n), found += (found.empty() ? "'" : ", '") + n + "'";
         if (auto best = closest_match(*c.column, present)) hint = " (did you mean '" + *best + "'?)";
         throw InputError(m.file.string() + ": " + label(c, i) + ": column '" + *c.column + "' is not in " +
-                         rec.file.string() + hint + (present.empty() ? "; audio files have no column names, use 'index'" : ""));
+                         rec.file.string() + hint +
+                         (present.empty() ? "; audio files have no column names, use 'index'"
+                                          : "; its channels are " + found + " (fix the column name)"));
       }
       c.index = static_cast<int>(it - names.begin());
     }
@@ -227,6 +236,7 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
   if (m.adc_range_V) os << "adc_range_V = " << num(*m.adc_range_V) << "\n";
   if (m.sample_rate_hz) os << "sample_rate_hz = " << num(*m.sample_rate_hz) << "\n";
   if (m.time_column) os << "time_column = " << quoted(*m.time_column) << "\n";
+  if (m.rate_variable) os << "rate_variable = " << quoted(*m.rate_variable) << "\n";
   os << "crank_direction = \"" << (m.crank_direction > 0 ? "ccw" : "cw") << "\"\n";
   if (!m.notes.empty()) os << "notes = " << quoted(m.notes) << "\n";
   for (const auto& c : m.channels) {

@@ -76,11 +76,12 @@ struct Manifest {
   std::optional<double> adc_range_V;   ///< input range, for clipping detection in float/text recordings
   std::optional<double> sample_rate_hz;  ///< text recordings without a time column
   std::optional<std::string> time_column;
+  std::optional<std::string> rate_variable;  ///< MATLAB recordings: the variable holding the rate in Hz
   double crank_direction = 1;          ///< +1: the crank turns counter-clockwise (θ2 increases), −1 clockwise
   std::vector<ChannelSpec> channels;   ///< as listed, `[[channel]]`
   std::string notes;
 
-  ReaderOptions reader_options() const { return {sample_rate_hz, time_column}; }
+  ReaderOptions reader_options() const { return {sample_rate_hz, time_column, rate_variable}; }
   /// The one crank_pulse channel.
   const ChannelSpec& pulse_channel() const;
 };

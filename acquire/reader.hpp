@@ -29,8 +29,16 @@ struct RecordingInfo {
   double sample_rate_hz = 0;
   std::uint64_t frames = 0;
   double start_time_s = 0;     ///< time of frame 0 (a CSV time column may not start at 0)
-  /// Per channel: the column name for text formats, empty for audio files.
+  /// Per channel: the column name for text formats, the variable name for
+  /// MATLAB files, empty for audio files.
   std::vector<std::string> channel_names;
+  /// Per channel: the unit a text export states (`coupler_t [V]` or a units
+  /// row under the header), empty when none; empty vector when no channel has one.
+  std::vector<std::string> channel_units;
+  /// MATLAB: the scalar variable the sample rate was read from, when it was.
+  std::optional<std::string> rate_variable;
+  /// What a reader noticed and set aside (e.g. a MATLAB variable of another length).
+  std::vector<std::string> notes;
 
   double duration_s() const { return sample_rate_hz > 0 ? static_cast<double>(frames) / sample_rate_hz : 0; }
 };
@@ -39,6 +47,7 @@ struct RecordingInfo {
 struct ReaderOptions {
   std::optional<double> sample_rate_hz;  ///< required for text without a time column
   std::optional<std::string> time_column;  ///< text: name of the time column (default: auto)
+  std::optional<std::string> rate_variable;  ///< MATLAB: the scalar variable holding the sample rate in Hz
 };
 
 class Reader {

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "acquire/csv_reader.hpp"
+#include "acquire/mat_reader.hpp"
 #include "acquire/reader.hpp"
 #include "acquire/sndfile_reader.hpp"
 #include "common/error.hpp"
@@ -15,7 +16,9 @@ std::span<const ReaderFormat> reader_formats() {
   static constexpr std::array table{
       ReaderFormat{"audio", "WAV, W64, RF64, FLAC, CAF, AIFF (libsndfile; 16/24/32-bit integer, float, double)",
                    sndfile_claims, open_sndfile_reader},
-      ReaderFormat{"text", "CSV/TSV text (.csv, .tsv, .txt): header row, optional time column, ',' ';' or tab",
+      ReaderFormat{"matlab", "MATLAB .mat v5/v7/v7.3 (libmatio): numeric variables or matrix columns as channels",
+                   mat_claims, open_mat_reader},
+      ReaderFormat{"text", "CSV/TSV text (.csv, .tsv, .txt): header row, optional units row, optional time column, ',' ';' or tab",
                    csv_claims, open_csv_reader},
   };
   return table;

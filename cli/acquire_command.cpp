@@ -1,5 +1,6 @@
-// `fourbar acquire REC [--manifest M] --out DIR`: calibrated, angle-tagged
-// samples and revolutions of a recording, with a JSON summary.
+// `fourbar acquire REC [--manifest M] [--out [DIR]]`: without --out, checks
+// a recording with its manifest and prints a summary (nothing written); with
+// it, calibrated, angle-tagged samples and revolutions with a JSON summary.
 
 #include <cmath>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 
@@ -21,7 +23,10 @@ namespace {
 
 constexpr const char* kDetails = R"(Reads a recording (WAV/W64/RF64/FLAC/CAF/AIFF via libsndfile, or CSV/TSV text)
 and its manifest (default: REC with extension .toml beside it), finds the
-crank pulses, fits the crank angle through them and writes into DIR:
+crank pulses, fits the crank angle through them. Without --out it only
+checks and prints a summary (format, channels, pulses, revolutions, speed,
+clipping, warnings; nothing is written). With --out DIR (--out alone:
+out/<recording name>/acquire) it writes into DIR:
   samples.csv         every sample inside a complete revolution: crank_deg,
                       time_s, revolution, omega2_rad_s, alpha2_rad_s2, then
                       <channel>_m_s2 per accelerometer channel (calibrated,
@@ -144,6 +149,41 @@ nlohmann::json stats_json(const ChannelStats& s, const char* unit) {
           {"clipped_samples", s.clipped_samples}, {"first_clip_s", s.clipped_samples ? nlohmann::json(s.first_clip_s) : nlohmann::json()}};
 }
 
+/// `fourbar acquire REC` without --out: the whole acquisition, nothing written,
+/// a summary on stdout and the warnings on stderr.
+int check_recording(Reader& reader, const Manifest& m, int samples_per_rev) {
+  struct Discard final : AcquisitionSink {
+    bool wants_grid() const override { return false; }
+  } discard;
+  AcquireOptions options;
+  options.grid_points_per_rev = samples_per_rev;
+  const AcquisitionReport rep = acquire(reader, m, options, discard);
+  const RecordingInfo& ri = rep.recording;
+  std::cout << ri.file.string() << ": " << ri.format << " " << ri.sample_format << ", " << ri.channels << " channels, "
+            << format_number(ri.sample_rate_hz) << " Hz, " << format_number(ri.duration_s()) << " s; manifest "
+            << m.file.string() << " (rig " << m.rig_file.string() << ", clearance "
+            << format_number(units::m_to_mm(m.clearance_m)) << " mm)\n";
+  for (std::size_t c = 0; c < rep.channels.size(); ++c) {
+    const auto& ch = rep.channels[c];
+    const ChannelStats& s = rep.channel_stats[c];
+    std::cout << "  " << ch.name << " (" << to_string(ch.role) << ", channel " << ch.index << "): " << format_number(s.min)
+              << " .. " << format_number(s.max) << " m/s^2, RMS " << format_number(s.rms)
+              << (s.clipped_samples ? ", CLIPPED " + std::to_string(s.clipped_samples) + " samples" : "") << "\n";
+  }
+  std::size_t kept = 0;
+  for (const auto& seg : rep.pulses.segments) kept += seg.size();
+  std::cout << "  crank pulses ('" << rep.pulse_channel << "'): " << kept << " kept, " << rep.pulses.inserted_s.size()
+            << " inserted, " << rep.pulses.removed_s.size() << " removed, " << rep.pulses.gaps.size() << " gaps\n"
+            << "  " << rep.revolutions << " complete revolutions, " << format_number(rep.speed.mean_rpm) << " rpm mean (std "
+            << format_number(rep.speed.std_rpm) << ", " << format_number(rep.speed.min_rpm) << " .. "
+            << format_number(rep.speed.max_rpm) << ")" << (rep.revolutions_clipped ? ", " + std::to_string(rep.revolutions_clipped) + " clipped" : "")
+            << "\n";
+  for (const auto& w : rep.warnings) std::cerr << "fourbar: warning: " << w << "\n";
+  std::cout << "checked: " << (rep.warnings.empty() ? "no warnings" : std::to_string(rep.warnings.size()) + " warning(s) on stderr")
+            << "; nothing written (give --out DIR to write the samples and revolutions)\n";
+  return 0;
+}
+
 }  // namespace
 
 int run_acquire(const Invocation& inv) {
@@ -153,7 +193,8 @@ int run_acquire(const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, CSV)")(
       "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
-      "out,o", po::value(&out_dir)->required(), "output folder")(
+      "out,o", po::value(&out_dir)->implicit_value(""),
+      "output folder (alone: out/<recording name>/acquire); without --out: check and summarise only")(
       "samples-per-rev,n", po::value(&samples_per_rev),
       "crank angles per revolution in revolutions.csv (default: the smallest multiple of 360 >= the samples "
       "per revolution)")("no-samples", po::bool_switch(&no_samples), "do not write samples.csv (long recordings)")(
@@ -163,13 +204,19 @@ int run_acquire(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("acquire", "REC [--manifest M] --out DIR [-n N] [--no-samples] [--binary]", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--no-samples] [--binary]", kDetails, opts, pos,
+                       inv, vm))
+    return 0;
+  const bool write = vm.count("out") > 0;
+  if (write && out_dir.empty())
+    out_dir = (std::filesystem::path("out") / std::filesystem::path(recording).stem() / "acquire").string();
   if (vm.count("samples-per-rev") && (samples_per_rev < 4 || samples_per_rev > 10'000'000))
     throw InputError("acquire: --samples-per-rev " + std::to_string(samples_per_rev) + " must be between 4 and 10000000");
 
   // Check every input before creating anything.
   OpenedRecording opened = open_with_manifest(recording, manifest_file);
   const Manifest& m = opened.manifest;
+  if (!write) return check_recording(*opened.reader, m, samples_per_rev);
   ensure_output_dir(out_dir);
   const std::filesystem::path dir(out_dir);
   Provenance prov{inv.command_line, {recording, m.file, m.rig_file}};

@@ -1,4 +1,4 @@
-// `fourbar analyze REC [--manifest M] --out DIR`: coupler and rocker angular
+// `fourbar analyze REC [--manifest M] [--out DIR]`: coupler and rocker angular
 // acceleration and velocity from a recording's accelerometers, averaged over
 // the revolutions with their spread, spectra and a JSON summary.
 
@@ -35,7 +35,7 @@ revolution, integrated revolution by revolution to the angular velocity
 (periodic: no drift) and averaged over the revolutions. A normal channel on
 the same link checks |omega| independently. Long recordings are analysed in
 chunks of revolutions in bounded memory; the result does not depend on it.
-Writes into DIR:
+Writes into DIR (default out/<recording name>/analyze):
   averaged.csv       crank_deg, omega2_rad_s (crank speed), alpha3_rad_s2,
                      alpha3_std_rad_s2, omega3_rad_s, omega3_std_rad_s, the
                      same for alpha4/omega4 (when the manifest has a
@@ -195,7 +195,7 @@ int run_analyze(const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, ..., CSV)")(
       "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
-      "out,o", po::value(&out_dir)->required(), "output folder")(
+      "out,o", po::value(&out_dir), "output folder (default: out/<recording name>/analyze)")(
       "band", po::value(&band), "filter band: bandpass (default), lowpass, highpass, bandstop, none")(
       "low-hz", po::value(&low), low_help.c_str())(
       "high-hz", po::value(&high), high_help.c_str())(
@@ -222,7 +222,8 @@ int run_analyze(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("analyze", "REC [--manifest M] --out DIR [options]", details, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("analyze", "REC [--manifest M] [--out DIR] [options]", details, opts, pos, inv, vm)) return 0;
+  if (out_dir.empty()) out_dir = (std::filesystem::path("out") / std::filesystem::path(recording).stem() / "analyze").string();
 
   AnalyzeOptions o = thesis ? AnalyzeOptions::thesis_method() : AnalyzeOptions{};
   o.filter.band = parse_band(band);

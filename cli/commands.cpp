@@ -9,6 +9,8 @@ std::span<const Command> commands() {
   static constexpr std::array table{
       Command{"report", "the main job: a session folder of recordings -> one HTML report, theory over measurement",
               run_report},
+      Command{"inspect", "look inside a recording before there is a manifest; --manifest-template starts one",
+              run_inspect},
       Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
       Command{"analyze", "coupler and rocker angular acceleration and velocity from a recording, averaged",
               run_analyze},

@@ -15,7 +15,7 @@ namespace fourbar::cli {
 namespace {
 
 constexpr const char* kDetails = R"(Every recording in SESSION_DIR (top level: .wav .w64 .rf64 .flac .caf .aiff
-.aif .csv .tsv .txt, except *.truth.csv), each with its manifest REC.toml
+.aif .mat .csv .tsv .txt, except *.truth.csv), each with its manifest REC.toml
 beside it, goes through acquire and analyze; the clearance model and the
 nominal mechanism are simulated at its measured mean crank speed and its
 manifest's clearance (e, mu from session.toml, default e = 0.5 smooth), on the
@@ -24,7 +24,8 @@ same crank-angle grid, and compared (README "The report").
 Writes OUT (default SESSION_DIR/report/report.html), and beside it
 summary.json, session_severity.csv and series/<recording>*.csv. Results are
 cached in <out dir>/.fourbar-cache by the SHA-256 of the inputs and settings:
-a second run with unchanged inputs does not recompute.
+a second run with unchanged inputs does not recompute. Any other file in
+the folder, and a manifest without its recording, is named in a warning.
 
 Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
   title, notes;

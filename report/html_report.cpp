@@ -454,6 +454,11 @@ std::string render_html_report(const json& session_in) {
     for (const json& o : data["orphan_manifests"]) h << " " << esc(o);
     h << "</p>";
   }
+  if (data.contains("other_files") && !data["other_files"].empty()) {
+    h << "<p class=\"warn\">Files in the session folder that are neither a recording nor a manifest (ignored):";
+    for (const json& o : data["other_files"]) h << " " << esc(o);
+    h << "</p>";
+  }
   h << "</section>";
 
   // Session severity.

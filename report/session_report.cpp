@@ -88,7 +88,14 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   const SessionFiles files = find_session_files(o.session_dir);
   if (files.recordings.empty())
     throw InputError(o.session_dir.string() +
-                     ": no recordings (.wav .w64 .rf64 .flac .caf .aiff .aif .csv .tsv .txt) in this folder");
+                     ": no recordings (.wav .w64 .rf64 .flac .caf .aiff .aif .mat .csv .tsv .txt) in this folder");
+  // Nothing in the folder is passed over in silence.
+  for (const auto& m : files.orphan_manifests)
+    std::cerr << "fourbar: warning: report: " << m.filename().string() << " has no recording beside it (no "
+              << m.stem().string() << ".wav, .flac, .mat, .csv, ...); left out: add the recording or remove the manifest\n";
+  for (const auto& f : files.other_files)
+    std::cerr << "fourbar: warning: report: " << f.filename().string()
+              << " is not a recording (.wav .w64 .rf64 .flac .caf .aiff .aif .mat .csv .tsv .txt) nor a manifest; left out\n";
   const std::filesystem::path out_dir = o.out_html.has_parent_path() ? o.out_html.parent_path() : ".";
   ensure_output_dir(out_dir);
   const std::filesystem::path cache_dir = o.cache_dir.empty() ? out_dir / ".fourbar-cache" : o.cache_dir;
@@ -173,6 +180,8 @@ ReportOutcome run_session_report(const ReportOptions& o) {
 
   json orphans = json::array();
   for (const auto& m : files.orphan_manifests) orphans.push_back(m.filename().string());
+  json others = json::array();
+  for (const auto& f : files.other_files) others.push_back(f.filename().string());
   json session = {{"tool", "fourbar"},
                   {"version", kVersion},
                   {"command", o.command_line},
@@ -184,6 +193,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
                   {"recordings", records},
                   {"recordings_failed", out.failed},
                   {"orphan_manifests", orphans},
+                  {"other_files", others},
                   {"severity", severity_record(records)}};
 
   // Outputs: series first, the report last (each written whole or not at all).

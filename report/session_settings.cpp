@@ -126,7 +126,7 @@ SessionFiles find_session_files(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir))
     throw InputError(dir.string() + ": not a folder; give the session folder that holds the recordings");
   static const std::set<std::string> kExtensions{".wav", ".w64", ".rf64", ".flac", ".caf", ".aiff", ".aif",
-                                                 ".csv", ".tsv", ".txt"};
+                                                 ".mat", ".csv", ".tsv", ".txt"};
   SessionFiles f;
   std::set<std::string> stems;
   std::vector<std::filesystem::path> manifests;
@@ -141,8 +141,11 @@ SessionFiles find_session_files(const std::filesystem::path& dir) {
     } else if (kExtensions.count(ext) && !name.ends_with(".truth.csv")) {
       f.recordings.push_back(p);
       stems.insert(p.stem().string());
+    } else if (!name.starts_with(".") && !name.ends_with(".truth.csv")) {
+      f.other_files.push_back(p);
     }
   }
+  std::sort(f.other_files.begin(), f.other_files.end());
   for (const auto& m : manifests)
     if (!stems.count(m.stem().string())) f.orphan_manifests.push_back(m);
   std::sort(f.recordings.begin(), f.recordings.end());

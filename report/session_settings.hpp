@@ -47,6 +47,7 @@ SessionSettings load_session_settings(const std::filesystem::path& dir);
 struct SessionFiles {
   std::vector<std::filesystem::path> recordings;  ///< sorted by name
   std::vector<std::filesystem::path> orphan_manifests;  ///< REC.toml with no recording beside it
+  std::vector<std::filesystem::path> other_files;  ///< neither a recording, a manifest, session.toml nor *.truth.csv
 };
 
 /// The recordings in `dir` (top level only): files with a recording

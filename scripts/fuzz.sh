@@ -17,7 +17,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(rig scene manifest csv audio)
+[ "${#targets[@]}" -gt 0 ] || targets=(rig scene manifest csv audio mat csv_units)
 
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++ -DFOURBAR_FUZZ=ON -DFOURBAR_BUILD_TESTS=OFF -DFOURBAR_BUILD_BENCH=OFF >/dev/null

@@ -19,7 +19,7 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFOURBAR_SA
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 if [ "${1:-}" = "--ci" ]; then
-  targets=(replay_rig replay_scene replay_manifest replay_csv replay_audio test_common test_mechanism test_acquire test_clearance)
+  targets=(replay_rig replay_scene replay_manifest replay_csv replay_audio replay_mat replay_csv_units test_common test_mechanism test_acquire test_clearance)
   cmake --build build-asan --parallel "$(nproc)" --target "${targets[@]}"
   ctest --test-dir build-asan --output-on-failure --parallel "$(nproc)" -R '^fuzz_replay_'
   for t in common/test_common mechanism/test_mechanism acquire/test_acquire sim/clearance/test_clearance; do

@@ -72,6 +72,9 @@ class SessionReport : public ::testing::Test {
     }
     // A recording without its manifest.
     std::filesystem::copy_file(d / "session" / "nominal.flac", d / "session" / "orphan.flac");
+    // A manifest without its recording, and a file that is no recording at all.
+    std::filesystem::copy_file(d / "session" / "nominal.toml", d / "session" / "lost.toml");
+    dir_->write("session/notes.pdf", "%PDF-1.4\n");
     dir_->write("session/session.toml", "title = \"e2e\"\n[theory]\nwarmup_revolutions = 20\naveraged_revolutions = 16\n");
     run_ = new testing::CommandResult(testing::run_fourbar("report " + (d / "session").string() + " --out " +
                                                            (d / "out" / "report.html").string()));
@@ -100,7 +103,7 @@ TEST_F(SessionReport, BadRecordingsAreReportedAndTheRestProcessed) {
   EXPECT_EQ(run_->status, 1) << "exit status 1: the report was written, some recordings failed";
   EXPECT_NE(run_->err.find("corrupt.flac"), std::string::npos) << run_->err;
   EXPECT_NE(run_->err.find("orphan.flac"), std::string::npos) << run_->err;
-  EXPECT_EQ(testing::count_lines(run_->err), 2) << run_->err;
+  EXPECT_EQ(testing::count_lines(run_->err), 4) << run_->err;  // + lost.toml and notes.pdf, below
   ASSERT_EQ((*summary_)["recordings"].size(), 4u);
   EXPECT_EQ((*summary_)["recordings_failed"], 2);
   EXPECT_EQ(recording("corrupt.flac")["status"], "failed");
@@ -139,6 +142,20 @@ TEST_F(SessionReport, OutputsDoNotDependOnTheNumberOfJobs) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--jobs"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(d / "jobs_bad"));
+}
+
+TEST_F(SessionReport, FilesThatAreNotRecordingsAreNamed) {
+  // Neither is skipped in silence: one warning each on stderr, listed in summary.json and the report.
+  const std::string& err = run_->err;
+  const auto lost = err.find("warning: report: lost.toml has no recording beside it");
+  const auto pdf = err.find("warning: report: notes.pdf is not a recording");
+  EXPECT_NE(lost, std::string::npos) << err;
+  EXPECT_NE(pdf, std::string::npos) << err;
+  EXPECT_EQ((*summary_)["orphan_manifests"], json::array({"lost.toml"}));
+  EXPECT_EQ((*summary_)["other_files"], json::array({"notes.pdf"}));
+  const std::string html = testing::read_file(dir_->path() / "out" / "report.html");
+  EXPECT_NE(html.find("notes.pdf"), std::string::npos);
+  EXPECT_NE(html.find("lost.toml"), std::string::npos);
 }
 
 TEST_F(SessionReport, OperatingPointIsTheRecordedOne) {
