@@ -87,7 +87,7 @@ TEST_F(BadArguments, Sweep) {
 TEST_F(BadArguments, Acquire) {
   const std::string rec = file("rec.csv", "time_s,a\n0,1\n0.001,2\n").string();
   for (const BadCase& c : std::vector<BadCase>{
-           {"acquire", "required"},
+           {"acquire", "REC is missing"},
            {"acquire " + rec, "rec.toml"},  // checks only, but needs the manifest
            {"acquire " + rec + " --out " + out() + " -n 0", "samples-per-rev"},
            {"acquire " + rec + " --out " + out() + " -n -5", "samples-per-rev"},
