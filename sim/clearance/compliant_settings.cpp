@@ -15,13 +15,15 @@ void read_compliant_settings(TomlSection& s, ClearanceSettings& c) {
   if (s.has("integrator"))
     s.fail("integrator", "is not used with model = \"compliant\" (always CVODE BDF with a dense Jacobian); remove it");
   CompliantSettings& k = c.compliant;
-  const std::string damping = s.choice("damping", {"flores", "hunt-crossley", "lankarani-nikravesh"}, "flores");
-  k.damping = damping == "flores"          ? DampingLaw::flores
+  const std::string damping =
+      s.choice("damping", {"calibrated", "flores", "hunt-crossley", "lankarani-nikravesh"}, "calibrated");
+  k.damping = damping == "calibrated"      ? DampingLaw::calibrated
+              : damping == "flores"        ? DampingLaw::flores
               : damping == "hunt-crossley" ? DampingLaw::hunt_crossley
                                            : DampingLaw::lankarani_nikravesh;
-  if (k.damping == DampingLaw::flores && !(c.restitution > 0))
-    s.fail("restitution", "= 0 cannot be used with damping = \"flores\" (its damping 8(1 - e)/(5e) is infinite); "
-                          "give e > 0 or another damping law");
+  if ((k.damping == DampingLaw::flores || k.damping == DampingLaw::calibrated) && !(c.restitution >= 0.01))
+    s.fail("restitution", "must be >= 0.01 with damping = \"" + damping + "\" (its damping grows without bound as "
+                          "e -> 0); give e >= 0.01 or damping = \"hunt-crossley\"");
   if (s.has("contact_stiffness_N_per_m_n")) {
     k.stiffness_N_per_m_n = s.number("contact_stiffness_N_per_m_n");
     if (!(k.stiffness_N_per_m_n > 0) || !(k.stiffness_N_per_m_n < 1e20))

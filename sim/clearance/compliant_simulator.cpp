@@ -23,7 +23,7 @@ CompliantSimulator::Impl::Impl(const ClearanceModel& m, const CrankMotion& c, co
     throw RunError("compliant clearance model: no contact stiffness (the scene resolves it; see README)");
   law = {k.stiffness_N_per_m_n, k.exponent, k.damping, s.restitution};
   friction = {s.friction_coefficient, k.friction_stick_speed_m_s, k.friction_slip_speed_m_s};
-  hysteresis = hysteresis_factor(k.damping, s.restitution);
+  hysteresis = hysteresis_factor(k.damping, s.restitution, k.exponent);
 }
 
 double CompliantSimulator::Impl::rebase(double time) {

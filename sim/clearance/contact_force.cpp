@@ -3,10 +3,13 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/clearance/restitution_calibration.hpp"
+
 namespace fourbar {
 
 const char* to_string(DampingLaw d) {
   switch (d) {
+    case DampingLaw::calibrated: return "calibrated";
     case DampingLaw::hunt_crossley: return "hunt-crossley";
     case DampingLaw::lankarani_nikravesh: return "lankarani-nikravesh";
     case DampingLaw::flores: return "flores";
@@ -14,8 +17,10 @@ const char* to_string(DampingLaw d) {
   return "?";
 }
 
-double hysteresis_factor(DampingLaw law, double e) {
+double hysteresis_factor(DampingLaw law, double e, double n) {
   switch (law) {
+    case DampingLaw::calibrated:
+      return e > 0 ? calibrated_hysteresis(e, n) : std::numeric_limits<double>::infinity();
     case DampingLaw::hunt_crossley: return 1.5 * (1.0 - e);
     case DampingLaw::lankarani_nikravesh: return 0.75 * (1.0 - e * e);
     case DampingLaw::flores:

@@ -8,13 +8,16 @@
 // the onset of this contact):
 //   F_n = K·δⁿ·(1 + χ·δ̇),  χ = c(e)/v⁻,  F_n clamped at 0 (no adhesion)
 // with the hysteresis factor c(e) of the chosen law:
+//   calibrated (default): c solved so that the collision really rebounds
+//                         with e (restitution_calibration.hpp)
 //   Hunt & Crossley (1975), as usually quoted:   c = 3(1 − e)/2
 //   Lankarani & Nikravesh (1990):                c = 3(1 − e²)/4
 //   Flores, Machado, Silva & Martins (2011):     c = 8(1 − e)/(5e)
-// (the first two from an energy balance valid for e near 1; Flores et al.'s
-// from an integration of the whole compression and restitution phases, meant
-// for any e; tests/sim/clearance/test_contact_force.cpp measures the
-// restitution each one really gives.) The elastic part K·δⁿ stores
+// (the two older ones from an energy balance valid for e near 1; Flores et
+// al.'s from an approximate integration of both phases, meant for any e.
+// tests/sim/clearance/test_contact_force.cpp measures the restitution each
+// one really gives: with n = 1.5 Flores et al.'s gives 0.47 for e = 0.5 and
+// 0.26 for 0.3, which is why the calibrated law is the default.) The elastic part K·δⁿ stores
 // K·δⁿ⁺¹/(n + 1); everything else is dissipated: (F_n − K·δⁿ)·δ̇ ≥ 0.
 //
 // Friction (Ambrósio 2002, "modified Coulomb law"): F_t = −μ·c_d(|v_t|)·F_n·
@@ -28,19 +31,20 @@
 
 namespace fourbar {
 
-enum class DampingLaw { hunt_crossley, lankarani_nikravesh, flores };
+enum class DampingLaw { calibrated, hunt_crossley, lankarani_nikravesh, flores };
 
 const char* to_string(DampingLaw d);
 
 struct NormalForceLaw {
   double stiffness = 0;   ///< K, N/mⁿ
   double exponent = 1.5;  ///< n
-  DampingLaw damping = DampingLaw::flores;
+  DampingLaw damping = DampingLaw::calibrated;
   double restitution = 1;  ///< e the damping is derived from
 };
 
-/// c(e) above: χ·v⁻. 0 at e = 1; +∞ for Flores et al. at e = 0.
-double hysteresis_factor(DampingLaw law, double restitution);
+/// c(e) above: χ·v⁻ (n, the exponent, matters for the calibrated law only).
+/// 0 at e = 1; +∞ for Flores et al. and the calibrated law at e = 0.
+double hysteresis_factor(DampingLaw law, double restitution, double exponent = 1.5);
 
 /// K·δⁿ for δ > 0, else 0.
 double elastic_force_N(const NormalForceLaw& law, double penetration_m);

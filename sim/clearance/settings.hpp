@@ -33,7 +33,7 @@ const char* to_string(ClearanceKind k);
 
 /// The compliant model's contact (model = "compliant"; README "Compliant contact").
 struct CompliantSettings {
-  DampingLaw damping = DampingLaw::flores;
+  DampingLaw damping = DampingLaw::calibrated;
   /// K in N/mⁿ: given (contact_stiffness_N_per_m_n) or computed from the
   /// rig's bearing (contact_stiffness.hpp) when the scene is loaded.
   double stiffness_N_per_m_n = 0;
