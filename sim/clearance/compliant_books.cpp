@@ -117,10 +117,27 @@ ClearanceSample CompliantSimulator::Impl::sample(double absolute_time) {
 void CompliantSimulator::Impl::track_contact(double ta, double tb) {
   if (!ep.active || !(tb > ta)) return;
   const double w = scale.deviation.speed_rad_s;
+  auto at = [&](double time) {
+    const ContactState k = evaluate(time, state_at(time));
+    books.diag.max_penetration = std::max(books.diag.max_penetration, k.penetration_m / model.clearance_m());
+    ep.rec.max_penetration_m = std::max(ep.rec.max_penetration_m, k.penetration_m);
+    return k;
+  };
+  // The step's middle and end; a middle above both ends and above the peak
+  // so far is refined by Brent's method on the dense output (the step's
+  // start was the previous step's end).
+  const double tm = 0.5 * (ta + tb);
+  const ContactState km = at(tm), kb = at(tb);
+  double best = std::max(km.normal_force_N, kb.normal_force_N);
+  if (km.normal_force_N > kb.normal_force_N && km.normal_force_N > ep.rec.peak_force_N) {
+    const auto r = boost::math::tools::brent_find_minima([&](double x) { return -at(x).normal_force_N; }, ta, tb, 40);
+    best = std::max(best, -r.second);
+  }
+  ep.rec.peak_force_N = std::max(ep.rec.peak_force_N, best);
   // First cycle: compression until δ̇ < 0, restitution until δ̇ > 0 again
   // (then the pin stays on the wall) or the release (a root of δ).
   if (ep.phase < 2) {
-    const double rate_b = evaluate(tb, state_at(tb)).bearing.normal_speed_m_s;
+    const double rate_b = kb.bearing.normal_speed_m_s;
     if (ep.phase == 0 && rate_b < 0) ep.phase = 1;
     if (ep.phase == 1 && rate_b > 0) {
       auto rate = [&](double x) { return evaluate(x, state_at(x)).bearing.normal_speed_m_s; };
@@ -130,27 +147,6 @@ void CompliantSimulator::Impl::track_contact(double ta, double tb) {
       ep.phase = 2;
     }
   }
-  // Peak force: four points of the step's dense output; an interior sample
-  // above the peak so far is refined by Brent's method on the dense output.
-  constexpr int kPoints = 4;
-  auto force = [&](double time) {
-    const ContactState k = evaluate(time, state_at(time));
-    books.diag.max_penetration = std::max(books.diag.max_penetration, k.penetration_m / model.clearance_m());
-    ep.rec.max_penetration_m = std::max(ep.rec.max_penetration_m, k.penetration_m);
-    return k.normal_force_N;
-  };
-  double best = -1;
-  int best_i = 0;
-  for (int i = 1; i <= kPoints; ++i) {
-    const double f = force(ta + (tb - ta) * i / kPoints);
-    if (f > best) best = f, best_i = i;
-  }
-  if (best_i < kPoints && best > ep.rec.peak_force_N) {
-    const double a = ta + (tb - ta) * (best_i - 1) / kPoints, b = ta + (tb - ta) * (best_i + 1) / kPoints;
-    const auto r = boost::math::tools::brent_find_minima([&](double x) { return -force(x); }, a, b, 40);
-    best = std::max(best, -r.second);
-  }
-  ep.rec.peak_force_N = std::max(ep.rec.peak_force_N, best);
 }
 
 void CompliantSimulator::Impl::onset(double time, StiffState& y) {

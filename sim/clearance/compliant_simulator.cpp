@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "common/error.hpp"
@@ -152,6 +153,12 @@ LinkMotion CompliantSimulator::current_links() { return impl_->evaluate(impl_->t
 const std::vector<ClearanceSample>& CompliantSimulator::samples() const { return impl_->books.samples; }
 const std::vector<ImpactRecord>& CompliantSimulator::impacts() const { return impl_->books.contacts; }
 const std::vector<RevolutionRecord>& CompliantSimulator::revolutions() const { return impl_->books.revolutions; }
+
+std::string CompliantSimulator::integrator_counters() const {
+  const StiffIntegrator::Counters c = impl_->integ.counters();
+  return "rhs " + std::to_string(c.rhs) + ", jacobians " + std::to_string(c.jacobians) + ", error-test failures " +
+         std::to_string(c.error_failures) + ", Newton failures " + std::to_string(c.newton_failures);
+}
 
 ClearanceDiagnostics CompliantSimulator::diagnostics() {
   Impl& s = *impl_;

@@ -21,6 +21,7 @@
 // virtual rig use either.
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sim/clearance/crank_motion.hpp"
@@ -60,6 +61,8 @@ class CompliantSimulator {
   const std::vector<ImpactRecord>& impacts() const;
   const std::vector<RevolutionRecord>& revolutions() const;
   ClearanceDiagnostics diagnostics();
+  /// The BDF integrator's counters: "rhs N, jacobians N, error-test failures N, Newton failures N".
+  std::string integrator_counters() const;
 
  private:
   struct Impl;

@@ -60,9 +60,9 @@ int root_fn(double t, N_Vector y, double* g, void* user) {
   return 0;
 }
 
-/// Forward differences over the coupled columns (CVODE's own increment rule:
-/// σ_j = max(√u·|y_j|, r0/w_j) with the error weights w, here simplified to
-/// √u·max(|y_j|, tol-scaled floor)); the quadrature columns stay zero.
+/// Forward differences over the coupled columns with the increment
+/// √u·max(|y_j|, 1e-3) (the state is scaled to order one); the quadrature
+/// columns stay zero.
 int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
   auto* self = static_cast<StiffIntegrator*>(user);
   StiffState yy, f0, f1;
@@ -125,6 +125,7 @@ void StiffIntegrator::reset(StiffSystem& system, double t0, const StiffState& y0
     check(CVodeRootInit(c.mem, 1, root_fn), "root finding");
     c.initialised = true;
   } else {
+    before_reset_ = counters();
     check(CVodeReInit(c.mem, t0, c.y), "reinit");
   }
 }
@@ -149,6 +150,25 @@ StiffIntegrator::Step StiffIntegrator::step(double t_stop) {
   ++steps_;
   stepped_ = true;
   return s;
+}
+
+StiffIntegrator::Counters StiffIntegrator::counters() const {
+  Counters c = since_reset();
+  c.rhs += before_reset_.rhs;
+  c.jacobians += before_reset_.jacobians;
+  c.error_failures += before_reset_.error_failures;
+  c.newton_failures += before_reset_.newton_failures;
+  return c;
+}
+
+StiffIntegrator::Counters StiffIntegrator::since_reset() const {
+  Counters c;
+  if (!cv_->initialised) return c;
+  CVodeGetNumRhsEvals(cv_->mem, &c.rhs);
+  CVodeGetNumJacEvals(cv_->mem, &c.jacobians);
+  CVodeGetNumErrTestFails(cv_->mem, &c.error_failures);
+  CVodeGetNumNonlinSolvConvFails(cv_->mem, &c.newton_failures);
+  return c;
 }
 
 void StiffIntegrator::interpolate(double t, StiffState& y) {

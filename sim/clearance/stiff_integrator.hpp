@@ -49,6 +49,18 @@ class StiffIntegrator {
   void interpolate(double t, StiffState& y);
 
   std::size_t steps() const { return steps_; }
+  /// CVODE's counters since construction (summed over restarts) (for benches): right-hand sides,
+  /// Jacobians, error-test and Newton convergence failures.
+  struct Counters {
+    long rhs = 0, jacobians = 0, error_failures = 0, newton_failures = 0;
+  };
+  Counters counters() const;
+
+ private:
+  Counters since_reset() const;
+  Counters before_reset_;
+
+ public:
   StiffSystem& system() { return *system_; }
   std::size_t coupled() const { return coupled_; }
 
