@@ -49,6 +49,22 @@ std::string outputs_help() {
   s += help_line("statistical_window", "W: turns per window of the statistical criterion (default 20)");
   s += help_line("statistical_tolerance", "relative agreement of the two windows' means (default 0.05)");
   s += help_line("tables", "extra CSV files: [\"impacts\", \"revolutions\"] (default none)");
+  s += help_line("model", "\"three-mode\" (default: following / free flight / Newton impacts) or \"compliant\"");
+  s += "\nWith [clearance] model = \"compliant\" (continuous contact force; no contact, following_friction,\n"
+       "integrator keys; CVODE BDF):\n";
+  s += help_line("damping", "\"calibrated\" (default: rebounds with e), \"flores\", \"hunt-crossley\" or\n"
+                 "                      \"lankarani-nikravesh\" (damping from e)");
+  s += help_line("contact_stiffness_N_per_m_n",
+                 "K in N/m^n > 0 (default: from the rig's bearing_length_mm, moduli, Poisson ratios)");
+  s += help_line("contact_exponent", "n in [1, 3] (default 1.5; must be 1.5 when K comes from the rig)");
+  s += help_line("friction_coefficient", "wall friction mu >= 0 (default 0)");
+  s += help_line("friction_stick_speed_mm_s", "v0: no friction below this slip speed (default 0.1)");
+  s += help_line("friction_slip_speed_mm_s", "v1: full mu*F_n above (default 1; cubic ramp between)");
+  s += help_line("damping_floor_speed_mm_s", "least approach speed in the damping c(e)/v (default 0.01)");
+  s += "impacts.csv (compliant): one row per contact: crank_deg, time_s, revolution, normal_impulse_Ns (first\n"
+       "compression-restitution cycle), contact_impulse_Ns (whole contact), tangential_impulse_Ns, eta_deg,\n"
+       "approach_speed_m_s, rebound_speed_m_s, peak_force_N, contact_duration_s, max_penetration_mm,\n"
+       "energy_loss_J, mode_after (1: the pin stayed on the wall after the first cycle).\n";
   return s;
 }
 
@@ -78,6 +94,9 @@ PendingFile write_series(const std::filesystem::path& csv_path, const Provenance
   return csv;
 }
 
+/// Three-mode impacts: one row per impact faster than the settle speed. A
+/// rebound slower than the settle speed is stopped by a plastic (pulling)
+/// impulse; the row's impulse, loss and motor impulse are the totals with it.
 PendingFile write_impacts(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run) {
   auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
                 {"crank_deg", "time_s", "revolution", "normal_impulse_Ns", "tangential_impulse_Ns", "eta_deg",
@@ -86,9 +105,28 @@ PendingFile write_impacts(const std::filesystem::path& path, const Provenance& p
   for (const ImpactRecord& r : run.impacts) {
     const ImpactResult& x = r.result;
     const double row[] = {units::rad_to_deg(r.crank_angle_rad), r.time_s, static_cast<double>(r.revolution),
-                          x.normal_impulse_Ns, x.tangential_impulse_Ns, units::rad_to_deg(r.eta_rad),
-                          x.normal_speed_before_m_s, -x.normal_speed_after_m_s, x.tangential_speed_before_m_s,
-                          x.tangential_speed_after_m_s, x.stuck ? 1.0 : 0.0, x.energy_loss_J, x.motor_impulse_Nms,
+                          x.normal_impulse_Ns + r.settle_normal_impulse_Ns, x.tangential_impulse_Ns,
+                          units::rad_to_deg(r.eta_rad), x.normal_speed_before_m_s, -x.normal_speed_after_m_s,
+                          x.tangential_speed_before_m_s, x.tangential_speed_after_m_s, x.stuck ? 1.0 : 0.0,
+                          x.energy_loss_J + r.settle_energy_loss_J, x.motor_impulse_Nms + r.settle_motor_impulse_Nms,
+                          r.mode_after == ContactMode::following ? 1.0 : 0.0};
+    csv->row(row);
+  }
+  return csv;
+}
+
+/// Compliant contacts: one row per contact, onset to release.
+PendingFile write_contacts(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run) {
+  auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
+                {"crank_deg", "time_s", "revolution", "normal_impulse_Ns", "contact_impulse_Ns",
+                 "tangential_impulse_Ns", "eta_deg", "approach_speed_m_s", "rebound_speed_m_s", "peak_force_N",
+                 "contact_duration_s", "max_penetration_mm", "energy_loss_J", "mode_after"});
+  for (const ImpactRecord& r : run.impacts) {
+    const ImpactResult& x = r.result;
+    const double row[] = {units::rad_to_deg(r.crank_angle_rad), r.time_s, static_cast<double>(r.revolution),
+                          x.normal_impulse_Ns, r.contact_impulse_Ns, x.tangential_impulse_Ns,
+                          units::rad_to_deg(r.eta_rad), x.normal_speed_before_m_s, -x.normal_speed_after_m_s,
+                          r.peak_force_N, r.contact_duration_s, units::m_to_mm(r.max_penetration_m), x.energy_loss_J,
                           r.mode_after == ContactMode::following ? 1.0 : 0.0};
     csv->row(row);
   }
@@ -128,6 +166,20 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
                    {"statistical_window", c.statistical_window},
                    {"statistical_tolerance", c.statistical_tolerance},
                    {"max_revolutions", c.max_revolutions}};
+  if (c.model == ClearanceKind::compliant) {
+    const CompliantSettings& k = c.compliant;
+    for (const char* key : {"contact", "following_friction", "integrator", "settle_speed_mm_s"}) j["settings"].erase(key);
+    j["settings"]["model"] = "compliant";
+    j["settings"]["integrator"] = "cvode-bdf";
+    j["settings"]["damping"] = to_string(k.damping);
+    j["settings"]["contact_stiffness_N_per_m_n"] = k.stiffness_N_per_m_n;
+    j["settings"]["contact_stiffness_source"] = k.stiffness_given ? "given" : "rig bearing (conformal cylinders)";
+    j["settings"]["contact_exponent"] = k.exponent;
+    j["settings"]["friction_stick_speed_mm_s"] = k.friction_stick_speed_m_s * 1e3;
+    j["settings"]["friction_slip_speed_mm_s"] = k.friction_slip_speed_m_s * 1e3;
+    j["settings"]["damping_floor_speed_mm_s"] = k.damping_floor_speed_m_s * 1e3;
+    j["settings"]["settle_speed_mm_s"] = c.settle_speed_m_s * 1e3;
+  }
   // Which criterion fired: "periodic with period k", "statistically steady
   // after N turns", or none within max_revolutions.
   const StationarityResult& st = run.statistics;
@@ -182,6 +234,10 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
                  {"max_residual_J", d.max_energy_residual_J},
                  {"scale_J", d.energy_scale_J},
                  {"residual_rel", std::abs(d.energy_residual_J) / d.energy_scale_J}};
+  if (c.model == ClearanceKind::compliant) {
+    j["energy"]["contact_damping_loss_J"] = d.impact_loss_J;
+    j["energy"]["elastic_energy_end_J"] = d.elastic_energy_end_J;
+  }
   return j;
 }
 
@@ -192,7 +248,8 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
   files.push_back(write_series(csv_path, prov, run.series));
   std::string extra;
   if (scene.clearance.write_impacts) {
-    files.push_back(write_impacts(dir / "impacts.csv", prov, run));
+    files.push_back(scene.clearance.model == ClearanceKind::compliant ? write_contacts(dir / "impacts.csv", prov, run)
+                                                                       : write_impacts(dir / "impacts.csv", prov, run));
     extra += ", impacts.csv (" + std::to_string(run.impacts.size()) + " impacts)";
   }
   if (scene.clearance.write_revolutions) {

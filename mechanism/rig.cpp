@@ -119,6 +119,40 @@ Link read_link(TomlSection& root, const char* name) {
   return link;
 }
 
+/// The bearing's bodies in the rig's [clearance] table (see BearingBodies).
+void read_bearing_bodies(TomlSection& c, Rig& rig) {
+  BearingBodies& b = rig.bearing;
+  auto positive = [&](const char* key, double scale) -> std::optional<double> {
+    if (!c.has(key)) return std::nullopt;
+    const double v = c.number(key);
+    if (!(v > 0) || !std::isfinite(v)) c.fail(key, "must be a positive number");
+    return v * scale;
+  };
+  auto poisson = [&](const char* key) -> std::optional<double> {
+    if (!c.has(key)) return std::nullopt;
+    const double v = c.number(key);
+    if (!(v > -1 && v < 0.5))
+      c.fail(key, "must lie in (-1, 0.5): an isotropic elastic solid has -1 < nu < 0.5 (steel 0.3, bronze 0.34)");
+    return v;
+  };
+  b.pin_radius_m = positive("pin_radius_mm", 1e-3);
+  b.bushing_radius_m = positive("bushing_radius_mm", 1e-3);
+  b.length_m = positive("bearing_length_mm", 1e-3);
+  b.pin_youngs_modulus_Pa = positive("pin_youngs_modulus_GPa", 1e9);
+  b.pin_poisson_ratio = poisson("pin_poisson_ratio");
+  b.bushing_youngs_modulus_Pa = positive("bushing_youngs_modulus_GPa", 1e9);
+  b.bushing_poisson_ratio = poisson("bushing_poisson_ratio");
+  if (b.pin_radius_m && b.bushing_radius_m) {
+    const double fit = *b.bushing_radius_m - *b.pin_radius_m;
+    if (!(std::abs(fit - rig.radial_clearance_m) <= 1e-9 * std::max(1e-3, *b.bushing_radius_m)))
+      c.fail("pin_radius_mm", "= " + format_number(units::m_to_mm(*b.pin_radius_m)) +
+                                  " does not fit the bushing with the stated clearance: bushing_radius_mm - "
+                                  "pin_radius_mm = " + format_number(units::m_to_mm(fit)) + " mm but radial_mm = " +
+                                  format_number(units::m_to_mm(rig.radial_clearance_m)) +
+                                  "; make them agree (or give only one of the two radii)");
+  }
+}
+
 }  // namespace
 
 Rig load_rig(const std::filesystem::path& file) {
@@ -139,6 +173,7 @@ Rig load_rig(const std::filesystem::path& file) {
   rig.rocker = read_link(root, "rocker");
   if (auto c = root.optional_section("clearance")) {
     rig.radial_clearance_m = units::mm_to_m(c->non_negative("radial_mm"));
+    read_bearing_bodies(*c, rig);
     c->finish();
   }
   root.optional_string("notes");

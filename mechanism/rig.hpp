@@ -9,6 +9,7 @@
 // rocker's at S4 from O4. All values SI.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace fourbar {
@@ -36,6 +37,16 @@ enum class GrashofClass { crank_rocker, double_crank, double_rocker, rocker_cran
 const char* to_string(Assembly a);
 const char* to_string(GrashofClass c);
 
+/// The coupler–rocker bearing's pin and bushing as elastic bodies, for the
+/// compliant contact model's stiffness (rig file `[clearance]`, all optional;
+/// validated at load: radii, length and moduli > 0, Poisson ratios in
+/// (−1, 0.5), bushing radius = pin radius + radial clearance).
+struct BearingBodies {
+  std::optional<double> pin_radius_m, bushing_radius_m, length_m;
+  std::optional<double> pin_youngs_modulus_Pa, pin_poisson_ratio;
+  std::optional<double> bushing_youngs_modulus_Pa, bushing_poisson_ratio;
+};
+
 struct Rig {
   std::string name;
   double ground_length_m = 0;  ///< l1, O2→O4
@@ -45,6 +56,7 @@ struct Rig {
   double gravity_m_s2 = 9.80665;
   Assembly assembly = Assembly::open;
   double radial_clearance_m = 0;  ///< coupler–rocker bearing, pin vs bushing
+  BearingBodies bearing;          ///< the bearing's bodies (compliant contact only)
   std::filesystem::path source;   ///< the file it was read from (may be empty)
 
   /// +1 for the open assembly, −1 for the crossed one.

@@ -49,6 +49,8 @@ constexpr std::array kClearanceOutputs{
     ClearanceOutputSpec{"mode", Quantity::time, ClearanceExtra::mode, "1 = following (pin on the bushing wall), 0 = free flight"},
     ClearanceOutputSpec{"gap_mm", Quantity::time, ClearanceExtra::gap, "clearance left between pin and bushing, ξ − |e| (0 in following)"},
     ClearanceOutputSpec{"eta_deg", Quantity::time, ClearanceExtra::eta, "direction η of the eccentricity, bushing centre to pin (continuous)"},
+    ClearanceOutputSpec{"contact_force_N", Quantity::time, ClearanceExtra::contact_force, "normal contact force of the bushing on the pin: N in following, 0 in free flight (compliant: F_n(δ, δ̇))"},
+    ClearanceOutputSpec{"penetration_mm", Quantity::time, ClearanceExtra::penetration, "penetration δ = |e| − ξ where > 0 (compliant contact; 0 to round-off in the three-mode model)"},
 };
 
 }  // namespace

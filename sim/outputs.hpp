@@ -33,7 +33,7 @@ const OutputSpec* find_output(std::string_view name);
 
 /// Outputs of the clearance model: the nominal quantities it computes
 /// (`quantity`) and its own (`extra` ≠ none).
-enum class ClearanceExtra { none, mode, gap, eta };
+enum class ClearanceExtra { none, mode, gap, eta, contact_force, penetration };
 struct ClearanceOutputSpec {
   std::string_view name;
   Quantity quantity;     ///< meaningful when extra == none

@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "common/toml_section.hpp"
 #include "common/units.hpp"
+#include "sim/clearance/contact_stiffness.hpp"
 #include "sim/outputs.hpp"
 
 namespace fourbar {
@@ -70,6 +71,8 @@ Scene load_scene(const std::filesystem::path& file) {
                                  format_double(std::round(units::m_to_mm(margin) * 1e6) / 1e6) +
                                  " mm of a toggle, so the pin on the bushing wall cannot close it; use a clearance "
                                  "below that");
+    if (scene.clearance.model == ClearanceKind::compliant)
+      resolve_contact_stiffness(*sec, *scene.rig, scene.clearance_m(), scene.clearance);
     sec->finish();
   } else if (clearance) {
     root.fail("clearance", "is missing: model = \"clearance\" needs a [clearance] table (at least restitution)");

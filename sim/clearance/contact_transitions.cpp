@@ -50,7 +50,7 @@ void ClearanceSimulator::Impl::restart_segment() {
   }
 }
 
-ContactMode ClearanceSimulator::Impl::after_contact(double time, const LinkMotion& links) {
+ContactMode ClearanceSimulator::Impl::after_contact(double time, const LinkMotion& links, ImpactRecord* rec) {
   const CrankState c = crank_at(time);
   const BearingState b = model.bearing(c, links);
   if (b.normal_speed_m_s < -settings.settle_speed_m_s) {
@@ -63,6 +63,11 @@ ContactMode ClearanceSimulator::Impl::after_contact(double time, const LinkMotio
   ++books.diag.settles;
   energy_books.work_impulse.add(c.speed_rad_s * settle.motor_impulse_Nms);
   energy_books.loss.add(settle.energy_loss_J);
+  if (rec) {
+    rec->settle_normal_impulse_Ns = settle.normal_impulse_Ns;
+    rec->settle_energy_loss_J = settle.energy_loss_J;
+    rec->settle_motor_impulse_Nms = settle.motor_impulse_Nms;
+  }
   double eta, eta_rate;
   to_following(time, settle.after, eta, eta_rate);
   choose_slip(c, eta, eta_rate);
@@ -136,7 +141,7 @@ void ClearanceSimulator::Impl::handle_impact(double time) {
     ++r.impacts;
     r.sum_normal_impulse_Ns += rec.result.normal_impulse_Ns;
   }
-  rec.mode_after = after_contact(time, rec.result.after);
+  rec.mode_after = after_contact(time, rec.result.after, &rec);
   if (counted) books.impacts.push_back(rec);
 }
 

@@ -8,31 +8,16 @@
 #include <cmath>
 
 #include "mechanism/kinematics.hpp"
+#include "sim/clearance/deviation_state.hpp"
 #include "sim/clearance/simulator_state.hpp"
 
 namespace fourbar {
-
-namespace {
-
-Vec2 rotate(Vec2 u, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * u.x - s * u.y, s * u.x + c * u.y};
-}
-
-/// Angle of b relative to a, in (−π, π].
-double angle_between(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
-
-}  // namespace
 
 // ---- state conversion -------------------------------------------------
 
 LinkMotion ClearanceSimulator::Impl::free_links(double time, const OdeState& y, NominalMotion* nominal_out) const {
   const NominalMotion nm = solve_motion(model.rig(), crank_at(time));
-  LinkMotion m;
-  m.u3 = rotate(nm.pose.u3, y[0] * scale.delta);
-  m.u4 = rotate(nm.pose.u4, y[1] * scale.delta);
-  m.omega3_rad_s = nm.omega3_rad_s + y[2] * scale.delta * scale.speed_rad_s;
-  m.omega4_rad_s = nm.omega4_rad_s + y[3] * scale.delta * scale.speed_rad_s;
+  const LinkMotion m = deviation_links(nm, {scale.delta, scale.speed_rad_s}, y.data());
   if (nominal_out) *nominal_out = nm;
   return m;
 }
@@ -40,10 +25,7 @@ LinkMotion ClearanceSimulator::Impl::free_links(double time, const OdeState& y, 
 OdeState ClearanceSimulator::Impl::free_state(double time, const LinkMotion& m) const {
   const NominalMotion nm = solve_motion(model.rig(), crank_at(time));
   OdeState y{};
-  y[0] = angle_between(nm.pose.u3, m.u3) / scale.delta;
-  y[1] = angle_between(nm.pose.u4, m.u4) / scale.delta;
-  y[2] = (m.omega3_rad_s - nm.omega3_rad_s) / (scale.delta * scale.speed_rad_s);
-  y[3] = (m.omega4_rad_s - nm.omega4_rad_s) / (scale.delta * scale.speed_rad_s);
+  deviation_state(nm, {scale.delta, scale.speed_rad_s}, m, y.data());
   y[4] = energy_books.work_closed.value() / scale.energy_J;  // crank work, from work_seed
   return y;
 }

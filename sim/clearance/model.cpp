@@ -72,6 +72,14 @@ void ClearanceModel::free_accelerations(const CrankState& crank, Vec2 u2, const 
   alpha4 = -m4_S4_g_ * m.u4.x / I4_;
 }
 
+void ClearanceModel::forced_accelerations(const CrankState& crank, Vec2 u2, const LinkMotion& m, Vec2 p,
+                                          double& alpha3, double& alpha4) const {
+  free_accelerations(crank, u2, m, alpha3, alpha4);
+  const Vec2 e{(l2_ * u2.x - l1_) + (l3_ * m.u3.x - l4_ * m.u4.x), l2_ * u2.y + (l3_ * m.u3.y - l4_ * m.u4.y)};
+  alpha3 += dot(p, l3_ * m.u3.perp()) / I3_;
+  alpha4 -= dot(p, (l4_ * m.u4 + e).perp()) / I4_;
+}
+
 double ClearanceModel::crank_torque_Nm(const CrankState& crank, const LinkMotion& m, double alpha3,
                                        Vec2 pin_force_N) const {
   return crank_torque_Nm(crank, unit(crank.angle_rad), m, alpha3, pin_force_N);

@@ -82,6 +82,12 @@ class ClearanceModel {
   /// The same with the crank direction u2 = (cos θ2, sin θ2) already known.
   void free_accelerations(const CrankState& crank, Vec2 u2, const LinkMotion& m, double& alpha3, double& alpha4) const;
 
+  /// Angular accelerations with a force `pin_force_N` on the pin at B (and
+  /// its reaction on the rocker at B): free flight plus M⁻¹·(Q3, Q4) with
+  /// Q3 = P·(l3·u3⊥), Q4 = −P·((B − O4)⊥) (the compliant contact model).
+  void forced_accelerations(const CrankState& crank, Vec2 u2, const LinkMotion& m, Vec2 pin_force_N, double& alpha3,
+                            double& alpha4) const;
+
   /// Motor torque that holds the prescribed crank motion, given the coupler
   /// acceleration and the contact force `pin_force_N` on the pin (zero in free flight).
   double crank_torque_Nm(const CrankState& crank, const LinkMotion& m, double alpha3, Vec2 pin_force_N) const;

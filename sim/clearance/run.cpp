@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/units.hpp"
+#include "sim/clearance/compliant_simulator.hpp"
 #include "sim/outputs.hpp"
 
 namespace fourbar {
@@ -33,6 +34,8 @@ double clearance_column_value(const ClearanceOutputSpec& spec, const ClearanceSa
     case ClearanceExtra::mode: return s.mode == ContactMode::following ? 1.0 : 0.0;
     case ClearanceExtra::gap: return units::m_to_mm(s.gap_m);
     case ClearanceExtra::eta: return units::rad_to_deg(eta);
+    case ClearanceExtra::contact_force: return s.normal_force_N;
+    case ClearanceExtra::penetration: return units::m_to_mm(s.penetration_m);
     case ClearanceExtra::none: break;
   }
   switch (spec.quantity) {
@@ -68,13 +71,15 @@ ClearanceRun run_clearance(const Scene& scene) {
   return run_clearance(scene, ConstantSpeedCrank(scene.start_angle_rad, scene.crank_speed_rad_s));
 }
 
-ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank) {
+namespace {
+
+/// The run on either simulator (ClearanceSimulator or CompliantSimulator: same interface).
+template <class Simulator>
+ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& sim) {
   using Criterion = ClearanceSettings::SteadyCriterion;
   const ClearanceSettings& cs = scene.clearance;
   ClearanceRun out;
   out.clearance_m = scene.clearance_m();
-  const ClearanceModel model(*scene.rig, out.clearance_m);
-  ClearanceSimulator sim(model, crank, cs);
   const CrankState c0 = crank.at(0.0);
   const double dir = c0.speed_rad_s > 0 ? 1.0 : -1.0;
   auto turn_time = [&](double turns) { return crank.time_at_angle(c0.angle_rad + dir * units::kTwoPi * turns); };
@@ -160,6 +165,18 @@ ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank) {
     out.revolutions.resize(out.revolutions_simulated);
   out.diagnostics = sim.diagnostics();
   return out;
+}
+
+}  // namespace
+
+ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank) {
+  const ClearanceModel model(*scene.rig, scene.clearance_m());
+  if (scene.clearance.model == ClearanceKind::compliant) {
+    CompliantSimulator sim(model, crank, scene.clearance);
+    return run_with(scene, crank, sim);
+  }
+  ClearanceSimulator sim(model, crank, scene.clearance);
+  return run_with(scene, crank, sim);
 }
 
 }  // namespace fourbar

@@ -128,6 +128,7 @@ ClearanceSample ClearanceSimulator::Impl::sample(double absolute_time) {
     s.alpha3_rad_s2 = f.alpha3_rad_s2;
     s.alpha4_rad_s2 = f.alpha4_rad_s2;
     s.bearing_force_N = f.pin_force();
+    s.normal_force_N = f.normal_force_N;
     s.crank_torque_Nm = f.crank_torque_Nm;
   } else {
     s.links = free_links(time, y);
@@ -136,6 +137,7 @@ ClearanceSample ClearanceSimulator::Impl::sample(double absolute_time) {
   }
   const BearingState b = model.bearing(s.crank, s.links);
   s.gap_m = b.gap_m;
+  s.penetration_m = std::max(0.0, -b.gap_m);
   s.eta_rad = std::atan2(b.normal.y, b.normal.x);
   s.kinetic_energy_J = model.kinetic_energy_J(s.crank, s.links);
   s.potential_energy_J = model.potential_energy_J(s.crank, s.links);

@@ -26,6 +26,8 @@ struct ClearanceSample {
   Vec2 bearing_force_N;  ///< force of the bushing on the pin (0 in free flight)
   double crank_torque_Nm = 0;
   double gap_m = 0;      ///< ξ − |e|
+  double normal_force_N = 0;  ///< normal contact force (N in following, 0 in free flight; compliant: F_n)
+  double penetration_m = 0;   ///< max(0, |e| − ξ): the compliant contact's δ (round-off in the three-mode model)
   double eta_rad = 0;    ///< direction of e (bushing centre → pin)
   double kinetic_energy_J = 0, potential_energy_J = 0;
 };
@@ -33,8 +35,16 @@ struct ClearanceSample {
 struct ImpactRecord {
   double time_s = 0, crank_angle_rad = 0, eta_rad = 0;
   int revolution = 0;
-  ImpactResult result;
+  ImpactResult result;  ///< three-mode: the Newton impact itself
   ContactMode mode_after = ContactMode::free_flight;
+  /// Three-mode: the plastic impulse that stopped a rebound slower than the
+  /// settle speed (0 when the pin flew off). result + settle is the total.
+  double settle_normal_impulse_Ns = 0, settle_energy_loss_J = 0, settle_motor_impulse_Nms = 0;
+  /// Compliant model: one contact from onset (time_s) to release. result's
+  /// normal impulse is that of the first compression–restitution cycle (the
+  /// impact); contact_impulse_Ns that of the whole contact; mode_after is
+  /// following when the pin stayed on the wall after the first cycle.
+  double peak_force_N = 0, contact_duration_s = 0, max_penetration_m = 0, contact_impulse_Ns = 0;
 };
 
 struct RevolutionRecord {
@@ -64,9 +74,10 @@ struct ClearanceDiagnostics {
   double max_penetration = 0;           ///< max (|e| − ξ)/ξ in free flight (0 if never out)
   double crank_work_J = 0;              ///< ∫τ·ω2 dt in the smooth phases
   double motor_impulse_work_J = 0;      ///< Σ ω2·τ̂ at impacts
-  double impact_loss_J = 0;             ///< Σ energy dissipated at impacts and settles
+  double impact_loss_J = 0;             ///< Σ energy dissipated at impacts and settles (compliant: contact damping)
   double friction_loss_J = 0;           ///< dissipated by wall friction in the following mode
   double energy_start_J = 0, energy_end_J = 0;
+  double elastic_energy_end_J = 0;      ///< compliant: K·δⁿ⁺¹/(n + 1) stored in the contact at the end
   double energy_residual_J = 0;         ///< ΔE − work + losses (impact and friction) at the end
   double max_energy_residual_J = 0;     ///< largest |residual| seen at any event or the end
   double energy_scale_J = 0;

@@ -1,10 +1,12 @@
 #pragma once
-// The scene's `[clearance]` table: how the three-mode clearance model runs.
-// Read and validated once at the boundary (scene loading); immutable after.
+// The scene's `[clearance]` table: which clearance model (three-mode or
+// compliant) and how it runs. Read and validated once at the boundary (scene
+// loading); immutable after.
 
 #include <optional>
 
 #include "common/toml_section.hpp"
+#include "sim/clearance/contact_force.hpp"
 
 namespace fourbar {
 
@@ -21,14 +23,36 @@ enum class IntegratorKind {
   odeint  ///< Boost.Odeint, Dormand–Prince 5(4) with dense output
 };
 
+/// Which clearance model: the thesis's three modes with instantaneous
+/// impacts, or a continuous (compliant) contact force.
+enum class ClearanceKind { three_mode, compliant };
+
 const char* to_string(ContactLaw c);
 const char* to_string(IntegratorKind k);
+const char* to_string(ClearanceKind k);
+
+/// The compliant model's contact (model = "compliant"; README "Compliant contact").
+struct CompliantSettings {
+  DampingLaw damping = DampingLaw::calibrated;
+  /// K in N/mⁿ: given (contact_stiffness_N_per_m_n) or computed from the
+  /// rig's bearing (contact_stiffness.hpp) when the scene is loaded.
+  double stiffness_N_per_m_n = 0;
+  bool stiffness_given = false;
+  double exponent = 1.5;                    ///< n
+  double friction_stick_speed_m_s = 1e-4;   ///< v0 of the friction law
+  double friction_slip_speed_m_s = 1e-3;    ///< v1 of the friction law
+  /// Approach speeds below this use it in χ = c(e)/v⁻ (a contact that begins
+  /// at rest, e.g. the start on the wall, would otherwise get infinite damping).
+  double damping_floor_speed_m_s = 1e-5;
+};
 
 struct ClearanceSettings {
+  ClearanceKind model = ClearanceKind::three_mode;
+  CompliantSettings compliant;               ///< model = compliant only
   std::optional<double> radial_clearance_m;  ///< overrides the rig's [clearance] radial_mm
   double restitution = 1.0;                  ///< Newton coefficient e in [0, 1]
   ContactLaw contact = ContactLaw::smooth;
-  double friction_coefficient = 0.0;         ///< Coulomb μ (stick-slip only)
+  double friction_coefficient = 0.0;         ///< Coulomb μ (stick-slip, or the compliant model's wall friction)
   /// μ also acts in the following mode: the pin slides on the bushing wall
   /// against Coulomb friction, or sticks (extension; the thesis's following
   /// mode is frictionless). Needs contact = stick-slip.
@@ -57,7 +81,12 @@ struct ClearanceSettings {
 
 /// Reads `[clearance]` from a scene. `rig_clearance_m` is the rig's value,
 /// used when the scene does not override it; the final clearance must be > 0.
+/// The compliant model's stiffness is left 0 unless given: the scene resolves
+/// it from the rig (resolve_contact_stiffness, contact_stiffness.hpp).
 ClearanceSettings read_clearance_settings(TomlSection& section, double rig_clearance_m);
+
+/// The compliant model's own keys of `[clearance]` (compliant_settings.cpp).
+void read_compliant_settings(TomlSection& section, ClearanceSettings& settings);
 
 const char* to_string(ClearanceSettings::SteadyCriterion c);
 

@@ -214,7 +214,8 @@ struct ClearanceSimulator::Impl {
   /// same mode and state, new origin, integrals booked.
   void restart_segment();
   /// Pin on the wall after an impact: free flight, or settle into following.
-  ContactMode after_contact(double time, const LinkMotion& links);
+  /// A settle's impulse, loss and motor impulse are added to `settle` when given.
+  ContactMode after_contact(double time, const LinkMotion& links, ImpactRecord* settle = nullptr);
   /// With wall friction, entering the following mode at (η, η̇): slide in the
   /// direction of the slip speed; at (nearly) zero slip stick if μ·N can
   /// hold the pin (η̇ is then set to ω4 exactly, the tiny kinetic energy

@@ -1,0 +1,82 @@
+// The compliant simulator's equations: the contact at one state (bearing
+// geometry, normal and friction force, accelerations, motor torque), the
+// ODE with its quadratures, the root witness, and the state conversion.
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/clearance/compliant_state.hpp"
+
+namespace fourbar {
+
+ContactState CompliantSimulator::Impl::evaluate(double time, const StiffState& y) const {
+  ContactState k;
+  const CrankState c = crank_at(time);
+  k.nominal = solve_motion(model.rig(), c);
+  k.links = deviation_links(k.nominal, scale.deviation, y.data());
+  const Vec2 u2 = k.nominal.pose.u2;
+  k.bearing = model.bearing(c, u2, k.links);
+  k.penetration_m = -k.bearing.gap_m;
+  if (k.penetration_m > 0) {
+    // A contact whose onset was not seen (entered and left inside one step)
+    // takes its damping from the present approach speed.
+    const double chi = ep.active ? ep.chi_s_per_m
+                                 : hysteresis / std::max(k.bearing.normal_speed_m_s,
+                                                         settings.compliant.damping_floor_speed_m_s);
+    k.normal_force_N = normal_force_N(law, k.penetration_m, k.bearing.normal_speed_m_s, chi);
+    k.friction_force_N = friction_force_N(friction, k.normal_force_N, k.bearing.tangential_speed_m_s);
+  }
+  k.pin_force_N = -k.normal_force_N * k.bearing.normal + k.friction_force_N * k.bearing.normal.perp();
+  model.forced_accelerations(c, u2, k.links, k.pin_force_N, k.alpha3_rad_s2, k.alpha4_rad_s2);
+  k.crank_torque_Nm = model.crank_torque_Nm(c, u2, k.links, k.alpha3_rad_s2, k.pin_force_N);
+  return k;
+}
+
+void CompliantSimulator::Impl::rhs(double time, const StiffState& y, StiffState& dy) {
+  const ContactState k = evaluate(time, y);
+  const double w = scale.deviation.speed_rad_s;
+  const double rate_scale = scale.deviation.delta * w;
+  dy[0] = y[2] * w;
+  dy[1] = y[3] * w;
+  dy[2] = (k.alpha3_rad_s2 - k.nominal.alpha3_rad_s2) / rate_scale;
+  dy[3] = (k.alpha4_rad_s2 - k.nominal.alpha4_rad_s2) / rate_scale;
+  dy[kWork] = k.crank_torque_Nm * crank_at(time).speed_rad_s / scale.energy_J;
+  // Damping dissipation (F_n − K·δⁿ)·δ̇ ≥ 0 and friction dissipation −F_t·v_t ≥ 0.
+  const double elastic = elastic_force_N(law, k.penetration_m);
+  dy[kContactLoss] = k.penetration_m > 0
+                         ? (k.normal_force_N - elastic) * k.bearing.normal_speed_m_s / scale.energy_J
+                         : 0.0;
+  dy[kFrictionLoss] = -k.friction_force_N * k.bearing.tangential_speed_m_s / scale.energy_J;
+  dy[kImpulseN] = k.normal_force_N * w / scale.force_N;
+  dy[kImpulseT] = k.friction_force_N * w / scale.force_N;
+}
+
+double CompliantSimulator::Impl::witness(double time, const StiffState& y) {
+  const CrankState c = crank_at(time);
+  const NominalMotion nm = solve_motion(model.rig(), c);
+  const LinkMotion m = deviation_links(nm, scale.deviation, y.data());
+  return -model.bearing(c, nm.pose.u2, m).gap_m / model.clearance_m();
+}
+
+StiffState CompliantSimulator::Impl::state_of(double time, const LinkMotion& m, const StiffState& q) const {
+  StiffState y = q;
+  deviation_state(solve_motion(model.rig(), crank_at(time)), scale.deviation, m, y.data());
+  return y;
+}
+
+StiffState CompliantSimulator::Impl::state_at(double time) {
+  StiffState y;
+  integ.interpolate(time, y);
+  return y;
+}
+
+double CompliantSimulator::Impl::mechanical_energy_J(double time, const LinkMotion& m) const {
+  const CrankState c = crank_at(time);
+  return model.kinetic_energy_J(c, m) + model.potential_energy_J(c, m);
+}
+
+double CompliantSimulator::Impl::total_energy_J(const ContactState& k, double time) const {
+  return mechanical_energy_J(time, k.links) + elastic_energy_J(law, k.penetration_m);
+}
+
+}  // namespace fourbar

@@ -1,0 +1,183 @@
+#include "sim/clearance/stiff_integrator.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/error.hpp"
+
+namespace fourbar {
+
+namespace {
+
+void check(int flag, const char* what) {
+  if (flag < 0) throw RunError(std::string("CVODE (BDF) ") + what + " failed (flag " + std::to_string(flag) + ")");
+}
+
+void silent_handler(int, const char*, const char*, char*, void*) {}
+
+void copy_in(N_Vector v, StiffState& a) {
+  const double* p = N_VGetArrayPointer(v);
+  std::copy(p, p + kStiffSize, a.begin());
+}
+
+void copy_out(const StiffState& a, N_Vector v) { std::copy(a.begin(), a.end(), N_VGetArrayPointer(v)); }
+
+}  // namespace
+
+struct StiffIntegrator::Cvode {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr, dky = nullptr;
+  SUNMatrix jac = nullptr;
+  SUNLinearSolver ls = nullptr;
+  void* mem = nullptr;
+  double tol = 0;
+  bool initialised = false;
+};
+
+namespace {
+
+int rhs_fn(double t, N_Vector y, N_Vector ydot, void* user) {
+  auto* self = static_cast<StiffIntegrator*>(user);
+  StiffState in, out;
+  copy_in(y, in);
+  self->system().rhs(t, in, out);
+  copy_out(out, ydot);
+  return 0;
+}
+
+int root_fn(double t, N_Vector y, double* g, void* user) {
+  auto* self = static_cast<StiffIntegrator*>(user);
+  StiffState in;
+  copy_in(y, in);
+  g[0] = self->system().witness(t, in);
+  return 0;
+}
+
+/// Forward differences over the coupled columns with the increment
+/// √u·max(|y_j|, 1e-3) (the state is scaled to order one); the quadrature
+/// columns stay zero.
+int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
+  auto* self = static_cast<StiffIntegrator*>(user);
+  StiffState yy, f0, f1;
+  copy_in(y, yy);
+  copy_in(fy, f0);
+  SUNMatZero(J);
+  const double sqrt_u = std::sqrt(2.220446049250313e-16);
+  for (std::size_t j = 0; j < self->coupled(); ++j) {
+    const double yj = yy[j];
+    const double inc = sqrt_u * std::max(std::abs(yj), 1e-3);
+    yy[j] = yj + inc;
+    self->system().rhs(t, yy, f1);
+    yy[j] = yj;
+    double* col = SUNDenseMatrix_Column(J, static_cast<sunindextype>(j));
+    for (std::size_t i = 0; i < kStiffSize; ++i) col[i] = (f1[i] - f0[i]) / inc;
+  }
+  return 0;
+}
+
+}  // namespace
+
+StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled) : cv_(std::make_unique<Cvode>()), coupled_(coupled) {
+  Cvode& c = *cv_;
+  c.tol = tolerance;
+  check(SUNContext_Create(nullptr, &c.ctx), "context");
+  c.y = N_VNew_Serial(kStiffSize, c.ctx);
+  c.dky = N_VNew_Serial(kStiffSize, c.ctx);
+  N_VConst(0.0, c.y);
+  c.mem = CVodeCreate(CV_BDF, c.ctx);
+  if (!c.mem) throw RunError("CVODE (BDF): cannot create the integrator");
+  c.jac = SUNDenseMatrix(kStiffSize, kStiffSize, c.ctx);
+  c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
+}
+
+StiffIntegrator::~StiffIntegrator() {
+  Cvode& c = *cv_;
+  CVodeFree(&c.mem);
+  SUNLinSolFree(c.ls);
+  SUNMatDestroy(c.jac);
+  N_VDestroy(c.y);
+  N_VDestroy(c.dky);
+  SUNContext_Free(&c.ctx);
+}
+
+void StiffIntegrator::reset(StiffSystem& system, double t0, const StiffState& y0) {
+  Cvode& c = *cv_;
+  system_ = &system;
+  copy_out(y0, c.y);
+  y0_ = y0;
+  t_ = t0;
+  stepped_ = false;
+  if (!c.initialised) {
+    check(CVodeInit(c.mem, rhs_fn, t0, c.y), "init");
+    check(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
+    check(CVodeSetUserData(c.mem, this), "user data");
+    check(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
+    check(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
+    check(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
+    check(CVodeSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
+    check(CVodeRootInit(c.mem, 1, root_fn), "root finding");
+    c.initialised = true;
+  } else {
+    before_reset_ = counters();
+    check(CVodeReInit(c.mem, t0, c.y), "reinit");
+  }
+}
+
+StiffIntegrator::Step StiffIntegrator::step(double t_stop) {
+  Cvode& c = *cv_;
+  check(CVodeSetStopTime(c.mem, t_stop), "stop time");
+  double t = t_;
+  const int flag = CVode(c.mem, t_stop, c.y, &t, CV_ONE_STEP);
+  if (flag < 0)
+    throw RunError("CVODE (BDF) could not advance the compliant contact model past t = " + std::to_string(t_) +
+                   " s (flag " + std::to_string(flag) + "); try a looser [clearance] tolerance or a lower stiffness");
+  Step s;
+  s.start = t_;
+  s.end = t;
+  if (flag == CV_ROOT_RETURN) {
+    int found = 0;
+    check(CVodeGetRootInfo(c.mem, &found), "root info");
+    s.root = found > 0 ? 1 : -1;
+  }
+  t_ = t;
+  ++steps_;
+  stepped_ = true;
+  return s;
+}
+
+StiffIntegrator::Counters StiffIntegrator::counters() const {
+  Counters c = since_reset();
+  c.rhs += before_reset_.rhs;
+  c.jacobians += before_reset_.jacobians;
+  c.error_failures += before_reset_.error_failures;
+  c.newton_failures += before_reset_.newton_failures;
+  return c;
+}
+
+StiffIntegrator::Counters StiffIntegrator::since_reset() const {
+  Counters c;
+  if (!cv_->initialised) return c;
+  CVodeGetNumRhsEvals(cv_->mem, &c.rhs);
+  CVodeGetNumJacEvals(cv_->mem, &c.jacobians);
+  CVodeGetNumErrTestFails(cv_->mem, &c.error_failures);
+  CVodeGetNumNonlinSolvConvFails(cv_->mem, &c.newton_failures);
+  return c;
+}
+
+void StiffIntegrator::interpolate(double t, StiffState& y) {
+  if (!stepped_) {
+    y = y0_;
+    return;
+  }
+  check(CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
+  copy_in(cv_->dky, y);
+}
+
+}  // namespace fourbar
