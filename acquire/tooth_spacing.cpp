@@ -1,0 +1,117 @@
+#include "acquire/tooth_spacing.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "acquire/angle_track.hpp"
+#include "common/units.hpp"
+
+namespace fourbar {
+
+namespace {
+
+constexpr std::size_t kLowTerms = 1 + 2 * kTurnLockedOrders;
+
+double low_basis(std::size_t i, double phi) {
+  if (i == 0) return 1.0;
+  const double order = static_cast<double>((i + 1) / 2);
+  return i % 2 ? std::cos(order * phi) : std::sin(order * phi);
+}
+
+/// Least squares of y on the low-order basis (Gaussian elimination).
+std::array<double, kLowTerms> fit_low_orders(const std::vector<double>& phi, const std::vector<double>& y) {
+  constexpr std::size_t n = kLowTerms;
+  double a[n][n] = {}, b[n] = {};
+  for (std::size_t k = 0; k < phi.size(); ++k)
+    for (std::size_t r = 0; r < n; ++r) {
+      b[r] += low_basis(r, phi[k]) * y[k];
+      for (std::size_t c = 0; c < n; ++c) a[r][c] += low_basis(r, phi[k]) * low_basis(c, phi[k]);
+    }
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t p = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (std::abs(a[r][c]) > std::abs(a[p][c])) p = r;
+    for (std::size_t k = 0; k < n; ++k) std::swap(a[c][k], a[p][k]);
+    std::swap(b[c], b[p]);
+    for (std::size_t r = c + 1; r < n; ++r) {
+      const double f = a[r][c] / a[c][c];
+      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
+      b[r] -= f * b[c];
+    }
+  }
+  std::array<double, n> x{};
+  for (std::size_t c = n; c-- > 0;) {
+    double s = b[c];
+    for (std::size_t k = c + 1; k < n; ++k) s -= a[c][k] * x[k];
+    x[c] = s / a[c][c];
+  }
+  return x;
+}
+
+}  // namespace
+
+ToothSpacing estimate_tooth_spacing(const NumberedEdges& edges) {
+  const auto P = static_cast<std::size_t>(edges.positions_per_rev);
+  const double pitch = units::kTwoPi / static_cast<double>(P);
+  std::vector<double> sum(P, 0.0), sum_sq(P, 0.0);
+  std::vector<std::size_t> n(P, 0);
+  ToothSpacing out;
+  std::vector<double> phi;
+  for (const NumberedSegment& s : edges.segments) {
+    phi.resize(s.time_s.size());
+    for (std::size_t i = 0; i < phi.size(); ++i) phi[i] = pitch * static_cast<double>(s.position[i]);
+    // Index of each turn's first edge in the segment.
+    std::vector<std::size_t> starts;
+    for (std::size_t i = 0; i < s.position.size(); ++i)
+      if (s.position[i] % static_cast<std::int64_t>(P) == 0) starts.push_back(i);
+    for (std::size_t j = 0; j + 1 < starts.size(); ++j) {
+      const std::size_t lo = starts[j > 0 ? j - 1 : 0], hi = starts[std::min(j + 2, starts.size() - 1)];
+      const double x0 = phi[starts[j]] + 0.5 * units::kTwoPi, scale = 0.5 * (phi[hi] - phi[lo]);
+      const double t0 = s.time_s[starts[j]];
+      std::vector<double> rel(hi - lo + 1);
+      for (std::size_t i = lo; i <= hi; ++i) rel[i - lo] = s.time_s[i] - t0;
+      const auto q = fit_cubic(std::span<const double>(phi).subspan(lo, hi - lo + 1), rel, x0, scale);
+      for (std::size_t i = starts[j]; i < starts[j + 1]; ++i) {
+        const double x = (phi[i] - x0) / scale;
+        const double fit = q[0] + x * (q[1] + x * (q[2] + x * q[3]));
+        const double dt_dphi = (q[1] + x * (2 * q[2] + x * 3 * q[3])) / scale;
+        const double e = (rel[i - lo] - fit) / dt_dphi;  // late edge: the tooth sits further on
+        const auto p = static_cast<std::size_t>(s.position[i] % static_cast<std::int64_t>(P));
+        sum[p] += e, sum_sq[p] += e * e, ++n[p];
+      }
+      ++out.turns;
+    }
+  }
+  // Average per position; the low orders of the turn apart.
+  std::vector<double> at, mean;
+  for (std::size_t p = 0; p < P; ++p)
+    if (n[p] > 0) at.push_back(pitch * static_cast<double>(p)), mean.push_back(sum[p] / static_cast<double>(n[p]));
+  out.error_rad.assign(P, NAN);
+  if (at.size() < 2 * kLowTerms) return out;  // too few teeth to tell orders apart
+  const auto low = fit_low_orders(at, mean);
+  out.once_per_turn_rad = std::hypot(low[1], low[2]);
+  out.twice_per_turn_rad = std::hypot(low[3], low[4]);
+  double ref = 0, se2 = 0;
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    double l = 0;
+    for (std::size_t i = 0; i < kLowTerms; ++i) l += low[i] * low_basis(i, at[k]);
+    const auto p = static_cast<std::size_t>(std::lround(at[k] / pitch));
+    out.error_rad[p] = mean[k] - l;
+    if (p == 0) ref = out.error_rad[p];
+    const double m = sum[p] / static_cast<double>(n[p]);
+    const double var = n[p] > 1 ? (sum_sq[p] / static_cast<double>(n[p]) - m * m) * static_cast<double>(n[p]) /
+                                      static_cast<double>(n[p] - 1)
+                                : 0.0;
+    se2 += std::max(0.0, var) / static_cast<double>(n[p]);
+  }
+  // Position 0 is the reference angle (crank_offset_deg): its error is 0 by definition.
+  double ss = 0;
+  for (auto& e : out.error_rad)
+    if (!std::isnan(e)) e -= ref, ss += e * e, out.max_abs_rad = std::max(out.max_abs_rad, std::abs(e));
+  out.rms_rad = std::sqrt(ss / static_cast<double>(at.size()));
+  out.standard_error_rad = std::sqrt(se2 / static_cast<double>(at.size()));
+  return out;
+}
+
+}  // namespace fourbar
