@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
-#include "acquire/angle_track.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
@@ -19,15 +19,18 @@ double low_basis(std::size_t i, double phi) {
   return i % 2 ? std::cos(order * phi) : std::sin(order * phi);
 }
 
-/// Least squares of y on the low-order basis (Gaussian elimination).
-std::array<double, kLowTerms> fit_low_orders(const std::vector<double>& phi, const std::vector<double>& y) {
-  constexpr std::size_t n = kLowTerms;
+/// Least squares of y on the basis functions f_i(x) (Gaussian elimination).
+template <std::size_t n, class Basis>
+std::array<double, n> least_squares(std::span<const double> at, std::span<const double> y, Basis basis) {
   double a[n][n] = {}, b[n] = {};
-  for (std::size_t k = 0; k < phi.size(); ++k)
+  std::array<double, n> fk{};
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    for (std::size_t r = 0; r < n; ++r) fk[r] = basis(r, at[k]);
     for (std::size_t r = 0; r < n; ++r) {
-      b[r] += low_basis(r, phi[k]) * y[k];
-      for (std::size_t c = 0; c < n; ++c) a[r][c] += low_basis(r, phi[k]) * low_basis(c, phi[k]);
+      b[r] += fk[r] * y[k];
+      for (std::size_t c = 0; c < n; ++c) a[r][c] += fk[r] * fk[c];
     }
+  }
   for (std::size_t c = 0; c < n; ++c) {
     std::size_t p = c;
     for (std::size_t r = c + 1; r < n; ++r)
@@ -48,6 +51,15 @@ std::array<double, kLowTerms> fit_low_orders(const std::vector<double>& phi, con
   }
   return x;
 }
+
+std::array<double, kLowTerms> fit_low_orders(const std::vector<double>& phi, const std::vector<double>& y) {
+  return least_squares<kLowTerms>(phi, y, low_basis);
+}
+
+/// Per-turn smooth model: a cubic in s = (φ − φ_mid)/scale for the slow
+/// speed change, and the low orders of the turn, which change from turn to
+/// turn when the speed change is not locked to the turn.
+constexpr std::size_t kTurnTerms = 4 + 2 * kTurnLockedOrders;
 
 }  // namespace
 
@@ -71,10 +83,16 @@ ToothSpacing estimate_tooth_spacing(const NumberedEdges& edges) {
       const double t0 = s.time_s[starts[j]];
       std::vector<double> rel(hi - lo + 1);
       for (std::size_t i = lo; i <= hi; ++i) rel[i - lo] = s.time_s[i] - t0;
-      const auto q = fit_cubic(std::span<const double>(phi).subspan(lo, hi - lo + 1), rel, x0, scale);
+      auto basis = [&](std::size_t r, double ph) {
+        const double x = (ph - x0) / scale;
+        if (r < 4) return std::pow(x, static_cast<double>(r));
+        return low_basis(r - 3, ph);
+      };
+      const auto q = least_squares<kTurnTerms>(std::span<const double>(phi).subspan(lo, hi - lo + 1), rel, basis);
       for (std::size_t i = starts[j]; i < starts[j + 1]; ++i) {
         const double x = (phi[i] - x0) / scale;
-        const double fit = q[0] + x * (q[1] + x * (q[2] + x * q[3]));
+        double fit = 0;
+        for (std::size_t r = 0; r < kTurnTerms; ++r) fit += q[r] * basis(r, phi[i]);
         const double dt_dphi = (q[1] + x * (2 * q[2] + x * 3 * q[3])) / scale;
         const double e = (rel[i - lo] - fit) / dt_dphi;  // late edge: the tooth sits further on
         const auto p = static_cast<std::size_t>(s.position[i] % static_cast<std::int64_t>(P));

@@ -7,6 +7,15 @@
 
 namespace fourbar {
 
+std::vector<double> wheel_tooth_errors_rad(const WheelSpec& w, std::uint64_t seed) {
+  std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  std::vector<double> err(static_cast<std::size_t>(w.encoder_lines > 0 ? w.encoder_lines : w.teeth), 0.0);
+  for (auto& e : err) e = w.tooth_error_rad * uni(rng);
+  err[0] = 0;  // position 0 is where angle_deg says
+  return err;
+}
+
 std::vector<EdgeChannel> wheel_channels(const WheelSpec& w, const CrankDrive& drive, double angle_rad,
                                         double duration_s, double margin_s, const std::string& main_name,
                                         std::uint64_t seed) {
@@ -15,11 +24,7 @@ std::vector<EdgeChannel> wheel_channels(const WheelSpec& w, const CrankDrive& dr
   const double pitch = units::kTwoPi / P;
   const double direction = drive.mean_speed_rad_s > 0 ? 1.0 : -1.0;
   // Tooth errors: one draw per position, from their own generator.
-  std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
-  std::uniform_real_distribution<double> uni(-1.0, 1.0);
-  std::vector<double> err(static_cast<std::size_t>(P), 0.0);
-  for (auto& e : err) e = w.tooth_error_rad * uni(rng);
-  err[0] = 0;  // position 0 is where angle_deg says
+  const std::vector<double> err = wheel_tooth_errors_rad(w, seed);
   // Turned angle (from the drive's start) of position 0 in the first turn.
   const double base = std::fmod(std::fmod(direction * (angle_rad - drive.start_angle_rad), units::kTwoPi) + units::kTwoPi,
                                 units::kTwoPi);

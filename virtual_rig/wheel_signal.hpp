@@ -46,6 +46,10 @@ std::vector<EdgeChannel> wheel_channels(const WheelSpec& wheel, const CrankDrive
                                         double duration_s, double margin_s, const std::string& main_name,
                                         std::uint64_t seed);
 
+/// Each position's angle error (rad), as wheel_channels draws it for `seed`;
+/// position 0 has none (it defines angle_deg).
+std::vector<double> wheel_tooth_errors_rad(const WheelSpec& wheel, std::uint64_t seed);
+
 /// The manifest channel of an edge channel (keys of the wheel on the main one).
 ChannelSpec wheel_manifest_channel(const WheelSpec& wheel, const EdgeChannel& channel, double angle_rad);
 
