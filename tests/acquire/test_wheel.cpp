@@ -176,3 +176,89 @@ TEST(WheelToothSpacing, EstimatedAndCorrected) {
 
 }  // namespace
 }  // namespace fourbar
+
+namespace fourbar {
+namespace {
+
+/// Rewrites `key = old` to `key = new` in the recording's manifest.
+void edit_manifest(const VirtualRigResult& vr, const std::string& from, const std::string& to) {
+  std::ifstream in(vr.manifest);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  std::ofstream(vr.manifest) << text;
+}
+
+std::string acquire_error(const VirtualRigResult& vr) {
+  try {
+    Crank sink;
+    AcquireOptions o;
+    o.progress = false;
+    OpenedRecording rec = open_with_manifest(vr.recording, {});
+    acquire(*rec.reader, rec.manifest, o, sink);
+  } catch (const InputError& e) {
+    std::printf("  %s\n", e.what());
+    return e.what();
+  }
+  return "no error";
+}
+
+// What the signal contradicts is bad input naming the key, the count and the
+// fix — never a result with a wrong angle.
+TEST(WheelBadInput, ToothCountContradictsPulsesPerRev) {
+  const VirtualSetup v = wheel_setup(WheelKind::teeth_with_index, 6);
+  const VirtualRigResult vr = v.write("wheel.wav", false);
+  edit_manifest(vr, "pulses_per_rev = 60", "pulses_per_rev = 59");
+  const std::string e = acquire_error(vr);
+  EXPECT_NE(e.find("'pulses_per_rev'"), std::string::npos) << e;
+  EXPECT_NE(e.find("says 59 teeth per turn"), std::string::npos) << e;
+  EXPECT_NE(e.find("counted 60"), std::string::npos) << e;
+}
+
+TEST(WheelBadInput, MissingTeethContradicted) {
+  const VirtualSetup v = wheel_setup(WheelKind::missing_teeth, 6);
+  const VirtualRigResult vr = v.write("wheel.wav", false);
+  edit_manifest(vr, "pulses_per_rev = 60", "pulses_per_rev = 36");
+  edit_manifest(vr, "missing_teeth = 2", "missing_teeth = 1");
+  const std::string e = acquire_error(vr);
+  EXPECT_NE(e.find("'pulses_per_rev'"), std::string::npos) << e;
+  EXPECT_NE(e.find("counted 58"), std::string::npos) << e;
+}
+
+TEST(WheelBadInput, EncoderLinesContradicted) {
+  VirtualSetup v = wheel_setup(WheelKind::encoder, 2.5);
+  v.spec.wheel.encoder_lines = 256;
+  const VirtualRigResult vr = v.write("enc.wav", false);
+  edit_manifest(vr, "lines_per_rev = 256", "lines_per_rev = 250");
+  const std::string e = acquire_error(vr);
+  EXPECT_NE(e.find("'lines_per_rev' = 250"), std::string::npos) << e;
+  EXPECT_NE(e.find("counted 1024"), std::string::npos) << e;
+}
+
+TEST(WheelBadInput, EncoderChannelsNotInQuadrature) {
+  VirtualSetup v = wheel_setup(WheelKind::encoder, 2.5);
+  v.spec.wheel.encoder_lines = 256;
+  const VirtualRigResult vr = v.write("enc.wav", false);
+  // B read from A's channel: in phase, not 90° apart.
+  const int a = static_cast<int>(v.spec.sensors.size());
+  edit_manifest(vr, "index = " + std::to_string(a + 1) + "\nname = \"encoder_b\"",
+                "index = " + std::to_string(a + 2) + "\nname = \"encoder_b\"");
+  edit_manifest(vr, "index = " + std::to_string(a + 2) + "\nname = \"crank_index\"",
+                "index = " + std::to_string(a + 1) + "\nname = \"crank_index\"");
+  const std::string e = acquire_error(vr);
+  EXPECT_NE(e.find("not in quadrature"), std::string::npos) << e;
+}
+
+TEST(WheelBadInput, IndexThatNeverComes) {
+  VirtualSetup v = wheel_setup(WheelKind::teeth_with_index, 0.9);
+  const VirtualRigResult vr = v.write("wheel.wav", false);
+  const std::string e = acquire_error(vr);
+  EXPECT_NE(e.find("index channel 'crank_index'"), std::string::npos) << e;
+  EXPECT_NE(e.find("at least 2 index marks"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace fourbar
