@@ -70,6 +70,7 @@ ToothSpacing estimate_tooth_spacing(const NumberedEdges& edges) {
   std::vector<std::size_t> n(P, 0);
   ToothSpacing out;
   std::vector<double> phi;
+  std::array<double, 2 * kTurnLockedOrders> turn_locked{};  // Σ over turns of the fitted orders, in angle
   for (const NumberedSegment& s : edges.segments) {
     phi.resize(s.time_s.size());
     for (std::size_t i = 0; i < phi.size(); ++i) phi[i] = pitch * static_cast<double>(s.position[i]);
@@ -89,6 +90,8 @@ ToothSpacing estimate_tooth_spacing(const NumberedEdges& edges) {
         return low_basis(r - 3, ph);
       };
       const auto q = least_squares<kTurnTerms>(std::span<const double>(phi).subspan(lo, hi - lo + 1), rel, basis);
+      const double rad_per_s = scale / q[1];  // ω at the turn's middle
+      for (std::size_t r = 0; r < turn_locked.size(); ++r) turn_locked[r] += q[4 + r] * rad_per_s;
       for (std::size_t i = starts[j]; i < starts[j + 1]; ++i) {
         const double x = (phi[i] - x0) / scale;
         double fit = 0;
@@ -108,8 +111,11 @@ ToothSpacing estimate_tooth_spacing(const NumberedEdges& edges) {
   out.error_rad.assign(P, NAN);
   if (at.size() < 2 * kLowTerms) return out;  // too few teeth to tell orders apart
   const auto low = fit_low_orders(at, mean);
-  out.once_per_turn_rad = std::hypot(low[1], low[2]);
-  out.twice_per_turn_rad = std::hypot(low[3], low[4]);
+  // The turn-locked pattern: the per-turn fits' low orders averaged over the
+  // turns, plus what of them is left in the average residual.
+  const double turns = static_cast<double>(std::max<std::size_t>(out.turns, 1));
+  out.once_per_turn_rad = std::hypot(low[1] + turn_locked[0] / turns, low[2] + turn_locked[1] / turns);
+  out.twice_per_turn_rad = std::hypot(low[3] + turn_locked[2] / turns, low[4] + turn_locked[3] / turns);
   double ref = 0, se2 = 0;
   for (std::size_t k = 0; k < at.size(); ++k) {
     double l = 0;

@@ -239,6 +239,24 @@ int run_acquire(const Invocation& inv) {
                  {"inserted", {{"count", tr.inserted_s.size()}, {"times_s", tr.inserted_s}}},
                  {"isolated", {{"count", tr.orphan_s.size()}, {"times_s", tr.orphan_s}}},
                  {"gaps", gaps}};
+  if (rep.wheel.positions_per_rev > 0) {
+    const WheelReport& w = rep.wheel;
+    nlohmann::json teeth = nlohmann::json::array();
+    for (double e : w.tooth_error_deg) teeth.push_back(std::isnan(e) ? nlohmann::json() : nlohmann::json(e));
+    j["wheel"] = {{"source", w.source},
+                  {"positions_per_rev", w.positions_per_rev},
+                  {"edges", w.edges},
+                  {"turns_dropped", w.turns_cut},
+                  {"count_direction", w.count_direction},
+                  {"tooth_spacing_corrected", w.corrected},
+                  {"tooth_error_deg", teeth},
+                  {"tooth_error_rms_deg", w.tooth_error_rms_deg},
+                  {"tooth_error_max_deg", w.tooth_error_max_deg},
+                  {"tooth_error_standard_error_deg", w.tooth_error_standard_error_deg},
+                  {"turns_averaged", w.turns_averaged},
+                  {"once_per_turn_deg", w.once_per_turn_deg},
+                  {"twice_per_turn_deg", w.twice_per_turn_deg}};
+  }
   const double first_pulse = tr.segments.front().front().time_s, last_pulse = tr.segments.back().back().time_s;
   j["revolutions"] = {{"kept", rep.revolutions},
                       {"repaired", rep.revolutions_repaired},
