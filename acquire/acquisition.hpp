@@ -13,6 +13,9 @@
 //                the pulse train (pulse_pass.hpp); then the crank motion
 //                fitted through it and the revolutions planned
 //                (revolution_plan.hpp);
+//              — a tooth wheel or an encoder instead: every angle channel's
+//                edges, numbered on the wheel, a spline through all of them
+//                (wheel_pass.hpp, wheel_decode.hpp, wheel_plan.hpp);
 //   3. samples — each sample tagged with θ2, ω2, α2 and calibrated; each
 //                revolution resampled onto N crank angles (4-point Lagrange
 //                interpolation between samples) as soon as it is complete
