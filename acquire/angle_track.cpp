@@ -169,13 +169,14 @@ void AngleTrack::Cursor::load(std::size_t k) {
 CrankPoint AngleTrack::Cursor::at(double t) {
   const auto& kn = track_->knots_;
   const std::size_t last = kn.size() - 2;
-  std::size_t k = k_ > last ? 0 : k_;
-  if (t < kn[k].time_s) {
-    // Backwards (rare): search.
+  std::size_t k = k_;
+  // Forward by a few intervals (samples in time order), else a search.
+  if (k <= last && t >= kn[k].time_s)
+    for (int step = 0; step < 4 && k < last && t >= kn[k + 1].time_s; ++step) ++k;
+  if (k > last || t < kn[k].time_s || (k < last && t >= kn[k + 1].time_s)) {
     const auto it = std::upper_bound(kn.begin(), kn.end(), t, [](double v, const Knot& x) { return v < x.time_s; });
-    k = it == kn.begin() ? 0 : static_cast<std::size_t>(it - kn.begin()) - 1;
+    k = std::min(last, it == kn.begin() ? 0 : static_cast<std::size_t>(it - kn.begin()) - 1);
   }
-  while (k < last && t >= kn[k + 1].time_s) ++k;
   if (k != k_) load(k);
   const double tau = (t - t0_) * inv_h_;
   const double* c = c_;
