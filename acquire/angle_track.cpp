@@ -186,25 +186,32 @@ CrankPoint AngleTrack::Cursor::at(double t) {
   return {t, phase0_ + p, dp * inv_h_, ddp * inv_h_ * inv_h_};
 }
 
-CrankPoint AngleTrack::at_phase(double phase) const {
-  const auto it = std::upper_bound(knots_.begin(), knots_.end(), phase,
-                                   [](double v, const Knot& x) { return v < x.phase_rad; });
-  std::size_t k = it == knots_.begin() ? 0 : static_cast<std::size_t>(it - knots_.begin()) - 1;
-  k = std::min(k, knots_.size() - 2);
-  const Knot &a = knots_[k], &b = knots_[k + 1];
-  if (phase == a.phase_rad) return {a.time_s, a.phase_rad, a.speed_rad_s, a.accel_rad_s2};
-  Cursor cur(*this);
-  // Newton from the straight line between the knots.
-  double t = a.time_s + (phase - a.phase_rad) / (b.phase_rad - a.phase_rad) * (b.time_s - a.time_s);
-  CrankPoint p = cur.at(t);
-  for (int i = 0; i < 8; ++i) {
-    const double step = (p.phase_rad - phase) / p.speed_rad_s;
-    t = std::clamp(t - step, a.time_s, b.time_s);
-    p = cur.at(t);
-    if (std::abs(step) < 1e-13 * std::max(1.0, std::abs(t))) break;
+CrankPoint AngleTrack::Cursor::at_phase(double phase) {
+  const auto& kn = track_->knots_;
+  const std::size_t last = kn.size() - 2;
+  std::size_t k = k_;
+  if (k <= last && phase >= kn[k].phase_rad)
+    for (int step = 0; step < 4 && k < last && phase >= kn[k + 1].phase_rad; ++step) ++k;
+  if (k > last || phase < kn[k].phase_rad || (k < last && phase >= kn[k + 1].phase_rad)) {
+    const auto it = std::upper_bound(kn.begin(), kn.end(), phase,
+                                     [](double v, const Knot& x) { return v < x.phase_rad; });
+    k = std::min(last, it == kn.begin() ? 0 : static_cast<std::size_t>(it - kn.begin()) - 1);
   }
-  p.phase_rad = phase;
-  return p;
+  if (k != k_) load(k);
+  // Newton on τ from the straight line between the knots.
+  const double target = phase - phase0_, d = kn[k + 1].phase_rad - phase0_;
+  const double* c = c_;
+  double tau = std::clamp(target / d, 0.0, 1.0);
+  for (int i = 0; i < 8; ++i) {
+    const double p = c[0] + tau * (c[1] + tau * (c[2] + tau * (c[3] + tau * (c[4] + tau * c[5]))));
+    const double dp = c[1] + tau * (2 * c[2] + tau * (3 * c[3] + tau * (4 * c[4] + tau * 5 * c[5])));
+    const double step = (p - target) / dp;
+    tau = std::clamp(tau - step, 0.0, 1.0);
+    if (std::abs(step) < 1e-14) break;
+  }
+  const double dp = c[1] + tau * (2 * c[2] + tau * (3 * c[3] + tau * (4 * c[4] + tau * 5 * c[5])));
+  const double ddp = 2 * c[2] + tau * (6 * c[3] + tau * (12 * c[4] + tau * 20 * c[5]));
+  return {t0_ + tau / inv_h_, phase, dp * inv_h_, ddp * inv_h_ * inv_h_};
 }
 
 }  // namespace fourbar

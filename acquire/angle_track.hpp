@@ -46,6 +46,9 @@ class AngleTrack {
    public:
     explicit Cursor(const AngleTrack& track) : track_(&track) {}
     CrankPoint at(double time_s);
+    /// Crank motion where the phase is `phase_rad` (phases in increasing
+    /// order are cheapest): Newton on the interval's quintic.
+    CrankPoint at_phase(double phase_rad);
 
    private:
     void load(std::size_t k);
@@ -55,9 +58,8 @@ class AngleTrack {
     double c_[6] = {};
   };
 
-  /// Crank motion where the phase is `phase_rad` (a bisection on the knots,
-  /// then Newton on the interval's quintic).
-  CrankPoint at_phase(double phase_rad) const;
+  /// Crank motion where the phase is `phase_rad` (a search, then Newton).
+  CrankPoint at_phase(double phase_rad) const { return Cursor(*this).at_phase(phase_rad); }
 
  private:
   std::vector<Knot> knots_;

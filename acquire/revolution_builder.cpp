@@ -88,9 +88,11 @@ void RevolutionBuilder::resample(std::size_t index) {
   rev_.channels_m_s2.resize(channels_);
   for (auto& c : rev_.channels_m_s2) c.resize(n);
   const auto buffered = static_cast<std::int64_t>(buffer_.size() / std::max<std::size_t>(channels_, 1));
+  std::optional<AngleTrack::Cursor> grid_cursor;
+  if (r.track) grid_cursor.emplace(*r.track);
   for (std::size_t j = 0; j < n; ++j) {
     const double u = static_cast<double>(j) / static_cast<double>(n);
-    const CrankPoint p = r.at_fraction(u);
+    const CrankPoint p = grid_cursor ? grid_cursor->at_phase(r.curve.phase0_rad + units::kTwoPi * u) : r.at_fraction(u);
     rev_.crank_rad[j] = grid_.offset_rad + grid_.direction * units::kTwoPi * u;
     rev_.time_s[j] = p.time_s;
     rev_.omega2_rad_s[j] = grid_.direction * p.speed_rad_s;
