@@ -11,6 +11,8 @@
 #include "acquire/pulse_thresholds.hpp"
 #include "acquire/sample_tagging.hpp"
 #include "acquire/streaming_pass.hpp"
+#include "acquire/wheel_decode.hpp"
+#include "acquire/wheel_pass.hpp"
 #include "common/error.hpp"
 #include "common/progress.hpp"
 
@@ -84,14 +86,29 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   report.thresholds = thresholds.thresholds;
   append(report.warnings, std::move(thresholds.warnings));
 
-  const EdgePassResult edges = edge_pass(stream, manifest, report.thresholds, &scan.pulse_local);
-  clock.lap(AcquirePass::pulses);
-  report.edges_debounced = edges.edges_debounced;
-  report.edge_level_V = edges.edge_level_V;
-  report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
+  RevolutionSchedule schedule;
+  if (manifest.multi_edge_angle()) {
+    const WheelEdges edges = wheel_edge_pass(stream, manifest, report.thresholds);
+    clock.lap(AcquirePass::pulses);
+    WheelSchedule wheel = plan_wheel_revolutions(number_edges(edges, manifest, info.file), manifest,
+                                                 info.sample_rate_hz, options.grid_points_per_rev);
+    report.pulses = std::move(wheel.turns);
+    report.wheel = std::move(wheel.report);
+    append(report.warnings, std::move(wheel.warnings));
+    schedule = std::move(wheel.schedule);
+  } else {
+    const EdgePassResult edges = edge_pass(stream, manifest, report.thresholds, &scan.pulse_local);
+    clock.lap(AcquirePass::pulses);
+    report.edges_debounced = edges.edges_debounced;
+    report.edge_level_V = edges.edge_level_V;
+    report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
+    schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);
+  }
   report.revolutions = report.pulses.revolutions();
+  if (report.revolutions < 2)
+    throw InputError(info.file.string() + ": " + std::to_string(report.revolutions) +
+                     " complete turns in the crank-angle channels; need at least 2: record longer or check them");
 
-  RevolutionSchedule schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);
   report.revolutions_repaired = schedule.revolutions_repaired;
   report.frames_per_rev = schedule.frames_per_rev;
   report.grid_points_per_rev = sink.wants_grid() ? schedule.grid_points_per_rev : 0;

@@ -13,6 +13,9 @@
 //                the pulse train (pulse_pass.hpp); then the crank motion
 //                fitted through it and the revolutions planned
 //                (revolution_plan.hpp);
+//              — a tooth wheel or an encoder instead: every angle channel's
+//                edges, numbered on the wheel, a spline through all of them
+//                (wheel_pass.hpp, wheel_decode.hpp, wheel_plan.hpp);
 //   3. samples — each sample tagged with θ2, ω2, α2 and calibrated; each
 //                revolution resampled onto N crank angles (4-point Lagrange
 //                interpolation between samples) as soon as it is complete
@@ -32,6 +35,7 @@
 #include "acquire/revolution.hpp"
 #include "acquire/revolution_plan.hpp"
 #include "acquire/streaming_pass.hpp"
+#include "acquire/wheel_plan.hpp"
 
 namespace fourbar {
 
@@ -51,7 +55,8 @@ struct AcquisitionReport {
   PulseThresholds thresholds;                ///< as used
   double edge_level_V = 0;                   ///< mid-level at which edge times are taken (refined)
   std::size_t edges_debounced = 0;
-  PulseTrain pulses;
+  PulseTrain pulses;                         ///< once per turn (a wheel or encoder: its turns)
+  WheelReport wheel;                         ///< many edges per turn (positions_per_rev 0: one pulse per turn)
   int grid_points_per_rev = 0;               ///< N crank angles per revolution (0: the sink wanted no grid)
   double frames_per_rev = 0;                 ///< recording frames in a typical revolution
   std::size_t revolutions = 0;               ///< kept

@@ -24,6 +24,9 @@ constexpr std::array kRoles{
     std::pair{ChannelRole::rocker_tangential, "rocker_tangential"},
     std::pair{ChannelRole::rocker_normal, "rocker_normal"},
     std::pair{ChannelRole::crank_pulse, "crank_pulse"},
+    std::pair{ChannelRole::crank_index, "crank_index"},
+    std::pair{ChannelRole::encoder_a, "encoder_a"},
+    std::pair{ChannelRole::encoder_b, "encoder_b"},
     std::pair{ChannelRole::ignore, "ignore"},
 };
 
@@ -35,6 +38,47 @@ ChannelRole role_from_string(const std::string& s) {
 
 std::string label(const ChannelSpec& c, std::size_t i) {
   return "channel[" + std::to_string(i) + "] ('" + c.name + "')";
+}
+
+int count(const Manifest& m, ChannelRole role) {
+  return static_cast<int>(std::count_if(m.channels.begin(), m.channels.end(), [&](const ChannelSpec& c) { return c.role == role; }));
+}
+
+/// One crank-angle source: a crank_pulse channel (once per turn, or a tooth
+/// wheel with a crank_index channel or missing teeth), or encoder_a and
+/// encoder_b with an optional crank_index.
+void check_angle_source(const Manifest& m) {
+  const std::string f = m.file.string() + ": ";
+  const int pulses = count(m, ChannelRole::crank_pulse), a = count(m, ChannelRole::encoder_a),
+            b = count(m, ChannelRole::encoder_b), index = count(m, ChannelRole::crank_index);
+  if (index > 1) throw InputError(f + std::to_string(index) + " channels have role = \"crank_index\"; give at most one");
+  if (a > 0 || b > 0) {
+    if (a != 1 || b != 1)
+      throw InputError(f + std::to_string(a) + " encoder_a and " + std::to_string(b) +
+                       " encoder_b channels; a quadrature encoder needs exactly one of each");
+    if (pulses > 0)
+      throw InputError(f + "both a crank_pulse channel and an encoder; the crank angle comes from one: give the "
+                           "encoder's index as role = \"crank_index\" and remove the crank_pulse channel");
+    return;
+  }
+  if (pulses != 1)
+    throw InputError(f + std::to_string(pulses) +
+                     " channels have role = \"crank_pulse\"; exactly one must (the once-per-revolution crank pulse, "
+                     "or a tooth wheel with pulses_per_rev), or describe an encoder as encoder_a and encoder_b");
+  const ChannelSpec& p = *m.channel_with(ChannelRole::crank_pulse);
+  const std::string key = "channel '" + p.name + "' key ";
+  if (p.pulses_per_rev == 1 && index > 0)
+    throw InputError(f + "a crank_index channel but " + key +
+                     "'pulses_per_rev' is 1 (once per turn needs no index); give the wheel's pulses_per_rev or remove "
+                     "the crank_index channel");
+  if (p.pulses_per_rev == 1 && p.missing_teeth > 0)
+    throw InputError(f + key + "'missing_teeth' needs 'pulses_per_rev', the tooth positions of the wheel (60 for a 60-2 wheel)");
+  if (p.pulses_per_rev > 1 && index > 0 && p.missing_teeth > 0)
+    throw InputError(f + key + "'missing_teeth' and a crank_index channel both mark the turns; keep one of them");
+  if (p.pulses_per_rev > 1 && index == 0 && p.missing_teeth == 0)
+    throw InputError(f + key + "'pulses_per_rev' = " + std::to_string(p.pulses_per_rev) +
+                     " needs a way to count turns: add a channel with role = \"crank_index\" (once per turn) or "
+                     "give 'missing_teeth' (a 60-2 wheel: 2)");
 }
 
 }  // namespace
@@ -72,7 +116,7 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
     if (c.ac_coupled) c.highpass_hz = s.positive("highpass_hz");
     else if (s.has("highpass_hz")) s.fail("highpass_hz", "is given but ac_coupled is not true; set ac_coupled = true or remove it");
   }
-  if (c.role == ChannelRole::crank_pulse) {
+  if (is_angle_channel(c.role)) {
     c.polarity = s.choice("polarity", {"rising", "falling"}, "rising") == "rising" ? PulsePolarity::rising
                                                                                   : PulsePolarity::falling;
     c.threshold_low_V = s.optional_number("threshold_low_V");
@@ -82,9 +126,21 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
              "missing: give both Schmitt thresholds or neither (automatic)");
     if (c.threshold_low_V && !(*c.threshold_low_V < *c.threshold_high_V))
       s.fail("threshold_low_V", "must be below threshold_high_V");
-    c.crank_offset_rad = units::deg_to_rad(s.in_range("crank_offset_deg", -360, 360, 0.0));
+    if (c.role == ChannelRole::crank_pulse || c.role == ChannelRole::encoder_a)
+      c.crank_offset_rad = units::deg_to_rad(s.in_range("crank_offset_deg", -360, 360, 0.0));
     c.debounce_s = s.in_range("debounce_ms", 0, 1e6, 0.0) * 1e-3;
   }
+  if (c.role == ChannelRole::crank_pulse) {
+    c.pulses_per_rev = static_cast<int>(s.integer("pulses_per_rev", 1, 100000, 1));
+    c.missing_teeth = static_cast<int>(s.integer("missing_teeth", 0, 100000, 0));
+    if (c.missing_teeth > 0 && 2 * c.missing_teeth >= c.pulses_per_rev)
+      s.fail("missing_teeth", "= " + std::to_string(c.missing_teeth) + " must be less than half of pulses_per_rev = " +
+                                  std::to_string(c.pulses_per_rev) + " (a 60-2 wheel: pulses_per_rev = 60, missing_teeth = 2)");
+  }
+  if (c.role == ChannelRole::encoder_a)
+    c.lines_per_rev = static_cast<int>(s.integer("lines_per_rev", 1, 1 << 22));
+  if ((c.role == ChannelRole::crank_pulse && c.pulses_per_rev > 1) || c.role == ChannelRole::encoder_a)
+    c.correct_tooth_spacing = s.boolean("correct_tooth_spacing", false);
   if (auto n = s.optional_string("notes")) c.notes = *n;
   s.finish();
   return c;
@@ -102,16 +158,29 @@ std::vector<std::string> channel_role_names() {
   return v;
 }
 
-bool is_accelerometer(ChannelRole r) {
-  return r != ChannelRole::crank_pulse && r != ChannelRole::ignore;
+bool is_accelerometer(ChannelRole r) { return !is_angle_channel(r) && r != ChannelRole::ignore; }
+bool is_angle_channel(ChannelRole r) {
+  return r == ChannelRole::crank_pulse || r == ChannelRole::crank_index || r == ChannelRole::encoder_a ||
+         r == ChannelRole::encoder_b;
 }
 bool is_on_coupler(ChannelRole r) { return r == ChannelRole::coupler_tangential || r == ChannelRole::coupler_normal; }
 bool is_tangential(ChannelRole r) { return r == ChannelRole::coupler_tangential || r == ChannelRole::rocker_tangential; }
 
 const ChannelSpec& Manifest::pulse_channel() const {
-  for (const auto& c : channels)
-    if (c.role == ChannelRole::crank_pulse) return c;
+  if (const ChannelSpec* c = channel_with(ChannelRole::crank_pulse)) return *c;
+  if (const ChannelSpec* c = channel_with(ChannelRole::encoder_a)) return *c;
   throw InputError(file.string() + ": no channel has role = \"crank_pulse\"");  // load_manifest prevents this
+}
+
+const ChannelSpec* Manifest::channel_with(ChannelRole role) const {
+  for (const auto& c : channels)
+    if (c.role == role) return &c;
+  return nullptr;
+}
+
+bool Manifest::multi_edge_angle() const {
+  const ChannelSpec& p = pulse_channel();
+  return p.role == ChannelRole::encoder_a || p.pulses_per_rev > 1;
 }
 
 std::filesystem::path sidecar_manifest_path(const std::filesystem::path& recording) {
@@ -145,16 +214,10 @@ Manifest load_manifest(const std::filesystem::path& file) {
   auto sections = root.sections("channel");
   if (sections.empty())
     throw InputError(file.string() + ": no [[channel]] tables; describe at least the crank_pulse channel");
-  int pulses = 0;
-  for (std::size_t i = 0; i < sections.size(); ++i) {
-    ChannelSpec c = read_channel_spec(sections[i], true, channel_role_names());
-    pulses += c.role == ChannelRole::crank_pulse;
-    m.channels.push_back(std::move(c));
-  }
+  for (std::size_t i = 0; i < sections.size(); ++i)
+    m.channels.push_back(read_channel_spec(sections[i], true, channel_role_names()));
   root.finish();
-  if (pulses != 1)
-    throw InputError(file.string() + ": " + std::to_string(pulses) +
-                     " channels have role = \"crank_pulse\"; exactly one must (the once-per-revolution crank pulse)");
+  check_angle_source(m);
 
   // Default names: the role, numbered when a role appears more than once.
   for (std::size_t i = 0; i < m.channels.size(); ++i) {
@@ -253,12 +316,17 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
       os << "ac_coupled = " << (c.ac_coupled ? "true" : "false") << "\n";
       if (c.ac_coupled) os << "highpass_hz = " << num(c.highpass_hz) << "\n";
     }
-    if (c.role == ChannelRole::crank_pulse) {
+    if (is_angle_channel(c.role)) {
       os << "polarity = \"" << (c.polarity == PulsePolarity::rising ? "rising" : "falling") << "\"\n";
       if (c.threshold_low_V) os << "threshold_low_V = " << num(*c.threshold_low_V) << "\n";
       if (c.threshold_high_V) os << "threshold_high_V = " << num(*c.threshold_high_V) << "\n";
-      os << "crank_offset_deg = " << converted(units::rad_to_deg(c.crank_offset_rad)) << "\n";
+      if (c.role == ChannelRole::crank_pulse || c.role == ChannelRole::encoder_a)
+        os << "crank_offset_deg = " << converted(units::rad_to_deg(c.crank_offset_rad)) << "\n";
       if (c.debounce_s > 0) os << "debounce_ms = " << converted(c.debounce_s * 1e3) << "\n";
+      if (c.pulses_per_rev > 1) os << "pulses_per_rev = " << c.pulses_per_rev << "\n";
+      if (c.missing_teeth > 0) os << "missing_teeth = " << c.missing_teeth << "\n";
+      if (c.lines_per_rev > 0) os << "lines_per_rev = " << c.lines_per_rev << "\n";
+      if (c.correct_tooth_spacing) os << "correct_tooth_spacing = true\n";
     }
     if (!c.notes.empty()) os << "notes = " << quoted(c.notes) << "\n";
   }

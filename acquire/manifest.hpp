@@ -30,7 +30,17 @@
 
 namespace fourbar {
 
-enum class ChannelRole { coupler_tangential, coupler_normal, rocker_tangential, rocker_normal, crank_pulse, ignore };
+enum class ChannelRole {
+  coupler_tangential,
+  coupler_normal,
+  rocker_tangential,
+  rocker_normal,
+  crank_pulse,
+  crank_index,  ///< once-per-turn mark beside a tooth wheel or an encoder (Z)
+  encoder_a,    ///< quadrature encoder, channel A
+  encoder_b,    ///< quadrature encoder, channel B
+  ignore
+};
 
 const char* to_string(ChannelRole role);
 /// Every role name, for messages and --help.
@@ -41,6 +51,8 @@ bool is_accelerometer(ChannelRole role);
 bool is_on_coupler(ChannelRole role);
 /// True for *_tangential roles.
 bool is_tangential(ChannelRole role);
+/// True for the crank-angle roles (crank_pulse, crank_index, encoder_a, encoder_b).
+bool is_angle_channel(ChannelRole role);
 
 enum class PulsePolarity { rising, falling };
 
@@ -63,6 +75,11 @@ struct ChannelSpec {
   std::optional<double> threshold_low_V, threshold_high_V;  ///< Schmitt thresholds (default: automatic)
   double crank_offset_rad = 0;         ///< crank angle at the pulse's leading edge
   double debounce_s = 0;               ///< ignore edges closer than this to the previous one
+  // Tooth wheels and encoders (acquire/wheel_*.hpp): on crank_pulse or encoder_a.
+  int pulses_per_rev = 1;              ///< crank_pulse: tooth positions per turn (missing ones included)
+  int missing_teeth = 0;               ///< crank_pulse: teeth left out of the wheel (a 60−2 wheel: 2)
+  int lines_per_rev = 0;               ///< encoder_a: encoder lines per turn (4 edges each)
+  bool correct_tooth_spacing = false;  ///< estimate each tooth's angle over the turns and use it
 
   std::string notes;
 };
@@ -82,8 +99,14 @@ struct Manifest {
   std::string notes;
 
   ReaderOptions reader_options() const { return {sample_rate_hz, time_column, rate_variable}; }
-  /// The one crank_pulse channel.
+  /// The crank-angle source's main channel: the crank_pulse channel, or
+  /// encoder_a. Its thresholds, offset and tooth keys apply.
   const ChannelSpec& pulse_channel() const;
+  /// The channel with this role, or null.
+  const ChannelSpec* channel_with(ChannelRole role) const;
+  /// True when the crank angle comes from more than one edge per turn (a
+  /// tooth wheel with an index or missing teeth, or a quadrature encoder).
+  bool multi_edge_angle() const;
 };
 
 class TomlSection;

@@ -41,7 +41,8 @@ void RevolutionBuilder::push(std::int64_t n, const double* calibrated, bool clip
   while (current_ < plan_.size() && t >= plan_[current_].t_end) ++current_;
   if (current_ < plan_.size() && t >= plan_[current_].t_start) {
     const RevolutionPlan& r = plan_[current_];
-    const CrankPoint p = r.curve.at(t);
+    if (r.track && r.track.get() != cursor_track_) cursor_.emplace(*r.track), cursor_track_ = r.track.get();
+    const CrankPoint p = r.track ? cursor_->at(t) : r.curve.at(t);
     s_time_.push_back(t);
     s_crank_.push_back(grid_.offset_rad + grid_.direction * (p.phase_rad - r.curve.phase0_rad));
     s_omega_.push_back(grid_.direction * p.speed_rad_s);
@@ -87,9 +88,11 @@ void RevolutionBuilder::resample(std::size_t index) {
   rev_.channels_m_s2.resize(channels_);
   for (auto& c : rev_.channels_m_s2) c.resize(n);
   const auto buffered = static_cast<std::int64_t>(buffer_.size() / std::max<std::size_t>(channels_, 1));
+  std::optional<AngleTrack::Cursor> grid_cursor;
+  if (r.track) grid_cursor.emplace(*r.track);
   for (std::size_t j = 0; j < n; ++j) {
     const double u = static_cast<double>(j) / static_cast<double>(n);
-    const CrankPoint p = r.curve.at_fraction(u);
+    const CrankPoint p = grid_cursor ? grid_cursor->at_phase(r.curve.phase0_rad + units::kTwoPi * u) : r.at_fraction(u);
     rev_.crank_rad[j] = grid_.offset_rad + grid_.direction * units::kTwoPi * u;
     rev_.time_s[j] = p.time_s;
     rev_.omega2_rad_s[j] = grid_.direction * p.speed_rad_s;

@@ -6,19 +6,28 @@
 
 #include <cstdint>
 #include <deque>
+#include <memory>
+#include <optional>
 #include <vector>
 
+#include "acquire/angle_track.hpp"
 #include "acquire/crank_angle.hpp"
 #include "acquire/revolution.hpp"
+#include "common/units.hpp"
 
 namespace fourbar {
 
 /// One complete revolution to build, in time order.
 struct RevolutionPlan {
   std::size_t segment = 0;
-  RevolutionCurve curve;
+  RevolutionCurve curve;              ///< one pulse per turn: the motion; with a track only t0, h, phase0_rad
+  std::shared_ptr<const AngleTrack> track;  ///< many edges per turn: the motion (phase as curve.phase0_rad + turned)
   double t_start = 0, t_end = 0;
   bool repaired = false;
+
+  CrankPoint at_fraction(double u) const {
+    return track ? track->at_phase(curve.phase0_rad + units::kTwoPi * u) : curve.at_fraction(u);
+  }
 };
 
 struct GridSettings {
@@ -60,6 +69,8 @@ class RevolutionBuilder {
   std::deque<std::int64_t> clipped_frames_;
   std::size_t pending_ = 0, current_ = 0, clipped_revolutions_ = 0;
   Revolution rev_;
+  std::optional<AngleTrack::Cursor> cursor_;  // on the current revolution's track
+  const AngleTrack* cursor_track_ = nullptr;
 
   std::vector<double> s_time_, s_crank_, s_omega_, s_alpha_;
   std::vector<std::int64_t> s_rev_;

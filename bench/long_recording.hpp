@@ -53,7 +53,8 @@ inline ChildResult in_child(const std::function<int()>& work) {
 struct LongRecording {
   Scene scene;
   RecordingSpec spec;
-  LongRecording(const std::filesystem::path& file, double seconds) {
+  /// `wheel`: a 60-2 tooth wheel in place of the once-per-turn pulse.
+  LongRecording(const std::filesystem::path& file, double seconds, bool wheel = false) {
     scene.rig = std::make_shared<const Rig>(load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml"));
     scene.source = file.parent_path() / "fourbar_bench_scene.toml";
     scene.crank_speed_rad_s = units::rpm_to_rad_s(350);
@@ -67,6 +68,7 @@ struct LongRecording {
     spec.pulse.width_rad = units::deg_to_rad(10);
     spec.pulse.rise_s = 150e-6;
     spec.pulse.jitter_s = 2e-6;
+    if (wheel) spec.wheel.teeth = 60, spec.wheel.missing_teeth = 2;
     for (auto [name, role, pos] : {std::tuple{"coupler_t", ChannelRole::coupler_tangential, 0.309},
                                    std::tuple{"rocker_t", ChannelRole::rocker_tangential, 0.312}}) {
       ChannelSpec c;
@@ -78,19 +80,21 @@ struct LongRecording {
   CrankDrive drive() const { return crank_drive(scene, spec); }
 };
 
-/// `FILE` argument or /tmp/fourbar_bench_<SECONDS>s.wav.
-inline std::filesystem::path long_recording_path(double seconds, const char* given) {
+/// `FILE` argument or /tmp/fourbar_bench_<SECONDS>s.wav (…_wheel_… with the wheel).
+inline std::filesystem::path long_recording_path(double seconds, const char* given, bool wheel = false) {
   return given ? std::filesystem::path(given)
                : std::filesystem::temp_directory_path() /
-                     ("fourbar_bench_" + std::to_string(static_cast<long>(seconds)) + "s.wav");
+                     (std::string(wheel ? "fourbar_bench_wheel_" : "fourbar_bench_") +
+                      std::to_string(static_cast<long>(seconds)) + "s.wav");
 }
 
 /// Writes the recording (in a child process) unless it exists; false on failure.
-inline bool ensure_long_recording(const std::filesystem::path& file, double seconds, const char* tool) {
+inline bool ensure_long_recording(const std::filesystem::path& file, double seconds, const char* tool,
+                                  bool wheel = false) {
   if (std::filesystem::exists(file)) return true;
   std::printf("writing %s (%.0f s, 3 channels, 25.6 kHz float) ...\n", file.c_str(), seconds);
   const ChildResult g = in_child([&] {
-    const LongRecording r(file, seconds);
+    const LongRecording r(file, seconds, wheel);
     const CrankDrive drive = r.drive();
     const NominalMotionSource motion(r.scene.rig, drive);
     make_virtual_recording(r.scene, r.spec, drive, motion, file, Provenance{tool, {}}, {false, true});

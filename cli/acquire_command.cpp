@@ -47,11 +47,14 @@ summary.json "series" lists their columns and row counts.
 Manifest (TOML) keys: rig, clearance_mm, full_scale_V, adc_range_V,
 sample_rate_hz, time_column, crank_direction (ccw|cw), notes; per
 [[channel]]: index | column, name, role (coupler_tangential coupler_normal
-rocker_tangential rocker_normal crank_pulse ignore), sensitivity_mV_per_m_s2
-+ gain | volts_per_unit, axis_sign, position_mm (from the crank pin A on the
-coupler, from the pivot O4 on the rocker), offset_mm, ac_coupled +
-highpass_hz; crank_pulse: polarity (rising|falling), threshold_low_V +
-threshold_high_V, crank_offset_deg, debounce_ms; notes.
+rocker_tangential rocker_normal crank_pulse crank_index encoder_a encoder_b
+ignore), sensitivity_mV_per_m_s2 + gain | volts_per_unit, axis_sign,
+position_mm (from the crank pin A on the coupler, from the pivot O4 on the
+rocker), offset_mm, ac_coupled + highpass_hz; crank_pulse: polarity
+(rising|falling), threshold_low_V + threshold_high_V, crank_offset_deg,
+debounce_ms, pulses_per_rev + (a crank_index channel | missing_teeth) for a
+tooth wheel; encoder_a: lines_per_rev (with an encoder_b channel, optional
+crank_index = Z); correct_tooth_spacing; notes.
 Meanings and the sensor frame: README "Recordings and manifests".
 Warnings (repaired pulses, gaps, clipping) go to stderr and summary.json.
 )";
@@ -286,6 +289,24 @@ int run_acquire(const Invocation& inv) {
                  {"inserted", {{"count", tr.inserted_s.size()}, {"times_s", tr.inserted_s}}},
                  {"isolated", {{"count", tr.orphan_s.size()}, {"times_s", tr.orphan_s}}},
                  {"gaps", gaps}};
+  if (rep.wheel.positions_per_rev > 0) {
+    const WheelReport& w = rep.wheel;
+    nlohmann::json teeth = nlohmann::json::array();
+    for (double e : w.tooth_error_deg) teeth.push_back(std::isnan(e) ? nlohmann::json() : nlohmann::json(e));
+    j["wheel"] = {{"source", w.source},
+                  {"positions_per_rev", w.positions_per_rev},
+                  {"edges", w.edges},
+                  {"turns_dropped", w.turns_cut},
+                  {"count_direction", w.count_direction},
+                  {"tooth_spacing_corrected", w.corrected},
+                  {"tooth_error_deg", teeth},
+                  {"tooth_error_rms_deg", w.tooth_error_rms_deg},
+                  {"tooth_error_max_deg", w.tooth_error_max_deg},
+                  {"tooth_error_standard_error_deg", w.tooth_error_standard_error_deg},
+                  {"turns_averaged", w.turns_averaged},
+                  {"once_per_turn_deg", w.once_per_turn_deg},
+                  {"twice_per_turn_deg", w.twice_per_turn_deg}};
+  }
   const double first_pulse = tr.segments.front().front().time_s, last_pulse = tr.segments.back().back().time_s;
   j["revolutions"] = {{"kept", rep.revolutions},
                       {"repaired", rep.revolutions_repaired},

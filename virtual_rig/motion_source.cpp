@@ -9,8 +9,15 @@ namespace fourbar {
 CrankState CrankDrive::at(double t) const {
   const double w0 = mean_speed_rad_s, e = fluctuation, T = fluctuation_period_s;
   const double arg = units::kTwoPi * t / T;
-  return {start_angle_rad + w0 * t + e * w0 * T / units::kTwoPi * (1 - std::cos(arg)), w0 * (1 + e * std::sin(arg)),
-          w0 * e * units::kTwoPi / T * std::cos(arg)};
+  CrankState s{start_angle_rad + w0 * t + e * w0 * T / units::kTwoPi * (1 - std::cos(arg)), w0 * (1 + e * std::sin(arg)),
+               w0 * e * units::kTwoPi / T * std::cos(arg)};
+  for (std::size_t i = 0; i < harmonics.size(); ++i) {
+    const double h = static_cast<double>(i + 1), a = harmonics[i], x = h * w0 * t + h;
+    s.angle_rad += a * (std::cos(h) - std::cos(x)) / h;
+    s.speed_rad_s += w0 * a * std::sin(x);
+    s.accel_rad_s2 += w0 * a * h * w0 * std::cos(x);
+  }
+  return s;
 }
 
 double CrankDrive::time_at_turned(double turned_rad) const {

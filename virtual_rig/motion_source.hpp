@@ -5,6 +5,7 @@
 // another (it only has to implement `at`).
 
 #include <memory>
+#include <vector>
 
 #include "mechanism/kinematics.hpp"
 #include "mechanism/rig.hpp"
@@ -37,6 +38,9 @@ struct CrankDrive {
   double mean_speed_rad_s = 0;   ///< ω0, negative for clockwise
   double fluctuation = 0;        ///< ε (0.02 for ±2 %)
   double fluctuation_period_s = 1;
+  /// Relative speed change at h = 1, 2, … times the mean turn rate ω0/2π
+  /// (a speed change within the turn): ω2 += ω0·a_h·sin(h·ω0·t + h).
+  std::vector<double> harmonics;
 
   CrankState at(double time_s) const;
   /// The time at which θ2 − θ0 = `turned_rad` (same sign as ω0), by Newton.

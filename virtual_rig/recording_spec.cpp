@@ -33,6 +33,13 @@ std::optional<std::vector<T>> take_array(toml::table& table, std::string_view ke
   return out;
 }
 
+ChannelRole role_of(const std::string& name) {
+  const auto names = channel_role_names();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<ChannelRole>(i);
+  return ChannelRole::ignore;
+}
+
 }  // namespace
 
 RecordingSpec read_recording_spec(const Scene& scene) {
@@ -54,6 +61,11 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   if (auto h = take_array<double>(table, "hum_harmonics", scene, "recording.hum_harmonics",
                                   [](double v) { return std::isfinite(v) && v >= 0; }, "numbers >= 0, e.g. [1.0, 0.3]"))
     spec.hum_harmonics = *h;
+  if (auto h = take_array<double>(table, "speed_harmonics_pct", scene, "recording.speed_harmonics_pct",
+                                  [](double v) { return std::isfinite(v) && std::abs(v) <= 20; },
+                                  "numbers within ±20, e.g. [0.5, 0.3]")) {
+    for (double v : *h) spec.speed_harmonics.push_back(v * 1e-2);
+  }
   if (toml::table* pt = table["pulse"].as_table()) {
     auto whole = [](long long v) { return v >= 0; };
     if (auto v = take_array<long long>(*pt, "missing", scene, "recording.pulse.missing", whole, "pulse numbers >= 0"))
@@ -90,7 +102,7 @@ RecordingSpec read_recording_spec(const Scene& scene) {
 
   std::vector<std::string> accel_roles;
   for (const auto& name : channel_role_names())
-    if (name != "crank_pulse" && name != "ignore") accel_roles.push_back(name);
+    if (is_accelerometer(role_of(name))) accel_roles.push_back(name);
   for (auto& s : r.sections("sensor")) spec.sensors.push_back(read_channel_spec(s, false, accel_roles));
   for (std::size_t i = 0; i < spec.sensors.size(); ++i) {
     ChannelSpec& c = spec.sensors[i];
@@ -118,6 +130,22 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   pulse.noise_V = p.in_range("noise_mV", 0, 1e6, 0.0) * 1e-3;
   pulse.echo_delay_s = p.in_range("echo_delay_ms", 0, 1e6, 1.0) * 1e-3;
   p.finish();
+  if (auto wt = r.optional_section("wheel")) {
+    WheelSpec& w = spec.wheel;
+    w.teeth = static_cast<int>(wt->integer("teeth", 0, 100000, 0));
+    w.missing_teeth = static_cast<int>(wt->integer("missing_teeth", 0, 100000, 0));
+    w.encoder_lines = static_cast<int>(wt->integer("encoder_lines", 0, 1 << 22, 0));
+    w.index = wt->boolean("index", false);
+    w.tooth_error_rad = units::deg_to_rad(wt->in_range("tooth_error_deg", 0, 10, 0.0));
+    w.correct_tooth_spacing = wt->boolean("correct_tooth_spacing", false);
+    if ((w.teeth > 0) == (w.encoder_lines > 0)) wt->fail("teeth", "and 'encoder_lines': give exactly one of them");
+    if (w.teeth == 1) wt->fail("teeth", "must be at least 2 (one tooth is the [recording.pulse])");
+    if (w.missing_teeth > 0 && (w.encoder_lines > 0 || w.index || 2 * w.missing_teeth >= w.teeth))
+      wt->fail("missing_teeth", "is for a tooth wheel without index, below half the teeth");
+    if (w.teeth > 0 && w.missing_teeth == 0 && !w.index)
+      wt->fail("index", "must be true for a wheel without missing teeth (the turns must be countable)");
+    wt->finish();
+  }
   r.finish();
 
   if (spec.sample_format && spec.quantisation_bits)

@@ -9,6 +9,7 @@
 
 #include "acquire/manifest.hpp"
 #include "sim/scene.hpp"
+#include "virtual_rig/wheel_signal.hpp"
 
 namespace fourbar {
 
@@ -39,6 +40,8 @@ struct RecordingSpec {
   std::vector<double> hum_harmonics{1.0};  ///< relative amplitudes of 1×, 2×, 3×, … the mains frequency
   double speed_fluctuation = 0;       ///< ε
   std::optional<double> speed_fluctuation_period_s;  ///< default: 10 mean revolutions
+  std::vector<double> speed_harmonics;  ///< relative speed change at 1×, 2×, … the mean turn rate
+  WheelSpec wheel;                    ///< a tooth wheel or encoder in place of the pulse (`[recording.wheel]`)
   std::uint64_t seed = 1;
   std::vector<ChannelSpec> sensors;   ///< accelerometers, in channel order
   PulseSpec pulse;                    ///< the last channel

@@ -15,6 +15,7 @@
 #include "common/version.hpp"
 #include "virtual_rig/recording_writer.hpp"
 #include "virtual_rig/sensor_signal.hpp"
+#include "virtual_rig/wheel_signal.hpp"
 
 namespace fourbar {
 
@@ -80,6 +81,7 @@ CrankDrive crank_drive(const Scene& scene, const RecordingSpec& spec) {
   d.start_angle_rad = scene.start_angle_rad;
   d.mean_speed_rad_s = scene.crank_speed_rad_s;
   d.fluctuation = spec.speed_fluctuation;
+  d.harmonics = spec.speed_harmonics;
   d.fluctuation_period_s =
       spec.speed_fluctuation_period_s.value_or(10.0 * units::kTwoPi / std::abs(scene.crank_speed_rad_s));
   return d;
@@ -98,7 +100,7 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   if (!is_text_recording(out) && std::abs(fs - std::round(fs)) > 1e-9)
     throw InputError(scene.source.string() + ": key 'recording.sample_rate_hz' = " + format_double(fs) +
                      ": audio files store whole-number rates; round it or write a .csv");
-  const std::size_t nsens = spec.sensors.size(), nch = nsens + 1;
+  const std::size_t nsens = spec.sensors.size();
   std::mt19937_64 rng(spec.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
 
@@ -120,7 +122,22 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
     if (k >= 0 && std::find(ps.echo.begin(), ps.echo.end(), k) != ps.echo.end())
       shape_pulses.push_back({lead + ps.echo_delay_s, trail + ps.echo_delay_s});
   }
+  // A tooth wheel or an encoder in place of the once-per-turn pulse, and its
+  // further channels (encoder B, index) after it.
+  std::vector<EdgeChannel> wheel;
+  std::vector<PulseShape> extra;
+  if (spec.wheel.active()) {
+    wheel = wheel_channels(spec.wheel, drive, ps.angle_rad, duration, ps.rise_s, ps.name, spec.seed);
+    auto shaped = [](const EdgeChannel& c) {
+      std::vector<PulseShape::Pulse> p;
+      for (const auto& [lead, trail] : c.pulses) p.push_back({lead, trail});
+      return p;
+    };
+    shape_pulses = shaped(wheel[0]);
+    for (std::size_t k = 1; k < wheel.size(); ++k) extra.emplace_back(shaped(wheel[k]), ps.rise_s);
+  }
   PulseShape shape(shape_pulses, ps.rise_s);
+  const std::size_t nch = nsens + 1 + extra.size();
   const double idle = ps.polarity == PulsePolarity::rising ? ps.low_V : ps.high_V;
   const double swing = ps.polarity == PulsePolarity::rising ? ps.high_V - ps.low_V : ps.low_V - ps.high_V;
 
@@ -170,6 +187,7 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   std::vector<std::string> names;
   for (const auto& s : spec.sensors) names.push_back(s.name);
   names.push_back(ps.name);
+  for (std::size_t k = 1; k < wheel.size(); ++k) names.push_back(wheel[k].name);
   // The recording names what made it, but not where it was written to, so
   // that the same scene and seed give the same bytes anywhere.
   std::vector<std::string> made_by{std::string("made by fourbar ") + kVersion + " virtual-rig"};
@@ -234,6 +252,11 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       if (ps.noise_V > 0) pv += ps.noise_V * normal(rng);
       pv = std::clamp(pv, -spec.full_scale_V, spec.full_scale_V);
       block[f * nch + nsens] = pv * to_recorded;
+      for (std::size_t k = 0; k < extra.size(); ++k) {
+        double ev = idle + swing * extra[k](t);
+        if (ps.noise_V > 0) ev += ps.noise_V * normal(rng);
+        block[f * nch + nsens + 1 + k] = std::clamp(ev, -spec.full_scale_V, spec.full_scale_V) * to_recorded;
+      }
       if (truth) truth->row(row);
     }
     writer->write(block);
@@ -264,11 +287,14 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   ChannelSpec pc;
   pc.name = ps.name;
   pc.role = ChannelRole::crank_pulse;
-  if (text) pc.column = ps.name;
-  else pc.index = static_cast<int>(nsens);
-  pc.polarity = ps.polarity;
   pc.crank_offset_rad = ps.angle_rad;
-  m.channels.push_back(pc);
+  for (std::size_t k = 0; k < std::max<std::size_t>(wheel.size(), 1); ++k) {
+    if (!wheel.empty()) pc = wheel_manifest_channel(spec.wheel, wheel[k], ps.angle_rad);
+    if (text) pc.column = pc.name;
+    else pc.index = static_cast<int>(nsens + k);
+    pc.polarity = ps.polarity;
+    m.channels.push_back(pc);
+  }
   result.manifest = sidecar_manifest_path(out);
   const std::string manifest_text = manifest_to_toml(m, std::filesystem::absolute(out).parent_path());
 

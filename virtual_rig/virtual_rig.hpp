@@ -16,6 +16,10 @@
 // the reverse) for width_deg of crank angle from each crossing of angle_deg;
 // each edge is a linear ramp of rise_us centred on the crossing time, which
 // gets Gaussian jitter; echo pulses and missing pulses can be injected.
+// With [recording.wheel] a tooth wheel or a quadrature encoder (and an index)
+// takes the pulse channel's place, their edges from the crank drive itself
+// (wheel_signal.hpp); the crank speed may change within the turn
+// (speed_harmonics_pct, CrankDrive::harmonics).
 
 #include <filesystem>
 #include <string>
