@@ -43,6 +43,15 @@ std::string label(const ChannelSpec& c, std::size_t i) {
 
 }  // namespace
 
+bool is_channel_name(std::string_view name) {
+  if (name.empty()) return false;
+  for (const char ch : name) {
+    const auto byte = static_cast<unsigned char>(ch);
+    if (byte < 0x20 || byte == 0x7F || ch == ' ' || ch == ',' || ch == ';' || ch == '"') return false;
+  }
+  return true;
+}
+
 ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector<std::string>& roles) {
   ChannelSpec c;
   c.role = role_from_string(s.choice("role", roles));
@@ -54,8 +63,7 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
       s.fail("index", "missing: give the channel's 0-based 'index' (or a text column's name as 'column')");
   }
   if (auto n = s.optional_string("name")) {
-    if (n->empty() || n->find_first_of(",;\"\t\n ") != std::string::npos)
-      s.fail("name", "= \"" + *n + "\" must be a non-empty word without spaces, commas or quotes");
+    if (!is_channel_name(*n)) s.fail("name", "= " + toml_quoted(*n) + " " + kChannelNameRule);
     c.name = *n;
   }
 

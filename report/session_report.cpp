@@ -10,6 +10,7 @@
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
 #include "common/version.hpp"
+#include "report/analysis_cache.hpp"
 #include "report/comparison_record.hpp"
 #include "report/file_hash.hpp"
 #include "report/html_report.hpp"
@@ -47,18 +48,6 @@ json input_files(const std::filesystem::path& rec, const std::filesystem::path& 
     // The manifest is broken: the recording fails with the reason.
   }
   return files;
-}
-
-std::optional<json> read_cache(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  try {
-    json j = json::parse(in);
-    if (j.value("status", "") == "ok") return j;
-  } catch (const std::exception&) {
-    // A damaged cache entry is recomputed.
-  }
-  return std::nullopt;
 }
 
 }  // namespace
@@ -101,11 +90,11 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     const std::string key = sha256_text(std::string(kVersion) + "\n" + inputs.dump() + "\n" +
                                         settings_json["analysis"].dump() + "\n" + theory_settings_json(theory).dump());
     const std::filesystem::path cache_file = cache_dir / (key + ".json");
-    std::optional<json> record = o.use_cache ? read_cache(cache_file) : std::nullopt;
+    std::optional<json> record = o.use_cache ? read_cached_record(cache_file) : std::nullopt;
     const bool cached = record.has_value();
     if (!record) {
       record = process_recording(rec, analysis, theory);
-      if (o.use_cache && (*record)["status"] == "ok") write_text_file(cache_file, record->dump());
+      if (o.use_cache && (*record)["status"] == "ok") write_cached_record(cache_file, *record);
     }
     json& r = *record;
     r["name"] = name;

@@ -65,7 +65,7 @@ for t in "${targets[@]}"; do
   fi
   units=$(find "$corpus" -type f | wc -l)
   kept_units=$(find "$kept" -type f | wc -l)
-  kept_size=$(du -sk "$kept" | cut -f1)
+  kept_size=$(du -sk --apparent-size "$kept" | cut -f1)
   line="$t: ${execs} execs in ${seconds} s, ${cov:-cov: ?}, corpus ${units} inputs (kept ${kept_units}, ${kept_size} KiB), ${found} crash files, exit ${rc}"
   summary+=("$line")
   echo "$line"

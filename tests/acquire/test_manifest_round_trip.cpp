@@ -94,7 +94,8 @@ Manifest generate(Generator& g, const std::filesystem::path& rig_file, bool as_r
     const ChannelRole accel[] = {ChannelRole::coupler_tangential, ChannelRole::coupler_normal,
                                  ChannelRole::rocker_tangential, ChannelRole::rocker_normal, ChannelRole::ignore};
     c.role = i == pulse ? ChannelRole::crank_pulse : accel[g.below(5)];
-    c.name = g.text(false, true) + "_" + std::to_string(i);  // unique
+    do c.name = g.text(false, true) + "_" + std::to_string(i);  // unique
+    while (!is_channel_name(c.name));
     if (is_accelerometer(c.role)) {
       c.volts_per_m_s2 = g.positive();
       c.axis_sign = g.below(2) ? 1.0 : -1.0;

@@ -1,0 +1,35 @@
+#include "report/analysis_cache.hpp"
+
+#include <fstream>
+
+#include "common/atomic_output.hpp"
+
+namespace fourbar {
+
+using nlohmann::json;
+
+std::optional<json> read_cached_record(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  try {
+    json j = json::parse(in);
+    if (j.is_object() && j.value("status", "") == "ok") return j;
+  } catch (const std::exception&) {
+    // A damaged cache entry is recomputed.
+  }
+  return std::nullopt;
+}
+
+bool write_cached_record(const std::filesystem::path& file, const json& record) {
+  std::string text;
+  try {
+    text = record.dump();
+    if (json::parse(text) != record) return false;
+  } catch (const json::exception&) {  // invalid UTF-8 in a string
+    return false;
+  }
+  write_text_file(file, text);
+  return true;
+}
+
+}  // namespace fourbar
