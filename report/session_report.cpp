@@ -9,6 +9,7 @@
 #include "acquire/manifest.hpp"
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
+#include "common/json_text.hpp"
 #include "common/version.hpp"
 #include "report/analysis_cache.hpp"
 #include "report/comparison_record.hpp"
@@ -87,8 +88,8 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     if (tty) std::fprintf(stderr, "\rreport: [%zu/%zu] %s ...\033[K", i + 1, n, name.c_str());
     const TheorySettings& theory = settings.theory_for(name);
     const json inputs = input_files(rec, o.session_dir);
-    const std::string key = sha256_text(std::string(kVersion) + "\n" + inputs.dump() + "\n" +
-                                        settings_json["analysis"].dump() + "\n" + theory_settings_json(theory).dump());
+    const std::string key = sha256_text(std::string(kVersion) + "\n" + json_text(inputs) + "\n" +
+                                        json_text(settings_json["analysis"]) + "\n" + json_text(theory_settings_json(theory)));
     const std::filesystem::path cache_file = cache_dir / (key + ".json");
     std::optional<json> record = o.use_cache ? read_cached_record(cache_file) : std::nullopt;
     const bool cached = record.has_value();
@@ -130,7 +131,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   // Outputs: series first, the report last (each written whole or not at all).
   write_series_files(session, out_dir);
   out.summary = out_dir / "summary.json";
-  write_text_file(out.summary, summary_of(session).dump(2) + "\n");
+  write_text_file(out.summary, json_text(summary_of(session), 2) + "\n");
   write_text_file(o.out_html, render_html_report(session));
   out.html = o.out_html;
   return out;
