@@ -36,6 +36,12 @@ ChannelRole role_from_string(const std::string& s) {
   return ChannelRole::ignore;
 }
 
+// The reader's unit conversions, shared with manifest_to_toml so that what it
+// writes converts back to the same SI value.
+double mm_to_m(double mm) { return units::mm_to_m(mm); }
+double deg_to_rad(double deg) { return units::deg_to_rad(deg); }
+double ms_to_s(double ms) { return ms * 1e-3; }
+
 std::string label(const ChannelSpec& c, std::size_t i) {
   return "channel[" + std::to_string(i) + "] ('" + c.name + "')";
 }
@@ -83,6 +89,15 @@ void check_angle_source(const Manifest& m) {
 
 }  // namespace
 
+bool is_channel_name(std::string_view name) {
+  if (name.empty()) return false;
+  for (const char ch : name) {
+    const auto byte = static_cast<unsigned char>(ch);
+    if (byte < 0x20 || byte == 0x7F || ch == ' ' || ch == ',' || ch == ';' || ch == '"') return false;
+  }
+  return true;
+}
+
 ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector<std::string>& roles) {
   ChannelSpec c;
   c.role = role_from_string(s.choice("role", roles));
@@ -94,8 +109,7 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
       s.fail("index", "missing: give the channel's 0-based 'index' (or a text column's name as 'column')");
   }
   if (auto n = s.optional_string("name")) {
-    if (n->empty() || n->find_first_of(",;\"\t\n ") != std::string::npos)
-      s.fail("name", "= \"" + *n + "\" must be a non-empty word without spaces, commas or quotes");
+    if (!is_channel_name(*n)) s.fail("name", "= " + toml_quoted(*n) + " " + kChannelNameRule);
     c.name = *n;
   }
 
@@ -110,8 +124,8 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
     }
     c.axis_sign = s.in_range("axis_sign", -1, 1, 1.0);
     if (c.axis_sign != 1 && c.axis_sign != -1) s.fail("axis_sign", "must be 1 or -1");
-    c.position_m = units::mm_to_m(s.in_range("position_mm", -1e5, 1e5));
-    c.offset_m = units::mm_to_m(s.in_range("offset_mm", -1e5, 1e5, 0.0));
+    c.position_m = mm_to_m(s.in_range("position_mm", -1e5, 1e5));
+    c.offset_m = mm_to_m(s.in_range("offset_mm", -1e5, 1e5, 0.0));
     c.ac_coupled = s.boolean("ac_coupled", false);
     if (c.ac_coupled) c.highpass_hz = s.positive("highpass_hz");
     else if (s.has("highpass_hz")) s.fail("highpass_hz", "is given but ac_coupled is not true; set ac_coupled = true or remove it");
@@ -127,8 +141,8 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
     if (c.threshold_low_V && !(*c.threshold_low_V < *c.threshold_high_V))
       s.fail("threshold_low_V", "must be below threshold_high_V");
     if (c.role == ChannelRole::crank_pulse || c.role == ChannelRole::encoder_a)
-      c.crank_offset_rad = units::deg_to_rad(s.in_range("crank_offset_deg", -360, 360, 0.0));
-    c.debounce_s = s.in_range("debounce_ms", 0, 1e6, 0.0) * 1e-3;
+      c.crank_offset_rad = deg_to_rad(s.in_range("crank_offset_deg", -360, 360, 0.0));
+    c.debounce_s = ms_to_s(s.in_range("debounce_ms", 0, 1e6, 0.0));
   }
   if (c.role == ChannelRole::crank_pulse) {
     c.pulses_per_rev = static_cast<int>(s.integer("pulses_per_rev", 1, 100000, 1));
@@ -200,7 +214,7 @@ Manifest load_manifest(const std::filesystem::path& file) {
   } catch (const InputError& e) {
     throw InputError(root.where("rig") + ": " + e.what());
   }
-  m.clearance_m = root.has("clearance_mm") ? units::mm_to_m(root.non_negative("clearance_mm")) : m.rig->radial_clearance_m;
+  m.clearance_m = root.has("clearance_mm") ? mm_to_m(root.non_negative("clearance_mm")) : m.rig->radial_clearance_m;
   m.full_scale_V = root.in_range("full_scale_V", 1e-9, 1e9, 1.0);
   if (root.has("adc_range_V")) m.adc_range_V = root.positive("adc_range_V");
   if (root.has("sample_rate_hz")) m.sample_rate_hz = root.positive("sample_rate_hz");
@@ -280,21 +294,19 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
     for (const auto& part : dir.relative_path()) depth += !part.empty();
     return (ec || r.empty() || up >= depth) ? abs.generic_string() : r.generic_string();
   };
-  auto num = [](double v) { return format_double(v); };
-  // A value converted from SI back to the file's unit (mm, degrees) carries
-  // the conversion's rounding in its last digit (0.258 mm came back as
-  // 0.25800000000000006 and drifted on each round trip, issue 7 fuzzing):
-  // 15 significant digits give back the decimal that was read.
-  auto converted = [](double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.15g", v);
-    return std::string(buf);
-  };
+  auto num = [](double v) { return toml_number(v); };
+  // Values converted from SI back to the file's unit (mm, degrees, ms) are
+  // written as the shortest number that the reader's conversion turns back
+  // into the same SI value (0.258 mm is kept as 0.000258 m, and 0.000258 ·
+  // 1000 = 0.25800000000000006 would drift on every round trip).
+  auto mm = [](double metres) { return toml_number_in_unit(metres, units::m_to_mm(metres), mm_to_m); };
+  auto deg = [](double rad) { return toml_number_in_unit(rad, units::rad_to_deg(rad), deg_to_rad); };
+  auto ms = [](double s) { return toml_number_in_unit(s, s * 1e3, ms_to_s); };
   auto quoted = [](const std::string& s) { return toml_quoted(s); };
   std::ostringstream os;
   os << "# Recording manifest (keys: README \"Recordings and manifests\").\n";
   os << "rig = " << quoted(rel(m.rig_file)) << "\n";
-  os << "clearance_mm = " << converted(units::m_to_mm(m.clearance_m)) << "\n";
+  os << "clearance_mm = " << mm(m.clearance_m) << "\n";
   os << "full_scale_V = " << num(m.full_scale_V) << "\n";
   if (m.adc_range_V) os << "adc_range_V = " << num(*m.adc_range_V) << "\n";
   if (m.sample_rate_hz) os << "sample_rate_hz = " << num(*m.sample_rate_hz) << "\n";
@@ -311,8 +323,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
     if (is_accelerometer(c.role)) {
       os << "volts_per_unit = " << num(c.volts_per_m_s2) << "\n";
       os << "axis_sign = " << (c.axis_sign > 0 ? 1 : -1) << "\n";
-      os << "position_mm = " << converted(units::m_to_mm(c.position_m)) << "\n";
-      if (c.offset_m != 0) os << "offset_mm = " << converted(units::m_to_mm(c.offset_m)) << "\n";
+      os << "position_mm = " << mm(c.position_m) << "\n";
+      if (c.offset_m != 0) os << "offset_mm = " << mm(c.offset_m) << "\n";
       os << "ac_coupled = " << (c.ac_coupled ? "true" : "false") << "\n";
       if (c.ac_coupled) os << "highpass_hz = " << num(c.highpass_hz) << "\n";
     }
@@ -321,8 +333,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
       if (c.threshold_low_V) os << "threshold_low_V = " << num(*c.threshold_low_V) << "\n";
       if (c.threshold_high_V) os << "threshold_high_V = " << num(*c.threshold_high_V) << "\n";
       if (c.role == ChannelRole::crank_pulse || c.role == ChannelRole::encoder_a)
-        os << "crank_offset_deg = " << converted(units::rad_to_deg(c.crank_offset_rad)) << "\n";
-      if (c.debounce_s > 0) os << "debounce_ms = " << converted(c.debounce_s * 1e3) << "\n";
+        os << "crank_offset_deg = " << deg(c.crank_offset_rad) << "\n";
+      if (c.debounce_s > 0) os << "debounce_ms = " << ms(c.debounce_s) << "\n";
       if (c.pulses_per_rev > 1) os << "pulses_per_rev = " << c.pulses_per_rev << "\n";
       if (c.missing_teeth > 0) os << "missing_teeth = " << c.missing_teeth << "\n";
       if (c.lines_per_rev > 0) os << "lines_per_rev = " << c.lines_per_rev << "\n";

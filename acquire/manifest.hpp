@@ -109,6 +109,14 @@ struct Manifest {
   bool multi_edge_angle() const;
 };
 
+/// Whether `name` can name a channel: non-empty, without spaces, commas,
+/// semicolons, quotes or control characters (tab, newline, U+0000–U+001F,
+/// U+007F). A name becomes a column of CSV outputs and of the virtual rig's
+/// text recordings, which must read back to the same name.
+bool is_channel_name(std::string_view name);
+inline constexpr const char* kChannelNameRule =
+    "must be a non-empty word without spaces, commas, semicolons, quotes or control characters";
+
 class TomlSection;
 /// Reads one channel table (`[[channel]]` keys; without index/column unless
 /// `with_index`); `roles` are the roles allowed here. Calls finish().

@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "acquire/riff_structure.hpp"
 #include "acquire/sndfile_formats.hpp"
 #include "common/error.hpp"
 
@@ -39,6 +40,11 @@ std::optional<std::string> truncation_in_log(const std::string& log) {
 class SndfileReader final : public Reader {
  public:
   SndfileReader(const std::filesystem::path& file, const ReaderOptions& options) {
+    // libsndfile trusts declared chunk sizes (a LIST sub-chunk claiming 4 GiB
+    // makes sf_open spin forever): the structure is checked first.
+    if (const auto defect = riff_structure_defect(file))
+      throw InputError(file.string() + (defect->truncated ? ": truncated recording: " : ": damaged file header: ") +
+                       defect->what + "; copy the file again from the DAQ");
     SF_INFO sf{};
     handle_.reset(sf_open(file.c_str(), SFM_READ, &sf));
     if (!handle_)

@@ -12,6 +12,7 @@
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/json_text.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 
@@ -326,7 +327,7 @@ int run_acquire(const Invocation& inv) {
 
   // All complete: move into place.
   AtomicOutput summary(dir / "summary.json");
-  summary.stream() << j.dump(2) << "\n";
+  summary.stream() << json_text(j, 2) << "\n";
   sink.commit();
   pulses.commit();
   summary.commit();

@@ -15,6 +15,7 @@
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/json_text.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 #include "report/setup_check_record.hpp"
@@ -347,7 +348,7 @@ int run_analyze(const Invocation& inv) {
   if (per_revolution) j["outputs"].push_back("per_revolution.csv");
 
   AtomicOutput summary(dir / "summary.json");
-  summary.stream() << j.dump(2) << "\n";
+  summary.stream() << json_text(j, 2) << "\n";
   averaged.commit();
   spectra.commit();
   per_rev.commit();

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
+#include "common/json_text.hpp"
 #include "mechanism/rig_report.hpp"
 
 namespace po = boost::program_options;
@@ -27,7 +28,7 @@ int run_rig(const Invocation& inv) {
   const Rig rig = load_rig(rig_file);
   const RigReport report = report_rig(rig);
   if (json) {
-    std::cout << to_json(rig, report).dump(2) << "\n";
+    std::cout << json_text(to_json(rig, report), 2) << "\n";
     return 0;
   }
   std::cout << rig_file << ": " << rig.name << "\n"

@@ -7,6 +7,7 @@
 #include "cli/command.hpp"
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
+#include "common/json_text.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 #include "sim/clearance/run.hpp"
@@ -270,7 +271,7 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
   summary["series"] = {{"file", "series.csv"}, {"rows", run.series.rows()}, {"columns", column_stats(run.series)}};
   const auto json_path = dir / "summary.json";
   AtomicOutput json(json_path);
-  json.stream() << summary.dump(2) << "\n";
+  json.stream() << json_text(summary, 2) << "\n";
   for (auto& f : files) f->commit();
   json.commit();
   std::cout << "wrote " << csv_path.string() << " (" << run.series.rows() << " rows x " << run.series.names.size()
@@ -323,7 +324,7 @@ int run_sim(const Invocation& inv) {
   summary["series"] = {{"file", "series.csv"}, {"rows", table.rows()}, {"columns", column_stats(table)}};
   const std::filesystem::path json_path = std::filesystem::path(out_dir) / "summary.json";
   AtomicOutput json(json_path);
-  json.stream() << summary.dump(2) << "\n";
+  json.stream() << json_text(summary, 2) << "\n";
   csv->commit();
   json.commit();
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/json_text.hpp"
 
 #ifndef FOURBAR_DYGRAPHS_DIR
 #define FOURBAR_DYGRAPHS_DIR "/usr/share/javascript/dygraphs"
@@ -108,7 +109,7 @@ std::string fmt(const json& v, const char* f = "%.4g") {
   if (v.is_null()) return "–";
   if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
   if (v.is_string()) return esc(v.get<std::string>());
-  if (!v.is_number()) return esc(v.dump());
+  if (!v.is_number()) return esc(json_text(v));
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v.get<double>());
   return buf;
@@ -479,7 +480,7 @@ std::string render_html_report(const json& session_in) {
   if (!data["settings_file"].is_null()) files_table(h, json::array({data["settings_file"]}));
   h << "</section></main><footer><p class=\"note\">Self-contained: data and Debian's dygraphs "
        "(MIT licence) are inlined; nothing is fetched.</p></footer>";
-  h << "<script id=\"report-data\" type=\"application/json\">" << json_safe(data.dump()) << "</script>";
+  h << "<script id=\"report-data\" type=\"application/json\">" << json_safe(json_text(data)) << "</script>";
   h << "<script>" << script_safe(js) << "</script><script>" << kScript << "</script></body></html>\n";
   return h.str();
 }

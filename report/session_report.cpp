@@ -15,7 +15,9 @@
 #include "acquire/manifest.hpp"
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
+#include "common/json_text.hpp"
 #include "common/version.hpp"
+#include "report/analysis_cache.hpp"
 #include "report/comparison_record.hpp"
 #include "report/file_hash.hpp"
 #include "report/html_report.hpp"
@@ -54,18 +56,6 @@ json input_files(const std::filesystem::path& rec, const std::filesystem::path& 
     // The manifest is broken: the recording fails with the reason.
   }
   return files;
-}
-
-std::optional<json> read_cache(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  try {
-    json j = json::parse(in);
-    if (is_analysed(j) && j.contains("setup_check")) return j;
-  } catch (const std::exception&) {
-    // A damaged cache entry is recomputed.
-  }
-  return std::nullopt;
 }
 
 }  // namespace
@@ -115,14 +105,14 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     const std::string name = rec.filename().string();
     const TheorySettings& theory = settings.theory_for(name);
     const json inputs = input_files(rec, o.session_dir);
-    const std::string key = sha256_text(std::string(kVersion) + "\n" + inputs.dump() + "\n" +
-                                        settings_json["analysis"].dump() + "\n" + theory_settings_json(theory).dump());
+    const std::string key = sha256_text(std::string(kVersion) + "\n" + json_text(inputs) + "\n" +
+                                        json_text(settings_json["analysis"]) + "\n" + json_text(theory_settings_json(theory)));
     const std::filesystem::path cache_file = cache_dir / (key + ".json");
-    std::optional<json> record = o.use_cache ? read_cache(cache_file) : std::nullopt;
+    std::optional<json> record = o.use_cache ? read_cached_record(cache_file) : std::nullopt;
     const bool cached = record.has_value();
     if (!record) {
       record = process_recording(rec, analysis, theory);
-      if (o.use_cache && is_analysed(*record)) write_text_file(cache_file, record->dump());
+      if (o.use_cache && is_analysed(*record)) write_cached_record(cache_file, *record);
     }
     json& r = *record;
     r["name"] = name;
@@ -199,7 +189,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   // Outputs: series first, the report last (each written whole or not at all).
   write_series_files(session, out_dir);
   out.summary = out_dir / "summary.json";
-  write_text_file(out.summary, summary_of(session).dump(2) + "\n");
+  write_text_file(out.summary, json_text(summary_of(session), 2) + "\n");
   write_text_file(o.out_html, render_html_report(session));
   out.html = o.out_html;
   return out;

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "acquire/manifest.hpp"
 #include "acquire/sndfile_formats.hpp"
 #include "common/error.hpp"
 #include "common/toml_section.hpp"
+#include "common/toml_writer.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
@@ -116,7 +118,10 @@ RecordingSpec read_recording_spec(const Scene& scene) {
 
   TomlSection p = r.section("pulse");
   PulseSpec& pulse = spec.pulse;
-  if (auto n = p.optional_string("name")) pulse.name = *n;
+  if (auto n = p.optional_string("name")) {
+    if (!is_channel_name(*n)) p.fail("name", "= " + toml_quoted(*n) + " " + kChannelNameRule);
+    pulse.name = *n;
+  }
   pulse.angle_rad = units::deg_to_rad(p.in_range("angle_deg", -360, 360, 0.0));
   pulse.low_V = p.in_range("low_V", -1e6, 1e6, 0.0);
   pulse.high_V = p.in_range("high_V", -1e6, 1e6, 5.0);

@@ -1,0 +1,38 @@
+#include "report/analysis_cache.hpp"
+
+#include <fstream>
+
+#include "common/atomic_output.hpp"
+#include "report/setup_check_record.hpp"
+
+namespace fourbar {
+
+using nlohmann::json;
+
+std::optional<json> read_cached_record(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  try {
+    json j = json::parse(in);
+    // An analysed record ("ok" or "check set-up") that holds the set-up check
+    // (older cache entries without it are recomputed).
+    if (j.is_object() && is_analysed(j) && j.contains("setup_check")) return j;
+  } catch (const std::exception&) {
+    // A damaged cache entry is recomputed.
+  }
+  return std::nullopt;
+}
+
+bool write_cached_record(const std::filesystem::path& file, const json& record) {
+  std::string text;
+  try {
+    text = record.dump();
+    if (json::parse(text) != record) return false;
+  } catch (const json::exception&) {  // invalid UTF-8 in a string
+    return false;
+  }
+  write_text_file(file, text);
+  return true;
+}
+
+}  // namespace fourbar
