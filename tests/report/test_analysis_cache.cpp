@@ -74,7 +74,8 @@ class Generator {
   json record() {
     json r = json::object();
     for (int n = 1 + below(8); n > 0; --n) r[text()] = value(0);
-    r["status"] = "ok";
+    r["status"] = below(2) ? "ok" : "check set-up";  // both are analysed records
+    r["setup_check"] = value(0);
     return r;
   }
 
@@ -116,7 +117,11 @@ TEST(AnalysisCache, DamagedOrFailedEntriesAreRecomputed) {
   EXPECT_FALSE(read_cached_record(dir.write("cut.json", R"({"status": "ok", "series": [1, 2)")));
   EXPECT_FALSE(read_cached_record(dir.write("array.json", "[1, 2]")));
   EXPECT_FALSE(read_cached_record(dir.write("failed.json", R"({"status": "failed"})")));
-  EXPECT_TRUE(read_cached_record(dir.write("ok.json", R"({"status": "ok"})")));
+  // Made before the set-up check existed: recomputed, so the report shows the check.
+  EXPECT_FALSE(read_cached_record(dir.write("old.json", R"({"status": "ok"})")));
+  EXPECT_TRUE(read_cached_record(dir.write("ok.json", R"({"status": "ok", "setup_check": {"findings": []}})")));
+  EXPECT_TRUE(read_cached_record(
+      dir.write("check.json", R"({"status": "check set-up", "setup_check": {"findings": [{"key": "axis_sign"}]}})")));
 }
 
 }  // namespace
