@@ -42,5 +42,6 @@ int run_acquire(const Invocation& inv);
 int run_virtual_rig(const Invocation& inv);
 int run_report(const Invocation& inv);
 int run_analyze(const Invocation& inv);
+int run_fit(const Invocation& inv);
 
 }  // namespace fourbar::cli

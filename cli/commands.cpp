@@ -9,6 +9,7 @@ std::span<const Command> commands() {
   static constexpr std::array table{
       Command{"report", "the main job: a session folder of recordings -> one HTML report, theory over measurement",
               run_report},
+      Command{"fit", "identify the bearing's restitution e and friction mu from a session's recordings", run_fit},
       Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
       Command{"analyze", "coupler and rocker angular acceleration and velocity from a recording, averaged",
               run_analyze},
