@@ -28,7 +28,7 @@ done
 export fourbar work jobs
 printf '%s\n' "${cases[@]}" | xargs -P "$parallel" -L 1 bash -c \
   '"$fourbar" fit "$work/$0" --out "$work/$0/fit" --jobs "$jobs" -q >"$work/$0/fit.log" 2>&1 || true'
-printf '| e | contact | fitted e [interval] | μ | fitted μ [interval] | e inside | μ inside | χ²/term fit (prior) | a fit (prior) | evaluations | simulations | s |\n'
+printf '| e | contact | fitted e [interval] | μ | fitted μ [interval] | e inside | μ inside | χ²/term fit (prior) | a fit (prior) | evaluations | simulations | s wall (CPU) |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|---|\n'
 for c in "${cases[@]}"; do
   set -- $c
@@ -51,6 +51,6 @@ t = max(1, j["terms"])
 af = [r.get("magnification_fitted") for r in j["recordings"]]
 ap = [r.get("magnification_prior") for r in j["recordings"]]
 fmt = lambda v: "/".join(f"{x:.2f}" if x is not None else "–" for x in v)
-print(f"| {e} | {contact} | {ce} | {mu} | {cm} | {ie} | {im} | {j['chi2']/t:.2f} ({j['chi2_prior']/t:.1f}) | {fmt(af)} ({fmt(ap)}) | {j['evaluations']} | {j['simulations']} | {j['seconds']:.0f} |")
+print(f"| {e} | {contact} | {ce} | {mu} | {cm} | {ie} | {im} | {j['chi2']/t:.2f} ({j['chi2_prior']/t:.1f}) | {fmt(af)} ({fmt(ap)}) | {j['evaluations']} | {j['simulations']} | {j['seconds']:.0f} ({j.get('cpu_seconds', 0):.0f}) |")
 PY
 done

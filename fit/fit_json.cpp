@@ -87,6 +87,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
             {"simulated_turns", o.simulated_turns},
             {"turns_simulated", f.turns_simulated},
             {"seconds", f.seconds},
+            {"cpu_seconds", f.cpu_seconds},
             {"seconds_per_simulation", f.seconds_per_simulation},
             {"threads", o.threads},
             {"notes", f.notes}};

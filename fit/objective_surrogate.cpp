@@ -54,8 +54,15 @@ SurrogateFit fit_surrogate(const std::vector<EvaluatedPoint>& all, double e_lo, 
     const double hxx = 2 * c(3), hyy = 2 * c(5), hxy = c(4);
     if (hxx > 0 && hyy > 0 && hxx * hyy - hxy * hxy > 0) out.correlation = -hxy / std::sqrt(hxx * hyy);
   }
-  // The quadratic on a fine grid of the box: minimum and profiles.
+  // The quadratic on a fine grid of the box: minimum and profiles. Its
+  // minimum is looked for only within the points it was fitted to (their
+  // bounding box): outside it the quadratic extrapolates.
   auto q = [&](double x, double y) { return row(x, y).dot(c); };
+  double x_lo = 1, x_hi = 0, y_lo = 1, y_hi = 0;
+  for (const auto& p : used)
+    x_lo = std::min(x_lo, u(p.restitution)), x_hi = std::max(x_hi, u(p.restitution)),
+    y_lo = std::min(y_lo, v(p.friction)), y_hi = std::max(y_hi, v(p.friction));
+  const double tiny = 1e-9;
   const int ny = two ? kProfileSteps : 1;
   std::vector<double> prof_e(kProfileSteps, std::numeric_limits<double>::infinity()), prof_m(ny, std::numeric_limits<double>::infinity());
   double qmin = std::numeric_limits<double>::infinity();
@@ -64,7 +71,8 @@ SurrogateFit fit_surrogate(const std::vector<EvaluatedPoint>& all, double e_lo, 
       const double x = i / double(kProfileSteps - 1), y = two ? j / double(kProfileSteps - 1) : 0.0;
       const double val = q(x, y);
       prof_e[i] = std::min(prof_e[i], val), prof_m[j] = std::min(prof_m[j], val);
-      if (val < qmin) qmin = val, out.restitution = e_lo + x * (e_hi - e_lo), out.friction = two ? mu_lo + y * (mu_hi - mu_lo) : 0.0;
+      const bool inside = x >= x_lo - tiny && x <= x_hi + tiny && (!two || (y >= y_lo - tiny && y <= y_hi + tiny));
+      if (inside && val < qmin) qmin = val, out.restitution = e_lo + x * (e_hi - e_lo), out.friction = two ? mu_lo + y * (mu_hi - mu_lo) : 0.0;
     }
   out.minimum = qmin;
   auto range = [&](const std::vector<double>& prof, double lo, double hi, double& a, double& b_) {
@@ -76,9 +84,9 @@ SurrogateFit fit_surrogate(const std::vector<EvaluatedPoint>& all, double e_lo, 
   };
   range(prof_e, e_lo, e_hi, out.restitution_low, out.restitution_high);
   if (two) range(prof_m, mu_lo, mu_hi, out.friction_low, out.friction_high);
-  // A quadratic that is not curved upwards in e (and μ) does not bound anything.
-  const bool curved = two ? (c(3) > 0 && c(5) > 0) : c(2) > 0;
-  out.ok = curved;
+  // A quadratic that is not curved upwards (positive definite) does not bound anything.
+  const bool curved = two ? out.correlation.has_value() : c(2) > 0;
+  out.ok = curved && std::isfinite(qmin);
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -193,6 +194,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   validate_fit_options(o);
   if (targets.empty()) throw InputError("fit: no recordings to fit");
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   SimulationCache cache(targets, {o.warmup_turns, o.simulated_turns, o.tolerance, std::max(1u, o.threads)});
   FitResult out;
 
@@ -238,17 +240,31 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   const SurrogateFit sf = fit_surrogate(evaluated, lo[0], hi[0], o.fit_friction ? lo[1] : 0.0,
                                         o.fit_friction ? hi[1] : 1.0, o.fit_friction, noise_delta);
   out.interval_delta = sf.points_used > 0 ? sf.delta : noise_delta;
-  out.surrogate_ok = sf.ok;
   out.surrogate_residual_rms = sf.residual_rms;
+  bool use_surrogate = sf.ok;
   if (sf.ok) {
+    // The smooth model's minimum, checked: χ² there must be within the
+    // objective's noise of the lowest evaluated point (else the quadratic
+    // does not describe the bottom and the raw profile is used).
     const double xy[2] = {sf.restitution, sf.friction};
-    best = point(o, xy);
-    cache.ensure({best});
+    const ContactParameters candidate = point(o, xy);
+    cache.ensure({candidate});
     ++out.evaluations;
+    const double at = chi2_at(cache, o, candidate).total;
+    if (at <= best_chi + 2 * out.interval_delta) {
+      best = candidate;
+    } else {
+      use_surrogate = false;
+      out.notes.push_back("the smooth model of the objective missed its bottom (χ² " + format_number(at, 3) +
+                          " at its minimum, " + format_number(best_chi, 3) +
+                          " at the best point evaluated): the interval comes from the raw profile");
+      if (at < best_chi) best_chi = at, best = candidate;
+    }
   }
+  out.surrogate_ok = use_surrogate;
   ParameterEstimate pe{"restitution", best.restitution, 0, 0, true, ge, {}};
   for (std::size_t i = 0; i < ge.size(); ++i) pe.profile_chi2.push_back(*std::min_element(chi[i].begin(), chi[i].end()));
-  if (sf.ok) pe.low = sf.restitution_low, pe.high = sf.restitution_high;
+  if (use_surrogate) pe.low = sf.restitution_low, pe.high = sf.restitution_high;
   else interval(pe, best_chi, out.interval_delta, lo[0], hi[0]);
   pe.low = std::min(pe.low, pe.value), pe.high = std::max(pe.high, pe.value);
   out.parameters.push_back(pe);
@@ -259,11 +275,11 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
       for (std::size_t i = 0; i < ge.size(); ++i) m = std::min(m, chi[i][j]);
       pm.profile_chi2.push_back(m);
     }
-    if (sf.ok) pm.low = sf.friction_low, pm.high = sf.friction_high;
+    if (use_surrogate) pm.low = sf.friction_low, pm.high = sf.friction_high;
     else interval(pm, best_chi, out.interval_delta, lo[1], hi[1]);
     pm.low = std::min(pm.low, pm.value), pm.high = std::max(pm.high, pm.value);
     out.parameters.push_back(pm);
-    out.correlation = sf.correlation;
+    if (use_surrogate) out.correlation = sf.correlation;
   }
   for (ParameterEstimate& p : out.parameters) {
     const double box = p.name == "restitution" ? hi[0] - lo[0] : hi[1] - lo[1];
@@ -303,6 +319,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   out.simulations = cache.simulations();
   out.turns_simulated = cache.turns_simulated();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   out.seconds_per_simulation =
       cache.simulations() > 0 ? cache.compute_seconds() * std::max(1u, o.threads) / cache.simulations() : 0.0;
   return out;

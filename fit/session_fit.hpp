@@ -91,7 +91,8 @@ struct FitResult {
   int evaluations = 0;       ///< objective evaluations (NLopt + profile)
   int simulations = 0;       ///< simulations run (cache misses)
   long long turns_simulated = 0;
-  double seconds = 0;
+  double seconds = 0;        ///< wall time
+  double cpu_seconds = 0;    ///< CPU time of the process over the fit (all threads)
   double seconds_per_simulation = 0;  ///< CPU time per simulation (wall × threads / simulations, approx.)
   /// Time-domain magnification factor a of α3 (α4 without a coupler channel)
   /// per recording: RMS of the model's averaged deviation from the nominal
