@@ -7,8 +7,9 @@ using nlohmann::json;
 std::string not_identifiable_advice(const std::string& parameter) {
   return parameter + ": not identifiable from these recordings (the objective stays within its noise over more than "
                      "half the box); record more turns per recording (the statistics' error falls as 1/sqrt(turns)), "
-                     "the rocker channel as well as the coupler, and the larger clearance or higher speed, where "
-                     "impacts are strongest";
+                     "at a sample rate of at least 8x the averaging filter's corner (e shows in the band above it), "
+                     "with the rocker channel as well as the coupler, and at the larger clearance and higher speed, "
+                     "where impacts are strongest";
 }
 
 namespace {
