@@ -43,5 +43,6 @@ int run_virtual_rig(const Invocation& inv);
 int run_report(const Invocation& inv);
 int run_analyze(const Invocation& inv);
 int run_inspect(const Invocation& inv);
+int run_fit(const Invocation& inv);
 
 }  // namespace fourbar::cli

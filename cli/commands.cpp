@@ -11,6 +11,7 @@ std::span<const Command> commands() {
               run_report},
       Command{"inspect", "look inside a recording before there is a manifest; --manifest-template starts one",
               run_inspect},
+      Command{"fit", "identify the bearing's restitution e and friction mu from a session's recordings", run_fit},
       Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
       Command{"analyze", "coupler and rocker angular acceleration and velocity from a recording, averaged",
               run_analyze},

@@ -8,7 +8,7 @@
 # Prints each file over the limit and exits 1 if there is any, else 0.
 set -uo pipefail
 max_lines=500
-folders=(common mechanism acquire sim analyze virtual_rig compare report cli)
+folders=(common mechanism cluster acquire sim analyze virtual_rig compare fit report cli)
 root=${1:-"$(cd "$(dirname "$0")/.." && pwd)"}
 cd "$root" || exit 2
 over=0

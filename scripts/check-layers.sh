@@ -20,8 +20,9 @@ declare -A layer=(
   [acquire]=2 [sim]=2
   [analyze]=3 [virtual_rig]=3
   [compare]=4
-  [report]=5
-  [cli]=6
+  [fit]=5
+  [report]=6
+  [cli]=7
 )
 
 root=${1:-"$(cd "$(dirname "$0")/.." && pwd)"}

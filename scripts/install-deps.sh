@@ -13,6 +13,7 @@ packages=(
   libboost-program-options-dev  # the fourbar command line
   libtomlplusplus-dev     # rig, scene and manifest files
   nlohmann-json3-dev      # JSON summaries
+  libnlopt-dev            # derivative-free optimisers for the contact-parameter fit (fit/)
   libsundials-dev         # CVODE with root finding (sim events)
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev        # bench/ programs

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Recovery bench of `fourbar fit` (README "Fitting the contact parameters"):
+# SYNTHETIC sessions made with known parameters (bench/make_fit_session.sh:
+# 4 recordings, 250/350 rpm x 0.0254/0.254 mm, TURNS turns, 30 dB, a wrong
+# prior e = 0.95 smooth in session.toml), e in {0.2, 0.5, 0.8} x contact
+# {smooth, stick-slip mu 0.1, 0.3}; each fitted (PARALLEL fits at a time,
+# JOBS threads each), then one table row per session: truth, fitted value
+# [interval], truth inside?, chi2/term at the fit and at the prior,
+# evaluations, simulations, wall time.
+#   bench/fit_recovery.sh [WORK_DIR] [FOURBAR] [TURNS] [JOBS] [PARALLEL]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+work="${1:-/tmp/fourbar-fit-recovery}"
+fourbar="$(realpath "${2:-$root/build/cli/fourbar}")"
+turns="${3:-25}" jobs="${4:-2}" parallel="${5:-1}"
+mkdir -p "$work"
+cases=()
+seed=100
+for e in 0.2 0.5 0.8; do
+  for c in smooth 0.1 0.3; do
+    seed=$((seed + 10))
+    if [ "$c" = smooth ]; then contact=smooth mu=0; else contact=stick-slip mu=$c; fi
+    name="e${e}_${c}"
+    [ -f "$work/$name/session.toml" ] || "$root/bench/make_fit_session.sh" "$work/$name" "$e" "$contact" "$mu" "$turns" 30 "$seed" "$fourbar"
+    cases+=("$name $e $mu $contact")
+  done
+done
+export fourbar work jobs
+printf '%s\n' "${cases[@]}" | xargs -P "$parallel" -L 1 bash -c \
+  '"$fourbar" fit "$work/$0" --out "$work/$0/fit" --jobs "$jobs" -q >"$work/$0/fit.log" 2>&1 || true'
+printf '| e | contact | fitted e [interval] | μ | fitted μ [interval] | e inside | μ inside | χ²/term fit (prior) | a fit (prior) | evaluations | simulations | s wall (CPU) |\n'
+printf '|---|---|---|---|---|---|---|---|---|---|---|---|\n'
+for c in "${cases[@]}"; do
+  set -- $c
+  python3 - "$work/$1/fit/fit.json" "$2" "$3" "$4" <<'PY'
+import json, sys
+path, e, mu, contact = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
+try:
+    j = json.load(open(path))
+except Exception as ex:
+    print(f"| {e} | {contact} | failed: {ex} |"); sys.exit()
+p = j["parameters"]
+def cell(name, truth):
+    if name not in p: return "–", "–"
+    q = p[name]
+    ident = "" if q["identifiable"] else " not identifiable"
+    return f"{q['value']:.2f} [{q['low']:.2f}, {q['high']:.2f}]{ident}", "yes" if q["low"] - 1e-9 <= truth <= q["high"] + 1e-9 else "NO"
+ce, ie = cell("restitution", e)
+cm, im = cell("friction_coefficient", mu)
+t = max(1, j["terms"])
+af = [r.get("magnification_fitted") for r in j["recordings"]]
+ap = [r.get("magnification_prior") for r in j["recordings"]]
+fmt = lambda v: "/".join(f"{x:.2f}" if x is not None else "–" for x in v)
+print(f"| {e} | {contact} | {ce} | {mu} | {cm} | {ie} | {im} | {j['chi2']/t:.2f} ({j['chi2_prior']/t:.1f}) | {fmt(af)} ({fmt(ap)}) | {j['evaluations']} | {j['simulations']} | {j['seconds']:.0f} ({j.get('cpu_seconds', 0):.0f}) |")
+PY
+done

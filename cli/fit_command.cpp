@@ -1,0 +1,168 @@
+// `fourbar fit SESSION_DIR [--out DIR]`: the bearing's contact parameters
+// (restitution e, Coulomb μ) identified from a session's recordings
+// (README "Fitting the contact parameters").
+
+#include <algorithm>
+#include <iostream>
+#include <thread>
+
+#include "cli/command.hpp"
+#include "common/atomic_output.hpp"
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "fit/fit_json.hpp"
+#include "fit/session_fit.hpp"
+#include "report/session_settings.hpp"
+
+namespace po = boost::program_options;
+
+namespace fourbar::cli {
+
+namespace {
+
+constexpr const char* kDetails = R"(Every recording in SESSION_DIR goes through acquire and analyze with the
+session's settings (session.toml, as `fourbar report` does). For each, the
+turn-to-turn statistics of the coupler and rocker alpha (spread over turns,
+per-turn deviation, per-turn peak deviation, averaged deviation; each with its
+standard error from the recorded turns) are compared with the same statistics
+of the clearance model at the recording's measured speed and clearance. The
+restitution e and the stick-slip friction coefficient mu (mu = 0: smooth) that
+make them agree are searched over the box: NLopt DIRECT-L, then BOBYQA; the
+interval of each parameter is where the objective stays within its noise
+(README "Fitting the contact parameters").
+
+Writes DIR/fit.json (default SESSION_DIR/fit/fit.json): parameters ->
+restitution, friction_coefficient -> value, low, high, identifiable, profile;
+chi2 per recording at the fit and at session.toml's prior; evaluations,
+simulations, turns, time.
+
+Exit status: 0 fitted; 1 no clearance effect measurable above the noise floor
+(nothing fitted) or the run failed; 2 bad arguments or session (nothing
+written).
+)";
+
+std::pair<double, double> parse_box(const std::string& option, const std::string& text) {
+  const auto colon = text.find(':');
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument("no colon");
+    std::size_t used_lo = 0, used_hi = 0;
+    const std::string lo_text = text.substr(0, colon), hi_text = text.substr(colon + 1);
+    const double lo = std::stod(lo_text, &used_lo), hi = std::stod(hi_text, &used_hi);
+    if (used_lo != lo_text.size() || used_hi != hi_text.size()) throw std::invalid_argument("trailing text");
+    return {lo, hi};
+  } catch (const std::exception&) {
+    throw InputError("fit: --" + option + " '" + text + "': write LOW:HIGH, e.g. --" + option + " 0:1");
+  }
+}
+
+}  // namespace
+
+int run_fit(const Invocation& inv) {
+  std::string dir, out, restitution_box, friction_box;
+  bool per_recording = false, smooth_only = false, quiet = false;
+  int jobs = 0, turns = 0, warmup = 20;
+  po::options_description opts("options");
+  opts.add_options()("session", po::value(&dir)->required(), "session folder with the recordings and manifests")(
+      "out,o", po::value(&out), "output folder for fit.json (default SESSION_DIR/fit)")(
+      "per-recording", po::bool_switch(&per_recording), "fit each recording alone (shows whether e, mu are shared)")(
+      "smooth", po::bool_switch(&smooth_only), "fit e only, with the smooth contact law (no friction)")(
+      "restitution", po::value(&restitution_box), "box for e, LOW:HIGH (default 0:1)")(
+      "friction", po::value(&friction_box), "box for mu, LOW:HIGH (default 0:0.5)")(
+      "turns", po::value(&turns), "simulated turns per simulation kept (default: 2x the measured turns, at least 40)")(
+      "warmup", po::value(&warmup), "simulated turns discarded before them (default 20)")(
+      "jobs,j", po::value(&jobs), "simulations at once (default: every core)")(
+      "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
+  po::positional_options_description pos;
+  pos.add("session", 1);
+  po::variables_map vm;
+  if (!parse_arguments("fit", "SESSION_DIR [--out DIR] [--per-recording] [--smooth] [--restitution LO:HI] [--friction LO:HI]",
+                       kDetails, opts, pos, inv, vm))
+    return 0;
+
+  FitOptions o;
+  if (!restitution_box.empty()) std::tie(o.box.restitution_low, o.box.restitution_high) = parse_box("restitution", restitution_box);
+  if (!friction_box.empty()) std::tie(o.box.friction_low, o.box.friction_high) = parse_box("friction", friction_box);
+  o.fit_friction = !smooth_only;
+  o.warmup_turns = warmup;
+  if (jobs < 0) throw InputError("fit: --jobs " + std::to_string(jobs) + " must be 1 or more (or 0 for every core)");
+  o.threads = jobs > 0 ? static_cast<unsigned>(jobs) : std::max(1u, std::thread::hardware_concurrency());
+  o.simulated_turns = turns > 0 ? turns : 40;  // checked again below once the measured turns are known
+  if (turns < 0) throw InputError("fit: --turns " + std::to_string(turns) + " must be 8 or more");
+  validate_fit_options(o);
+
+  const std::filesystem::path session = dir;
+  const SessionSettings settings = load_session_settings(session);
+  const SessionFiles files = find_session_files(session);
+  if (files.recordings.empty())
+    throw InputError("fit: " + session.string() + ": no recordings (.wav .flac .csv ...) in the folder");
+  AnalyzeOptions analysis = settings.analysis;
+  analysis.keep_revolutions = true;
+  analysis.progress = false;
+  std::vector<RecordingTarget> targets;
+  std::size_t max_turns = 0;
+  for (const auto& rec : files.recordings) {
+    auto manifest = rec;
+    manifest.replace_extension(".toml");
+    if (!quiet) std::cerr << "fit: analysing " << rec.filename().string() << "\n";
+    try {
+      const RecordingAnalysis a = analyze_recording(rec, manifest, analysis);
+      std::optional<RecordingAnalysis> band;
+      if (const auto bo = band_analysis_options(a, analysis)) band = analyze_recording(rec, manifest, *bo);
+      targets.push_back(make_recording_target(a, band ? &*band : nullptr, rec.filename().string()));
+      max_turns = std::max(max_turns, targets.back().turns);
+    } catch (const std::exception& e) {
+      std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
+    }
+  }
+  if (targets.empty()) throw RunError("fit: no recording of " + session.string() + " could be analysed");
+  if (turns == 0) o.simulated_turns = std::max<int>(40, static_cast<int>(2 * max_turns));
+
+  const double effect = clearance_effect_ratio(targets);
+  if (effect < kEffectRatio)
+    throw RunError("fit: " + session.string() +
+                   ": no clearance effect measurable above the noise floor (the turn-to-turn variation of alpha "
+                   "stands at most " + format_number(effect, 2) +
+                   "x above the sensor-noise floor; impacts need " + format_number(kEffectRatio, 2) +
+                   "x): nothing to fit. Record at a larger clearance or higher speed, or check the sensors");
+
+  const TheorySettings& t = settings.theory;
+  const ContactParameters prior{t.restitution, t.contact, t.friction_coefficient};
+  nlohmann::json result;
+  auto report = [&](const std::string& label, const FitResult& f) {
+    std::cout << label << ": ";
+    for (const ParameterEstimate& p : f.parameters)
+      std::cout << p.name << " = " << format_number(p.value, 3) << " [" << format_number(p.low, 3) << ", "
+                << format_number(p.high, 3) << "]" << (p.identifiable ? "" : " (not identifiable)") << "  ";
+    std::cout << "chi2/term " << format_number(f.chi2 / std::max(1, f.terms), 3) << " (prior "
+              << format_number(f.chi2_prior / std::max(1, f.terms), 3) << "), " << f.simulations << " simulations, "
+              << format_number(f.seconds, 3) << " s\n";
+    for (const ParameterEstimate& p : f.parameters)
+      if (!p.identifiable) std::cout << "  " << not_identifiable_advice(p.name) << "\n";
+    for (const std::string& n : f.notes) std::cout << "  note: " << n << "\n";
+  };
+  if (per_recording) {
+    result["per_recording"] = nlohmann::json::array();
+    for (const RecordingTarget& tg : targets) {
+      const std::vector<RecordingTarget> one{tg};
+      const FitResult f = fit_contact_parameters(one, prior, o);
+      report(tg.name, f);
+      nlohmann::json j = fit_to_json(f, one, prior, o);
+      j["file"] = tg.name;
+      result["per_recording"].push_back(j);
+    }
+  } else {
+    const FitResult f = fit_contact_parameters(targets, prior, o);
+    report("session", f);
+    result = fit_to_json(f, targets, prior, o);
+  }
+  result["session"] = session.string();
+  result["clearance_effect_ratio"] = effect;
+  result["command_line"] = inv.command_line;
+  const std::filesystem::path out_dir = out.empty() ? session / "fit" : std::filesystem::path(out);
+  ensure_output_dir(out_dir);
+  write_text_file(out_dir / "fit.json", result.dump(2) + "\n");
+  std::cout << "wrote " << (out_dir / "fit.json").string() << "\n";
+  return 0;
+}
+
+}  // namespace fourbar::cli

@@ -1,0 +1,99 @@
+#include "fit/fit_json.hpp"
+
+namespace fourbar {
+
+using nlohmann::json;
+
+std::string not_identifiable_advice(const std::string& parameter) {
+  return parameter + ": not identifiable from these recordings (the objective stays within its noise over more than "
+                     "half the box); record more turns per recording (the statistics' error falls as 1/sqrt(turns)), "
+                     "at a sample rate of at least 8x the averaging filter's corner (e shows in the band above it), "
+                     "with the rocker channel as well as the coupler, and at the larger clearance and higher speed, "
+                     "where impacts are strongest";
+}
+
+namespace {
+
+json contact_json(const ContactParameters& p) {
+  json j = {{"restitution", p.restitution}, {"contact", to_string(p.contact)}};
+  if (p.contact == ContactLaw::stick_slip) j["friction_coefficient"] = p.friction_coefficient;
+  return j;
+}
+
+}  // namespace
+
+json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets, const ContactParameters& prior,
+                 const FitOptions& o) {
+  json params = json::object();
+  for (const ParameterEstimate& p : f.parameters) {
+    json pj = {{"value", p.value}, {"low", p.low}, {"high", p.high}, {"identifiable", p.identifiable}};
+    json prof = json::array();
+    for (std::size_t i = 0; i < p.profile_at.size(); ++i) prof.push_back({p.profile_at[i], p.profile_chi2[i]});
+    pj["profile"] = prof;
+    params[p.name] = pj;
+  }
+  json contact = {{"value", to_string(f.best.contact)}};
+  if (o.fit_friction) {
+    const auto& mu = f.parameters.at(1);
+    contact["smooth_possible"] = mu.low <= o.box.friction_low + 1e-12;
+  }
+  params["contact"] = contact;
+  json recs = json::array();
+  for (std::size_t r = 0; r < f.recordings.size(); ++r) {
+    const RecordingFitTerm& t = f.recordings[r];
+    json rj = {{"file", t.name},
+               {"chi2", t.chi2},
+               {"terms", t.terms},
+               {"chi2_per_term", t.terms > 0 ? t.chi2 / t.terms : 0.0},
+               {"chi2_prior", t.chi2_prior}};
+    if (r < targets.size()) {
+      const RecordingTarget& tg = targets[r];
+      rj["clearance_mm"] = tg.clearance_m * 1e3;
+      rj["crank_speed_rpm"] = std::abs(tg.crank_speed_rad_s) * 60.0 / (2.0 * 3.14159265358979323846);
+      rj["measured_turns"] = tg.turns;
+      json stats = json::object();
+      for (FitLink l : kFitLinks) {
+        const auto& m = tg.measured[static_cast<std::size_t>(l)];
+        if (!m) continue;
+        json sj = json::object();
+        for (ResponseStatistic s : kResponseStatistics)
+          sj[std::string(name_of(s))] = {{"value", m->value[index_of(s)]}, {"standard_error", m->standard_error[index_of(s)]}};
+        stats[std::string(name_of(l))] = sj;
+      }
+      rj["measured_statistics"] = stats;
+    }
+    if (r < f.magnification_fitted.size()) {
+      if (f.magnification_fitted[r]) rj["magnification_fitted"] = *f.magnification_fitted[r];
+      if (f.magnification_prior[r]) rj["magnification_prior"] = *f.magnification_prior[r];
+    }
+    recs.push_back(rj);
+  }
+  json stats = json::array();
+  for (ResponseStatistic s : o.statistics) stats.push_back(std::string(name_of(s)));
+  json j = {{"parameters", params},
+            {"fitted", contact_json(f.best)},
+            {"prior", contact_json(prior)},
+            {"chi2", f.chi2},
+            {"chi2_prior", f.chi2_prior},
+            {"terms", f.terms},
+            {"chi2_per_term", f.terms > 0 ? f.chi2 / f.terms : 0.0},
+            {"recordings", recs},
+            {"statistics", stats},
+            {"interval_delta_chi2", f.interval_delta},
+            {"smooth_model", {{"fitted", f.surrogate_ok}, {"residual_rms", f.surrogate_residual_rms}}},
+            {"evaluations", f.evaluations},
+            {"simulations", f.simulations},
+            {"turns_per_simulation", o.warmup_turns + o.simulated_turns},
+            {"warmup_turns", o.warmup_turns},
+            {"simulated_turns", o.simulated_turns},
+            {"turns_simulated", f.turns_simulated},
+            {"seconds", f.seconds},
+            {"cpu_seconds", f.cpu_seconds},
+            {"seconds_per_simulation", f.seconds_per_simulation},
+            {"threads", o.threads},
+            {"notes", f.notes}};
+  if (f.correlation) j["correlation_restitution_friction"] = *f.correlation;
+  return j;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,22 @@
+#pragma once
+// fit.json: the fitted contact parameters with their intervals, the
+// objective per recording, and what the fit cost (README "Fitting the
+// contact parameters" lists every field).
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "fit/session_fit.hpp"
+
+namespace fourbar {
+
+/// One fit (the session's, or one recording's with --per-recording).
+nlohmann::json fit_to_json(const FitResult& fit, const std::vector<RecordingTarget>& targets,
+                           const ContactParameters& prior, const FitOptions& options);
+
+/// What to record instead when a parameter is not identifiable.
+std::string not_identifiable_advice(const std::string& parameter);
+
+}  // namespace fourbar

@@ -1,0 +1,328 @@
+#include "fit/session_fit.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <cmath>
+#include <exception>
+#include <limits>
+
+#include <nlopt.h>
+
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "fit/objective_surrogate.hpp"
+#include "fit/simulation_cache.hpp"
+
+namespace fourbar {
+
+namespace {
+
+/// χ² of a failed simulation: worse than any real fit.
+constexpr double kFailedChi2 = 1e12;
+
+double transformed(ResponseStatistic s, double v) { return is_magnitude(s) ? std::log(std::max(v, 1e-30)) : v; }
+double transformed_se(ResponseStatistic s, double v, double se) {
+  return is_magnitude(s) ? se / std::max(std::abs(v), 1e-30) : se;
+}
+
+ContactParameters point(const FitOptions& o, const double* x) {
+  ContactParameters p;
+  p.restitution = x[0];
+  if (o.fit_friction && x[1] > 0) p.contact = ContactLaw::stick_slip, p.friction_coefficient = x[1];
+  return p;
+}
+
+struct Chi2 {
+  double total = 0;
+  int terms = 0;
+  std::vector<double> by_recording;
+  std::vector<int> terms_by_recording;
+};
+
+Chi2 chi2_at(const SimulationCache& cache, const FitOptions& o, const ContactParameters& p) {
+  const auto& targets = cache.targets();
+  Chi2 c;
+  c.by_recording.assign(targets.size(), 0.0);
+  c.terms_by_recording.assign(targets.size(), 0);
+  for (std::size_t r = 0; r < targets.size(); ++r) {
+    const CachedSimulation& sim = cache.at(r, p);
+    for (FitLink l : kFitLinks) {
+      const auto li = static_cast<std::size_t>(l);
+      const auto& meas = targets[r].measured[li];
+      if (!meas) continue;
+      for (ResponseStatistic s : o.statistics) {
+        const auto si = index_of(s);
+        double term = kFailedChi2;
+        if (sim.error.empty()) {
+          const StatisticValues& m = *sim.statistics.link[li];
+          const double d = transformed(s, m.value[si]) - transformed(s, meas->value[si]);
+          const double var = std::pow(transformed_se(s, meas->value[si], meas->standard_error[si]), 2) +
+                             std::pow(transformed_se(s, m.value[si], m.standard_error[si]), 2);
+          term = d * d / std::max(var, 1e-12);
+        }
+        c.by_recording[r] += term, c.terms_by_recording[r] += 1;
+        c.total += term, c.terms += 1;
+      }
+      const auto& band = targets[r].measured_band[li];
+      if (!o.use_band || !band) continue;
+      double term = kFailedChi2;
+      if (sim.error.empty() && sim.statistics.band[li]) {
+        const BandEnergy& m = *sim.statistics.band[li];
+        const double d = std::log(std::max(m.excess, 1e-30)) - std::log(std::max(band->excess, 1e-30));
+        const double var = std::pow(band->standard_error / std::max(band->excess, 1e-30), 2) +
+                           std::pow(m.standard_error / std::max(m.excess, 1e-30), 2);
+        term = d * d / std::max(var, 1e-12);
+      }
+      c.by_recording[r] += term, c.terms_by_recording[r] += 1;
+      c.total += term, c.terms += 1;
+    }
+  }
+  return c;
+}
+
+struct Search {
+  std::vector<EvaluatedPoint> points;
+  SimulationCache* cache = nullptr;
+  const FitOptions* options = nullptr;
+  int evaluations = 0;
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<double> best_x;
+  std::exception_ptr error;
+};
+
+/// NLopt's objective (C callback: nothing may be thrown through it; an
+/// exception is kept and rethrown after the optimiser returns).
+double objective(unsigned n, const double* x, double* /*grad: derivative-free only*/, void* data) {
+  auto* s = static_cast<Search*>(data);
+  if (s->error) return kFailedChi2;
+  try {
+    const ContactParameters p = point(*s->options, x);
+    s->cache->ensure({p});
+    const double v = chi2_at(*s->cache, *s->options, p).total;
+    ++s->evaluations;
+    s->points.push_back({p.restitution, p.friction_coefficient, v});
+    if (v < s->best) s->best = v, s->best_x.assign(x, x + n);
+    return v;
+  } catch (...) {
+    s->error = std::current_exception();
+    return kFailedChi2;
+  }
+}
+
+void run_nlopt(nlopt_algorithm algorithm, Search& search, const std::vector<double>& lo, const std::vector<double>& hi,
+               std::vector<double>& x, int max_evaluations, double step) {
+  const auto n = static_cast<unsigned>(lo.size());
+  nlopt_opt opt = nlopt_create(algorithm, n);
+  if (!opt) throw RunError("fit: NLopt could not create its optimiser");
+  nlopt_set_lower_bounds(opt, lo.data());
+  nlopt_set_upper_bounds(opt, hi.data());
+  nlopt_set_min_objective(opt, objective, &search);
+  nlopt_set_maxeval(opt, max_evaluations);
+  nlopt_set_xtol_abs1(opt, 1e-3);
+  if (step > 0) {
+    std::vector<double> dx(n, step);
+    nlopt_set_initial_step(opt, dx.data());
+  }
+  double f = 0;
+  nlopt_optimize(opt, x.data(), &f);  // a stop at maxeval or tolerance is a normal end here
+  nlopt_destroy(opt);
+  if (search.error) std::rethrow_exception(search.error);
+  if (!search.best_x.empty()) x = search.best_x;
+}
+
+std::vector<double> grid(double lo, double hi, int points) {
+  std::vector<double> g;
+  for (int i = 0; i < points; ++i)
+    g.push_back(points == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * static_cast<double>(i) / (points - 1));
+  return g;
+}
+
+/// Interval of a profile: where it stays within `delta` of `minimum`, ends
+/// interpolated linearly to the threshold between grid points; at least the value.
+void interval(ParameterEstimate& e, double minimum, double delta, double box_lo, double box_hi) {
+  const double limit = minimum + delta;
+  const auto& x = e.profile_at;
+  const auto& y = e.profile_chi2;
+  double lo = e.value, hi = e.value;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (y[i] > limit) continue;
+    double a = x[i], b = x[i];
+    if (i > 0 && y[i - 1] > limit) a = x[i] - (x[i] - x[i - 1]) * (limit - y[i]) / (y[i - 1] - y[i]);
+    else if (i > 0) a = x[i - 1];
+    else a = box_lo;
+    if (i + 1 < x.size() && y[i + 1] > limit) b = x[i] + (x[i + 1] - x[i]) * (limit - y[i]) / (y[i + 1] - y[i]);
+    else if (i + 1 < x.size()) b = x[i + 1];
+    else b = box_hi;
+    lo = std::min(lo, a), hi = std::max(hi, b);
+  }
+  e.low = std::max(box_lo, lo), e.high = std::min(box_hi, hi);
+}
+
+}  // namespace
+
+void validate_fit_options(const FitOptions& o) {
+  const FitBox& b = o.box;
+  auto bad = [](const std::string& what, const std::string& rule) { throw InputError("fit option " + what + ": " + rule); };
+  if (!(b.restitution_low >= 0 && b.restitution_high <= 1))
+    bad("--restitution " + format_number(b.restitution_low) + ":" + format_number(b.restitution_high),
+        "the restitution box must lie in [0, 1]");
+  if (!(b.restitution_low < b.restitution_high))
+    bad("--restitution " + format_number(b.restitution_low) + ":" + format_number(b.restitution_high),
+        "the box is given backwards or empty (low must be below high); write --restitution LOW:HIGH");
+  if (!(b.friction_low >= 0 && b.friction_high <= 2))
+    bad("--friction " + format_number(b.friction_low) + ":" + format_number(b.friction_high),
+        "the friction box must lie in [0, 2]");
+  if (!(b.friction_low < b.friction_high))
+    bad("--friction " + format_number(b.friction_low) + ":" + format_number(b.friction_high),
+        "the box is given backwards or empty (low must be below high); write --friction LOW:HIGH");
+  if (o.simulated_turns < 8) bad("--turns " + std::to_string(o.simulated_turns), "simulate at least 8 turns");
+  if (o.warmup_turns < 0) bad("--warmup " + std::to_string(o.warmup_turns), "must be >= 0");
+  if (o.global_evaluations < 1 || o.local_evaluations < 0 || o.profile_points_e < 3 || o.profile_points_mu < 3)
+    bad("evaluations", "the global stage needs >= 1 evaluation and each profile >= 3 points");
+  if (o.statistics.empty()) bad("statistics", "choose at least one statistic");
+}
+
+double clearance_effect_ratio(const std::vector<RecordingTarget>& targets) {
+  double best = 0;
+  for (const RecordingTarget& t : targets) best = std::max(best, t.effect_ratio);
+  return best;
+}
+
+FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, const ContactParameters& prior,
+                                 const FitOptions& o) {
+  validate_fit_options(o);
+  if (targets.empty()) throw InputError("fit: no recordings to fit");
+  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
+  SimulationCache cache(targets, {o.warmup_turns, o.simulated_turns, o.tolerance, std::max(1u, o.threads)});
+  FitResult out;
+
+  // Global stage (DIRECT-L over the box), then the local one (BOBYQA).
+  std::vector<double> lo{o.box.restitution_low}, hi{o.box.restitution_high};
+  if (o.fit_friction) lo.push_back(o.box.friction_low), hi.push_back(o.box.friction_high);
+  std::vector<double> x(lo.size());
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = 0.5 * (lo[i] + hi[i]);
+  Search search;
+  search.cache = &cache, search.options = &o;
+  run_nlopt(NLOPT_GN_DIRECT_L, search, lo, hi, x, o.global_evaluations, 0);
+  if (o.local_evaluations > 0) run_nlopt(NLOPT_LN_BOBYQA, search, lo, hi, x, o.local_evaluations, 0.05);
+
+  // Profiles over a grid of the box (one batch over the queue).
+  const std::vector<double> ge = grid(lo[0], hi[0], o.profile_points_e);
+  const std::vector<double> gm = o.fit_friction ? grid(lo[1], hi[1], o.profile_points_mu) : std::vector<double>{0.0};
+  std::vector<ContactParameters> points;
+  for (double e : ge)
+    for (double m : gm) {
+      const double xy[2] = {e, m};
+      points.push_back(point(o, xy));
+    }
+  points.push_back(prior);
+  cache.ensure(points);
+  std::vector<std::vector<double>> chi(ge.size(), std::vector<double>(gm.size()));
+  ContactParameters best = point(o, search.best_x.empty() ? x.data() : search.best_x.data());
+  double best_chi = chi2_at(cache, o, best).total;
+  for (std::size_t i = 0; i < ge.size(); ++i)
+    for (std::size_t j = 0; j < gm.size(); ++j) {
+      chi[i][j] = chi2_at(cache, o, points[i * gm.size() + j]).total;
+      if (chi[i][j] < best_chi) best_chi = chi[i][j], best = points[i * gm.size() + j];
+    }
+  out.evaluations = search.evaluations + static_cast<int>(points.size());
+
+  // The evaluated points → the smooth model of χ² (objective_surrogate.hpp);
+  // its minimum is the estimate and its profile the interval. Without a
+  // curved model, the raw grid profile around the lowest point bounds it.
+  std::vector<EvaluatedPoint> evaluated = search.points;
+  for (std::size_t i = 0; i < ge.size(); ++i)
+    for (std::size_t j = 0; j < gm.size(); ++j) evaluated.push_back({ge[i], gm[j], chi[i][j]});
+  const int nu = chi2_at(cache, o, best).terms;
+  const double noise_delta = std::sqrt(2.0 * nu);
+  const SurrogateFit sf = fit_surrogate(evaluated, lo[0], hi[0], o.fit_friction ? lo[1] : 0.0,
+                                        o.fit_friction ? hi[1] : 1.0, o.fit_friction, noise_delta);
+  out.interval_delta = sf.points_used > 0 ? sf.delta : noise_delta;
+  out.surrogate_residual_rms = sf.residual_rms;
+  bool use_surrogate = sf.ok;
+  if (sf.ok) {
+    // The smooth model's minimum, checked: χ² there must be within the
+    // objective's noise of the lowest evaluated point (else the quadratic
+    // does not describe the bottom and the raw profile is used).
+    const double xy[2] = {sf.restitution, sf.friction};
+    const ContactParameters candidate = point(o, xy);
+    cache.ensure({candidate});
+    ++out.evaluations;
+    const double at = chi2_at(cache, o, candidate).total;
+    if (at <= best_chi + 2 * out.interval_delta) {
+      best = candidate;
+    } else {
+      use_surrogate = false;
+      out.notes.push_back("the smooth model of the objective missed its bottom (χ² " + format_number(at, 3) +
+                          " at its minimum, " + format_number(best_chi, 3) +
+                          " at the best point evaluated): the interval comes from the raw profile");
+      if (at < best_chi) best_chi = at, best = candidate;
+    }
+  }
+  out.surrogate_ok = use_surrogate;
+  ParameterEstimate pe{"restitution", best.restitution, 0, 0, true, ge, {}};
+  for (std::size_t i = 0; i < ge.size(); ++i) pe.profile_chi2.push_back(*std::min_element(chi[i].begin(), chi[i].end()));
+  if (use_surrogate) pe.low = sf.restitution_low, pe.high = sf.restitution_high;
+  else interval(pe, best_chi, out.interval_delta, lo[0], hi[0]);
+  pe.low = std::min(pe.low, pe.value), pe.high = std::max(pe.high, pe.value);
+  out.parameters.push_back(pe);
+  if (o.fit_friction) {
+    ParameterEstimate pm{"friction_coefficient", best.friction_coefficient, 0, 0, true, gm, {}};
+    for (std::size_t j = 0; j < gm.size(); ++j) {
+      double m = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < ge.size(); ++i) m = std::min(m, chi[i][j]);
+      pm.profile_chi2.push_back(m);
+    }
+    if (use_surrogate) pm.low = sf.friction_low, pm.high = sf.friction_high;
+    else interval(pm, best_chi, out.interval_delta, lo[1], hi[1]);
+    pm.low = std::min(pm.low, pm.value), pm.high = std::max(pm.high, pm.value);
+    out.parameters.push_back(pm);
+    if (use_surrogate) out.correlation = sf.correlation;
+  }
+  for (ParameterEstimate& p : out.parameters) {
+    const double box = p.name == "restitution" ? hi[0] - lo[0] : hi[1] - lo[1];
+    p.identifiable = (p.high - p.low) <= o.identifiable_width * box;
+  }
+
+  const Chi2 at_best = chi2_at(cache, o, best), at_prior = chi2_at(cache, o, prior);
+  out.best = SimulationCache::canonical(best);
+  out.chi2 = at_best.total, out.terms = at_best.terms, out.chi2_prior = at_prior.total;
+  for (std::size_t r = 0; r < targets.size(); ++r)
+    out.recordings.push_back({targets[r].name, at_best.by_recording[r], at_best.terms_by_recording[r],
+                              at_prior.by_recording[r]});
+  for (std::size_t r = 0; r < targets.size(); ++r) {
+    auto a = [&](const ContactParameters& p) -> std::optional<double> {
+      const CachedSimulation& sim = cache.at(r, p);
+      if (!sim.error.empty()) return std::nullopt;
+      for (FitLink l : kFitLinks) {
+        const auto li = static_cast<std::size_t>(l);
+        const auto& m = targets[r].measured[li];
+        if (!m) continue;
+        const double md = m->value[index_of(ResponseStatistic::mean_deviation)];
+        if (!(md > 0)) return std::nullopt;
+        return sim.statistics.link[li]->value[index_of(ResponseStatistic::mean_deviation)] / md;
+      }
+      return std::nullopt;
+    };
+    out.magnification_fitted.push_back(a(best));
+    out.magnification_prior.push_back(a(prior));
+  }
+  for (const ParameterEstimate& p : out.parameters)
+    if (!p.identifiable) out.notes.push_back(p.name + " not identifiable from these recordings");
+  if (out.terms > 0 && out.chi2 / out.terms > kModelFamilyChi2PerTerm)
+    out.notes.push_back("at the best parameters the statistics still differ by " +
+                        format_number(std::sqrt(out.chi2 / out.terms), 2) +
+                        " standard errors (RMS): the model family does not describe this bearing; the values are "
+                        "effective ones");
+  out.simulations = cache.simulations();
+  out.turns_simulated = cache.turns_simulated();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  out.seconds_per_simulation =
+      cache.simulations() > 0 ? cache.compute_seconds() * std::max(1u, o.threads) / cache.simulations() : 0.0;
+  return out;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,118 @@
+#pragma once
+// The fit of the bearing's contact parameters to a session's recordings
+// (README "Fitting the contact parameters", docs/fit.md).
+//
+// Parameters: the restitution e and, with `fit_friction`, the Coulomb μ of
+// the stick-slip law (μ = 0 is the smooth law: the stick-slip impulse's
+// tangential part is bounded by μ·F). Shared by all recordings by default.
+//
+// Objective: χ²(p) = Σ over recordings, links and chosen statistics of
+//   (T(S_model(p)) − T(S_measured))² / (se_measured² + se_model²),
+// T = log for magnitudes; se from the jackknife over turns on both sides, so
+// a statistic counts by how well the measurement (and the finite simulation)
+// pins it down. The model is the clearance simulator at each recording's
+// operating point, `warmup_turns` discarded and `simulated_turns` kept.
+//
+// Search: NLopt's DIRECT-L over the box (global), then BOBYQA from its best
+// point (local, derivative-free, on the noisy objective). Every simulation
+// is cached by (recording, e, μ); the recordings of one evaluation, and the
+// points of the profile grid, are spread over the threads (or MPI ranks) by
+// cluster/case_queue.
+//
+// Uncertainty (objective_surrogate.hpp): χ² is noisy (chaos: ≈ √(2ν) from
+// point to point), so a quadratic fitted to the evaluated points near the
+// bottom gives the estimate (its minimum) and the interval: the range where
+// its profile stays within Δ = max(√(2ν), the points' scatter about it) of
+// the minimum — the objective's own noise plus the measurement's. An
+// interval wider than `identifiable_width` of its box is reported as not
+// identifiable. The raw profiles (grid of the box) are kept for the charts.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fit/recording_target.hpp"
+
+namespace fourbar {
+
+struct FitBox {
+  double restitution_low = 0.0, restitution_high = 1.0;
+  double friction_low = 0.0, friction_high = 0.5;
+};
+
+struct FitOptions {
+  FitBox box;
+  bool fit_friction = true;        ///< μ fitted too (stick-slip); false: smooth law, e only
+  int warmup_turns = 20;
+  int simulated_turns = 50;        ///< turns per simulation kept for the statistics
+  double tolerance = 1e-8;         ///< integrator tolerance
+  unsigned threads = 1;
+  int global_evaluations = 16;     ///< DIRECT-L
+  int local_evaluations = 10;      ///< BOBYQA
+  int profile_points_e = 8;        ///< grid of the profile along e
+  int profile_points_mu = 5;       ///< … along μ
+  double identifiable_width = 0.5; ///< an interval wider than this share of its box: not identifiable
+  bool use_band = true;            ///< the band energy above the averaging filter, where recorded
+  /// The statistics compared besides the band energy: those that carry e or
+  /// μ above their noise (docs/fit.md: sensitivity per statistic). Each extra
+  /// statistic that carries nothing adds its noise to χ² (≈ √2 per term).
+  std::vector<ResponseStatistic> statistics{ResponseStatistic::spread};
+};
+
+/// Throws InputError naming the option when the box is backwards or out of
+/// range, or a count is not positive.
+void validate_fit_options(const FitOptions& options);
+
+struct ParameterEstimate {
+  std::string name;          ///< "restitution", "friction_coefficient"
+  double value = 0, low = 0, high = 0;
+  bool identifiable = true;
+  std::vector<double> profile_at, profile_chi2;  ///< the profile (parameter value, min χ² there)
+};
+
+struct RecordingFitTerm {
+  std::string name;
+  double chi2 = 0;           ///< this recording's part of χ² at the optimum
+  int terms = 0;
+  double chi2_prior = 0;     ///< … at the prior (session.toml) parameters
+};
+
+struct FitResult {
+  std::vector<ParameterEstimate> parameters;  ///< restitution, then friction_coefficient when fitted
+  ContactParameters best;
+  double chi2 = 0;           ///< at the optimum
+  int terms = 0;             ///< ν: statistics compared
+  double chi2_prior = 0;     ///< at the prior
+  double interval_delta = 0; ///< Δχ² that bounded the intervals: max(√(2ν), scatter about the smooth model)
+  bool surrogate_ok = false; ///< the smooth model of χ² had a minimum (else: raw grid profile)
+  double surrogate_residual_rms = 0;
+  std::optional<double> correlation;  ///< of e and μ over the profile region (weights e^(−Δχ²/2))
+  std::vector<RecordingFitTerm> recordings;
+  int evaluations = 0;       ///< objective evaluations (NLopt + profile)
+  int simulations = 0;       ///< simulations run (cache misses)
+  long long turns_simulated = 0;
+  double seconds = 0;        ///< wall time
+  double cpu_seconds = 0;    ///< CPU time of the process over the fit (all threads)
+  double seconds_per_simulation = 0;  ///< CPU time per simulation (wall × threads / simulations, approx.)
+  /// Time-domain magnification factor a of α3 (α4 without a coupler channel)
+  /// per recording: RMS of the model's averaged deviation from the nominal
+  /// over the measurement's (compare/magnification.hpp), at the fit and at the prior.
+  std::vector<std::optional<double>> magnification_fitted, magnification_prior;
+  std::vector<std::string> notes;     ///< not identifiable, model family, …
+};
+
+/// χ² per term above which the fit says the model family differs from
+/// what was measured (the statistics' noise would give ≈ 1).
+inline constexpr double kModelFamilyChi2PerTerm = 4.0;
+
+/// Fits `targets` together. `prior` is the session's setting (reported beside).
+FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, const ContactParameters& prior,
+                                 const FitOptions& options);
+
+/// Whether the recordings show a clearance effect above their noise: the
+/// largest RecordingTarget::effect_ratio (turn-to-turn variation over the
+/// sensor-noise floor). Below kEffectRatio there is nothing to fit.
+double clearance_effect_ratio(const std::vector<RecordingTarget>& targets);
+inline constexpr double kEffectRatio = 3.0;
+
+}  // namespace fourbar

@@ -1,0 +1,133 @@
+#include "fit/simulation_cache.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "cluster/case_queue.hpp"
+#include "common/error.hpp"
+
+namespace fourbar {
+
+namespace {
+
+constexpr double kResolution = 1e-6;
+
+std::int64_t quantised(double v) { return static_cast<std::int64_t>(std::llround(v / kResolution)); }
+
+// Bytes: status (1) then either the error text or the statistics as doubles.
+void put(std::string& out, double v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); }
+double take(const std::string& in, std::size_t& at) {
+  double v;
+  std::memcpy(&v, in.data() + at, sizeof v);
+  at += sizeof v;
+  return v;
+}
+
+std::string encode(const CachedSimulation& c) {
+  if (!c.error.empty()) return "E" + c.error;
+  std::string out = "S";
+  const SimulatedStatistics& s = c.statistics;
+  put(out, s.impacts_per_rev), put(out, s.sum_normal_impulse_per_rev_Ns), put(out, s.turns);
+  for (const auto& l : s.link) {
+    put(out, l ? 1.0 : 0.0);
+    if (!l) continue;
+    put(out, static_cast<double>(l->turns));
+    for (double v : l->value) put(out, v);
+    for (double v : l->standard_error) put(out, v);
+  }
+  for (const auto& b : s.band) {
+    put(out, b ? 1.0 : 0.0);
+    if (b) put(out, b->excess), put(out, b->standard_error), put(out, b->floor);
+  }
+  return out;
+}
+
+CachedSimulation decode(const std::string& in) {
+  CachedSimulation c;
+  if (in.empty() || in[0] == 'E') {
+    c.error = in.empty() ? "no result" : in.substr(1);
+    return c;
+  }
+  std::size_t at = 1;
+  SimulatedStatistics& s = c.statistics;
+  s.impacts_per_rev = take(in, at), s.sum_normal_impulse_per_rev_Ns = take(in, at);
+  s.turns = static_cast<int>(take(in, at));
+  for (auto& l : s.link) {
+    if (take(in, at) == 0.0) continue;
+    StatisticValues v;
+    v.turns = static_cast<std::size_t>(take(in, at));
+    for (double& x : v.value) x = take(in, at);
+    for (double& x : v.standard_error) x = take(in, at);
+    l = v;
+  }
+  for (auto& b : s.band) {
+    if (take(in, at) == 0.0) continue;
+    BandEnergy e;
+    e.excess = take(in, at), e.standard_error = take(in, at), e.floor = take(in, at);
+    b = e;
+  }
+  return c;
+}
+
+}  // namespace
+
+SimulationCache::SimulationCache(const std::vector<RecordingTarget>& targets, SimulationSettings settings)
+    : targets_(targets), settings_(settings) {}
+
+ContactParameters SimulationCache::canonical(const ContactParameters& p) {
+  ContactParameters c;
+  c.restitution = static_cast<double>(quantised(p.restitution)) * kResolution;
+  c.friction_coefficient =
+      p.contact == ContactLaw::stick_slip ? static_cast<double>(quantised(p.friction_coefficient)) * kResolution : 0.0;
+  c.contact = c.friction_coefficient > 0 ? ContactLaw::stick_slip : ContactLaw::smooth;
+  if (c.contact == ContactLaw::smooth) c.friction_coefficient = 0;
+  return c;
+}
+
+SimulationCache::Key SimulationCache::key(std::size_t recording, const ContactParameters& p) {
+  const ContactParameters c = canonical(p);
+  return {recording, quantised(c.restitution), quantised(c.friction_coefficient)};
+}
+
+void SimulationCache::ensure(const std::vector<ContactParameters>& points) {
+  std::vector<std::pair<std::size_t, ContactParameters>> todo;
+  std::map<Key, bool> queued;
+  for (const ContactParameters& p : points)
+    for (std::size_t r = 0; r < targets_.size(); ++r) {
+      const Key k = key(r, p);
+      if (cache_.count(k) || queued.count(k)) continue;
+      queued[k] = true;
+      todo.emplace_back(r, canonical(p));
+    }
+  if (todo.empty()) return;
+  std::vector<std::size_t> cases(todo.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) cases[i] = i;
+  const auto t0 = std::chrono::steady_clock::now();
+  run_case_queue(
+      cases, settings_.threads,
+      [&](std::size_t i) {
+        CachedSimulation c;
+        try {
+          c.statistics = simulate_statistics(targets_[todo[i].first], todo[i].second, settings_.warmup_turns,
+                                             settings_.simulated_turns, settings_.tolerance);
+        } catch (const std::exception& e) {
+          c.error = e.what();
+          if (c.error.empty()) c.error = "failed";
+        }
+        return encode(c);
+      },
+      [&](std::size_t i, std::string&& bytes) { cache_[key(todo[i].first, todo[i].second)] = decode(bytes); });
+  compute_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  simulations_ += static_cast<int>(todo.size());
+  turns_ += static_cast<long long>(todo.size()) * (settings_.warmup_turns + settings_.simulated_turns);
+}
+
+const CachedSimulation& SimulationCache::at(std::size_t recording, const ContactParameters& p) const {
+  const auto it = cache_.find(key(recording, p));
+  if (it == cache_.end()) throw RunError("fit: simulation asked for before it was run");
+  return it->second;
+}
+
+}  // namespace fourbar

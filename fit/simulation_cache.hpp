@@ -1,0 +1,61 @@
+#pragma once
+// The fit's simulations, cached by (recording, e, μ) and computed in
+// batches over the threads or MPI ranks of cluster/case_queue. The
+// parameters are rounded to 1e-6 before they key the cache and before they
+// are simulated, so a point asked for twice is simulated once and gives the
+// same statistics.
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "fit/recording_target.hpp"
+
+namespace fourbar {
+
+struct SimulationSettings {
+  int warmup_turns = 20;
+  int simulated_turns = 50;
+  double tolerance = 1e-8;
+  unsigned threads = 1;
+};
+
+/// A simulation's outcome: the statistics, or why the model failed there.
+struct CachedSimulation {
+  SimulatedStatistics statistics;
+  std::string error;  ///< empty when it ran
+};
+
+class SimulationCache {
+ public:
+  SimulationCache(const std::vector<RecordingTarget>& targets, SimulationSettings settings);
+
+  /// The parameters as simulated (rounded; μ = 0 and any μ with the smooth law map to smooth).
+  static ContactParameters canonical(const ContactParameters& p);
+
+  /// Makes sure every (recording, point) pair is simulated: the missing ones
+  /// in one batch over the queue.
+  void ensure(const std::vector<ContactParameters>& points);
+  /// A simulated pair (ensure() first).
+  const CachedSimulation& at(std::size_t recording, const ContactParameters& p) const;
+
+  int simulations() const { return simulations_; }
+  long long turns_simulated() const { return turns_; }
+  double compute_seconds() const { return compute_s_; }
+  const std::vector<RecordingTarget>& targets() const { return targets_; }
+
+ private:
+  using Key = std::tuple<std::size_t, std::int64_t, std::int64_t>;
+  static Key key(std::size_t recording, const ContactParameters& p);
+
+  const std::vector<RecordingTarget>& targets_;
+  SimulationSettings settings_;
+  std::map<Key, CachedSimulation> cache_;
+  int simulations_ = 0;
+  long long turns_ = 0;
+  double compute_s_ = 0;
+};
+
+}  // namespace fourbar
