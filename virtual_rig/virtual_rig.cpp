@@ -70,6 +70,23 @@ double unwrap(double angle, double previous) {
   return angle - units::kTwoPi * std::round((angle - previous) / units::kTwoPi);
 }
 
+/// The recording, its manifest and its truth must not land on a file the run
+/// reads (the scene, the rig): `--out S.flac` beside the scene `S.toml` would
+/// write the manifest S.toml over the scene.
+void refuse_overwriting_inputs(const std::filesystem::path& out, bool write_truth, const Provenance& provenance) {
+  std::vector<std::filesystem::path> outputs{out, sidecar_manifest_path(out)};
+  if (write_truth) outputs.push_back(truth_path(out));
+  for (const auto& o : outputs)
+    for (const auto& in : provenance.inputs) {
+      std::error_code ec;
+      if (std::filesystem::exists(o, ec) && std::filesystem::equivalent(o, in, ec))
+        throw InputError("virtual-rig: writing " + out.string() + " would overwrite the input " + in.string() +
+                         (o == out ? "" : " (with the recording's " + std::string(o == sidecar_manifest_path(out) ? "manifest" : "truth") + ")") +
+                         "; give the recording another name or folder, e.g. --out " +
+                         (out.parent_path() / (out.stem().string() + "_rec" + out.extension().string())).string());
+    }
+}
+
 }  // namespace
 
 std::filesystem::path truth_path(const std::filesystem::path& recording) {
@@ -90,6 +107,7 @@ CrankDrive crank_drive(const Scene& scene, const RecordingSpec& spec) {
 VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec& spec, const CrankDrive& drive,
                                         const MotionSource& motion, const std::filesystem::path& out,
                                         const Provenance& provenance, const VirtualRigOptions& options) {
+  refuse_overwriting_inputs(out, options.write_truth, provenance);
   const Rig& rig = *scene.rig;
   const double fs = spec.sample_rate_hz;
   const double w0 = std::abs(drive.mean_speed_rad_s), direction = drive.mean_speed_rad_s > 0 ? 1.0 : -1.0;

@@ -115,5 +115,21 @@ TEST_F(BadArguments, VirtualRig) {
     expect_clean_failure(c, out());
 }
 
+TEST_F(BadArguments, VirtualRigNeverWritesOverItsScene) {
+  // `--out S.flac` beside the scene S.toml: the recording's manifest would be
+  // S.toml. Refused before anything is written; the scene is left as it was.
+  std::string text = testing::read_file(kData + "/scenes/thesis_virtual_rig_350rpm.toml");
+  text.replace(text.find("../rigs/"), 8, kData + "/rigs/");
+  const auto scene = file("S.toml", text);
+  const std::string before = testing::read_file(scene);
+  const auto r = run_fourbar("virtual-rig " + scene.string() + " --out " + (dir.path() / "S.flac").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("would overwrite the input " + scene.string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("S_rec.flac"), std::string::npos) << r.err;
+  EXPECT_EQ(testing::count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(testing::read_file(scene), before);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "S.flac"));
+}
+
 }  // namespace
 }  // namespace fourbar
