@@ -83,7 +83,7 @@ int run_report(const Invocation& inv) {
   std::cout << "\n";
   if (strict && r.check_setup > 0)
     throw InputError("report: --strict: the set-up check found likely manifest mistakes in " +
-                     std::to_string(r.check_setup) + " recordings (named above and at the top of " + r.html.string() +
+                     std::to_string(r.check_setup) + (r.check_setup == 1 ? " recording" : " recordings") + " (named above and at the top of " + r.html.string() +
                      "); fix the keys named (README \"The set-up check\"), or run without --strict");
   return r.failed > 0 ? 1 : 0;
 }
