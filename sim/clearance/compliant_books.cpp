@@ -10,34 +10,20 @@
 #include "common/units.hpp"
 #include "sim/clearance/compliant_state.hpp"
 #include "sim/clearance/event_root.hpp"
+#include "sim/clearance/revolution_clock.hpp"
 
 namespace fourbar {
 
-namespace {
-
-/// Turns added before flooring a crank angle to its revolution index (as the three-mode books).
-constexpr double kTurnSlack = 1e-12;
-
-}  // namespace
-
 int CompliantSimulator::Impl::revolution_of(double time) const {
-  const double turns = (crank.at(absolute(time)).angle_rad - books.rev_origin_rad) * books.rev_dir / units::kTwoPi;
-  return static_cast<int>(std::floor(turns + kTurnSlack));
+  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.index_at(crank, absolute(time));
 }
 
 double CompliantSimulator::Impl::revolution_start(int k) const {
-  return crank.time_at_angle(books.rev_origin_rad + books.rev_dir * units::kTwoPi * k);
+  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.start_s(crank, k);
 }
 
 RevolutionRecord& CompliantSimulator::Impl::revolution(int k) {
-  while (static_cast<int>(books.revolutions.size()) <= k) {
-    RevolutionRecord r;
-    r.index = static_cast<int>(books.revolutions.size());
-    r.start_time_s = revolution_start(r.index);
-    r.end_time_s = revolution_start(r.index + 1);
-    books.revolutions.push_back(r);
-  }
-  return books.revolutions[k];
+  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.record(crank, books.revolutions, k);
 }
 
 void CompliantSimulator::Impl::book_interval(double ta, double tb) {

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "sim/clearance/revolution_clock.hpp"
 #include "mechanism/kinematics.hpp"
 #include "sim/clearance/simulator_state.hpp"
 
@@ -22,23 +23,15 @@ double ClearanceSimulator::Impl::energy_of_links(const CrankState& c, const Link
 }
 
 int ClearanceSimulator::Impl::revolution_of(double time) const {
-  const double turns = (crank.at(absolute(time)).angle_rad - books.rev_origin_rad) * books.rev_dir / units::kTwoPi;
-  return static_cast<int>(std::floor(turns + kTurnBoundarySlack_turns));
+  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.index_at(crank, absolute(time));
 }
 
 double ClearanceSimulator::Impl::revolution_start(int k) const {
-  return crank.time_at_angle(books.rev_origin_rad + books.rev_dir * units::kTwoPi * k);
+  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.start_s(crank, k);
 }
 
 RevolutionRecord& ClearanceSimulator::Impl::revolution(int k) {
-  while (static_cast<int>(books.revolutions.size()) <= k) {
-    RevolutionRecord r;
-    r.index = static_cast<int>(books.revolutions.size());
-    r.start_time_s = revolution_start(r.index);
-    r.end_time_s = revolution_start(r.index + 1);
-    books.revolutions.push_back(r);
-  }
-  return books.revolutions[k];
+  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.record(crank, books.revolutions, k);
 }
 
 void ClearanceSimulator::Impl::book_interval(double ta, double tb) {

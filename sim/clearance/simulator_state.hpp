@@ -37,9 +37,6 @@ constexpr double kArmDepthFraction = 1e-11;
 /// Slip arm speed in units of ξ·|ω2|: slower slip counts as none (choose_slip
 /// then tests sticking), and after a start from rest the slip witness waits for it.
 constexpr double kSlipArmSpeedFraction = 1e-9;
-/// Turns added before flooring a crank angle to its revolution index, so a
-/// time located on a turn boundary to round-off counts in the new turn.
-constexpr double kTurnBoundarySlack_turns = 1e-12;
 /// An impact "gains energy" only past this fraction of the energy scale
 /// (below it the balance is round-off).
 constexpr double kEnergyGainFraction = 1e-15;
