@@ -14,23 +14,20 @@
 // operating points, every setting, every input file with its SHA-256.
 // Print CSS puts each recording on its own page without the controls.
 //
+// Layout: html_summary (session sections), html_recording (one recording),
+// html_blocks (chart boxes, polar SVG, tables), html_text (escaping and
+// formatting); style and scripts live in report/assets/ and are embedded at
+// build time.
+//
 // When every chart has drawn, the page sets data-charts-drawn (count) on
 // <body>; script errors are counted in data-js-errors and listed on the page
 // (the headless-browser test reads both).
 
-#include <filesystem>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 namespace fourbar {
-
-/// The folder with dygraph.min.js and dygraph.min.css (libjs-dygraphs);
-/// FOURBAR_DYGRAPHS_DIR in the environment overrides the built-in path.
-std::filesystem::path dygraphs_dir();
-
-/// `s` with & < > " escaped for HTML text and attributes.
-std::string html_escape(const std::string& s);
 
 /// The HTML text. RunError when dygraphs is not installed (names the package).
 std::string render_html_report(const nlohmann::json& session);

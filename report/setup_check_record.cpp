@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "report/html_report.hpp"
+#include "report/html_text.hpp"
 
 namespace fourbar {
 
