@@ -31,7 +31,7 @@ std::vector<std::string> comments(const json& session, const json& r) {
 
 /// A cell: the number in shortest round-trip form, a flag as 1 or 0, empty
 /// for null (a value that does not exist, e.g. no factor where the measured
-/// amplitude is noise) — never a made-up 0.
+/// amplitude is 0) — never a made-up 0.
 std::string cell(const json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
   if (v.is_number()) return format_double(v.get<double>());
