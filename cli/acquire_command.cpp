@@ -40,7 +40,7 @@ out/<recording name>/acquire) it writes into DIR:
                       (detected, inserted, removed, isolated)
   summary.json        recording, channels, thresholds, pulse repairs and
                       gaps, revolutions, rpm mean/std/min/max, clipping,
-                      warnings, provenance
+                      warnings, provenance (of the CSV files too)
 With --binary, samples.f64 and revolutions.f64 hold the same columns as
 float64 little-endian rows (numpy: fromfile(f, '<f8').reshape(-1, ncols));
 summary.json "series" lists their columns and row counts.
@@ -67,7 +67,7 @@ class SeriesFile {
   SeriesFile(const std::filesystem::path& path, const Provenance& prov, std::vector<std::string> columns, bool binary)
       : columns_(columns) {
     if (binary) binary_ = std::make_unique<AtomicOutput>(path, true);
-    else csv_ = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::move(columns));
+    else csv_ = std::make_unique<CsvWriter>(path, prov.csv_comment_lines(), std::move(columns));
   }
   void row(std::span<const double> v) {
     ++rows_;
@@ -99,7 +99,7 @@ class CsvSink : public AcquisitionSink {
     std::swap(cols[1], cols[2]);  // revolutions: crank_deg, revolution, time_s, …
     revolutions_ = std::make_unique<SeriesFile>(dir / ("revolutions" + ext_), prov, cols, binary);
     list_ = std::make_unique<CsvWriter>(
-        dir / "revolution_list.csv", prov.comment_lines(),
+        dir / "revolution_list.csv", prov.csv_comment_lines(),
         std::vector<std::string>{"revolution", "start_time_s", "period_s", "speed_rpm", "segment", "repaired", "clipped"});
     row_.resize(5 + channels.size());
   }
@@ -193,7 +193,7 @@ int check_recording(Reader& reader, const Manifest& m, int samples_per_rev) {
 int run_acquire(const Invocation& inv) {
   std::string recording, manifest_file, out_dir;
   int samples_per_rev = 0;
-  bool no_samples = false, binary = false;
+  bool no_samples = false, binary = false, csv_comments = false;
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, CSV)")(
       "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
@@ -205,10 +205,11 @@ int run_acquire(const Invocation& inv) {
       "binary", po::bool_switch(&binary),
       "write samples.f64 and revolutions.f64 (float64 little-endian rows, columns as the CSV; listed in "
       "summary.json) instead of CSV");
+  add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--no-samples] [--binary]", kDetails, opts, pos,
+  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--no-samples] [--binary] [--csv-comments]", kDetails, opts, pos,
                        inv, vm))
     return 0;
   const bool write = vm.count("out") > 0;
@@ -223,7 +224,7 @@ int run_acquire(const Invocation& inv) {
   if (!write) return check_recording(*opened.reader, m, samples_per_rev);
   ensure_output_dir(out_dir);
   const std::filesystem::path dir(out_dir);
-  Provenance prov{inv.command_line, {recording, m.file, m.rig_file}};
+  Provenance prov{inv.command_line, {recording, m.file, m.rig_file}, csv_comments};
 
   AcquireOptions options;
   options.grid_points_per_rev = samples_per_rev;
@@ -234,7 +235,7 @@ int run_acquire(const Invocation& inv) {
   const AcquisitionReport rep = acquire(*opened.reader, m, options, sink);
 
   // Pulse list and summary.
-  CsvWriter pulses(dir / "pulses.csv", prov.comment_lines(), {"time_s", "segment", "status"});
+  CsvWriter pulses(dir / "pulses.csv", prov.csv_comment_lines(), {"time_s", "segment", "status"});
   {
     struct Item {
       double t;

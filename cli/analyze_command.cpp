@@ -57,7 +57,8 @@ Writes into DIR (default out/<recording name>/analyze):
                      revolutions, rpm), settings (filter, kernel taps, grid,
                      conversion, integration), RMS of the averaged curves and
                      of their spread, normal-channel check, warnings,
-                     setup_check (status "ok" or "check set-up", findings)
+                     setup_check (status "ok" or "check set-up", findings);
+                     the provenance of the CSV files
 )";
 
 // The defaults paragraph of the details, its numbers from analyze/analysis_defaults.hpp.
@@ -120,7 +121,7 @@ class RevolutionCsv final : public RevolutionObserver {
         cols.push_back("alpha" + i + "_rad_s2"), cols.push_back("omega" + i + "_rad_s");
       }
     row_.resize(cols.size());
-    csv_ = std::make_unique<CsvWriter>(dir_ / "per_revolution.csv", prov_.comment_lines(), std::move(cols));
+    csv_ = std::make_unique<CsvWriter>(dir_ / "per_revolution.csv", prov_.csv_comment_lines(), std::move(cols));
   }
   void on_revolution(const AnalyzedRevolution& r) override {
     for (std::size_t k = 0; k < crank_deg_.size(); ++k) {
@@ -182,7 +183,7 @@ int run_analyze(const Invocation& inv) {
   std::string recording, manifest_file, out_dir, band = "bandpass", window, integration;
   double low = 0, high = 0, mains = 0, mains_width = 1, transition = 0;
   std::size_t points = 0, guard = 0, spectrum_segment = 0, chunk = 0;
-  bool thesis = false, per_revolution = false, strict = false;
+  bool thesis = false, per_revolution = false, strict = false, csv_comments = false;
   namespace d = analysis_defaults;
   const std::string low_help =
       "lower corner in Hz (default: " + format_number(d::kLowCornerPerCrankHz) + " x the mean crank frequency)";
@@ -219,6 +220,7 @@ int run_analyze(const Invocation& inv) {
       "samples per spectrum segment (default: a power of two >= 8 revolutions)")(
       "chunk-revolutions", po::value(&chunk), chunk_help.c_str())(
       "thesis", po::bool_switch(&thesis), "the thesis's processing, for comparison (see below)");
+  add_csv_comments_option(opts, csv_comments);
   const std::string details = kDetailsBeforeDefaults + details_defaults() + kDetailsAfterDefaults;
   po::positional_options_description pos;
   pos.add("recording", 1);
@@ -243,7 +245,7 @@ int run_analyze(const Invocation& inv) {
   validate_options(o);
 
   const std::filesystem::path dir(out_dir);
-  Provenance prov{inv.command_line, {recording}};
+  Provenance prov{inv.command_line, {recording}, csv_comments};
   RevolutionCsv per_rev(dir, prov);
   RecordingAnalysis a = analyze_recording(recording, manifest_file, o, per_revolution ? &per_rev : nullptr);
   prov.inputs = {recording, a.manifest_file, a.rig_file};
@@ -277,7 +279,7 @@ int run_analyze(const Invocation& inv) {
     series.insert(series.end(), {&(*l)->normal->omega_sq_rad2_s2.mean, &(*l)->normal->omega_sq_integrated_rad2_s2,
                                  &(*l)->normal->omega_abs_rad_s});
   }
-  CsvWriter averaged(dir / "averaged.csv", prov.comment_lines(), cols);
+  CsvWriter averaged(dir / "averaged.csv", prov.csv_comment_lines(), cols);
   std::vector<double> row(series.size());
   for (std::size_t k = 0; k < N; ++k) {
     for (std::size_t c = 0; c < series.size(); ++c) row[c] = (*series[c])[k];
@@ -292,7 +294,7 @@ int run_analyze(const Invocation& inv) {
       scols.push_back(std::string("alpha") + link_index((*l)->link) + "_amplitude_rad_s2");
       sseries.push_back(&(*l)->alpha_amplitude);
     }
-  CsvWriter spectra(dir / "spectra.csv", prov.comment_lines(), scols);
+  CsvWriter spectra(dir / "spectra.csv", prov.csv_comment_lines(), scols);
   if (a.spectra.segments > 0) {
     std::vector<double> srow(sseries.size());
     for (std::size_t k = 0; k < a.spectra.frequency_hz.size(); ++k) {

@@ -34,6 +34,11 @@ bool parse_arguments(std::string_view command, std::string_view usage, std::stri
                      const boost::program_options::positional_options_description& positionals,
                      const Invocation& inv, boost::program_options::variables_map& vm);
 
+/// Adds --csv-comments to `options`: the provenance also as `#` lines above
+/// each CSV header, as fourbar wrote it before (by default a CSV holds one
+/// header row and data, and its provenance is in the JSON beside it).
+void add_csv_comments_option(boost::program_options::options_description& options, bool& flag);
+
 // Subcommands (one file each).
 int run_sim(const Invocation& inv);
 int run_rig(const Invocation& inv);

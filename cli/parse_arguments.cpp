@@ -30,6 +30,12 @@ std::string positional_name(const std::string& option, std::string_view usage,
 
 }  // namespace
 
+void add_csv_comments_option(po::options_description& options, bool& flag) {
+  options.add_options()("csv-comments", po::bool_switch(&flag),
+                        "also put the provenance as '#' lines above each CSV header (by default it is only in the "
+                        "JSON beside the CSV, so that pandas, Excel and LibreOffice open it without options)");
+}
+
 bool parse_arguments(std::string_view command, std::string_view usage, std::string_view details,
                      po::options_description& options, const po::positional_options_description& positionals,
                      const Invocation& inv, po::variables_map& vm) {

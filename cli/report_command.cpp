@@ -22,7 +22,8 @@ manifest's clearance (e, mu from session.toml, default e = 0.5 smooth), on the
 same crank-angle grid, and compared (README "The report").
 
 Writes OUT (default SESSION_DIR/report/report.html), and beside it
-summary.json, session_severity.csv and series/<recording>*.csv. Results are
+summary.json, summary.csv (one row per recording), session_severity.csv and
+series/<recording>*.csv (their provenance is in summary.json). Results are
 cached in <out dir>/.fourbar-cache by the SHA-256 of the inputs and settings:
 a second run with unchanged inputs does not recompute. Any other file in
 the folder, and a manifest without its recording, is named in a warning.
@@ -51,7 +52,7 @@ or with --strict a recording to check set-up (the report is written).
 
 int run_report(const Invocation& inv) {
   std::string dir, out, cache;
-  bool no_cache = false, quiet = false, strict = false;
+  bool no_cache = false, quiet = false, strict = false, csv_comments = false;
   int jobs = 0;
   po::options_description opts("options");
   opts.add_options()("session", po::value(&dir)->required(), "session folder with the recordings and manifests")(
@@ -61,6 +62,7 @@ int run_report(const Invocation& inv) {
       "jobs,j", po::value(&jobs), "recordings processed at once (default: every core); the outputs do not depend on it")(
       "quiet,q", po::bool_switch(&quiet), "no progress on stderr")(
       "strict", po::bool_switch(&strict), "a likely set-up mistake in a recording is an error (exit 2; the report is written)");
+  add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("session", 1);
   po::variables_map vm;
@@ -76,6 +78,7 @@ int run_report(const Invocation& inv) {
   if (jobs < 0) throw InputError("report: --jobs " + std::to_string(jobs) + " must be 1 or more (or 0 for every core)");
   o.jobs = static_cast<std::size_t>(jobs);
   o.command_line = inv.command_line;
+  o.csv_comments = csv_comments;
   const ReportOutcome r = run_session_report(o);
   std::cout << "wrote " << r.html.string() << " and " << r.summary.string() << ": " << r.recordings << " recordings, "
             << r.failed << " failed, " << r.from_cache << " from the cache";

@@ -86,7 +86,7 @@ nlohmann::json column_stats(const SeriesTable& t) {
 using PendingFile = std::unique_ptr<CsvWriter>;
 
 PendingFile write_series(const std::filesystem::path& csv_path, const Provenance& prov, const SeriesTable& table) {
-  auto csv = std::make_unique<CsvWriter>(csv_path, prov.comment_lines(), table.names);
+  auto csv = std::make_unique<CsvWriter>(csv_path, prov.csv_comment_lines(), table.names);
   std::vector<double> row(table.names.size());
   for (std::size_t i = 0; i < table.rows(); ++i) {
     for (std::size_t c = 0; c < row.size(); ++c) row[c] = table.columns[c][i];
@@ -99,7 +99,7 @@ PendingFile write_series(const std::filesystem::path& csv_path, const Provenance
 /// rebound slower than the settle speed is stopped by a plastic (pulling)
 /// impulse; the row's impulse, loss and motor impulse are the totals with it.
 PendingFile write_impacts(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run) {
-  auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
+  auto csv = std::make_unique<CsvWriter>(path, prov.csv_comment_lines(), std::vector<std::string>
                 {"crank_deg", "time_s", "revolution", "normal_impulse_Ns", "tangential_impulse_Ns", "eta_deg",
                  "approach_speed_m_s", "rebound_speed_m_s", "slip_speed_before_m_s", "slip_speed_after_m_s",
                  "stuck", "energy_loss_J", "motor_impulse_Nms", "mode_after"});
@@ -118,7 +118,7 @@ PendingFile write_impacts(const std::filesystem::path& path, const Provenance& p
 
 /// Compliant contacts: one row per contact, onset to release.
 PendingFile write_contacts(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run) {
-  auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
+  auto csv = std::make_unique<CsvWriter>(path, prov.csv_comment_lines(), std::vector<std::string>
                 {"crank_deg", "time_s", "revolution", "normal_impulse_Ns", "contact_impulse_Ns",
                  "tangential_impulse_Ns", "eta_deg", "approach_speed_m_s", "rebound_speed_m_s", "peak_force_N",
                  "contact_duration_s", "max_penetration_mm", "energy_loss_J", "mode_after"});
@@ -136,7 +136,7 @@ PendingFile write_contacts(const std::filesystem::path& path, const Provenance& 
 
 PendingFile write_revolutions(const std::filesystem::path& path, const Provenance& prov, const ClearanceRun& run,
                               double start_angle_rad, double direction) {
-  auto csv = std::make_unique<CsvWriter>(path, prov.comment_lines(), std::vector<std::string>
+  auto csv = std::make_unique<CsvWriter>(path, prov.csv_comment_lines(), std::vector<std::string>
                 {"crank_deg", "revolution", "impacts", "sum_normal_impulse_Ns", "impact_index_Ns", "contact_losses",
                  "following_share", "free_flight_share", "alpha3_deviation_rms_rad_s2"});
   for (const RevolutionRecord& r : run.revolutions) {
@@ -283,19 +283,22 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
 
 int run_sim(const Invocation& inv) {
   std::string scene_file, out_dir;
+  bool csv_comments = false;
   po::options_description opts("options");
   opts.add_options()("scene", po::value(&scene_file)->required(), "scene file (TOML)")(
       "out,o", po::value(&out_dir), "output folder (default: out/<scene name>)");
+  add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("scene", 1);
   po::variables_map vm;
-  if (!parse_arguments("sim", "SCENE.toml [--out DIR]",
+  if (!parse_arguments("sim", "SCENE.toml [--out DIR] [--csv-comments]",
                        "Writes DIR/series.csv (crank_deg, then the scene's outputs, one row per\n"
                        "sample, revolutions*samples_per_revolution + 1 rows) and DIR/summary.json\n"
                        "(rig class, scene, min/max/rms of every column, provenance). With\n"
                        "model = \"clearance\" also DIR/impacts.csv and DIR/revolutions.csv when the\n"
                        "scene's [clearance] tables ask for them; summary.json then adds events,\n"
-                       "constraint drift, energy balance and steady-state results.\n\n" +
+                       "constraint drift, energy balance and steady-state results. The CSV files'\n"
+                       "provenance is in summary.json (\"provenance\").\n\n" +
                            outputs_help(),
                        opts, pos, inv, vm))
     return 0;
@@ -304,7 +307,7 @@ int run_sim(const Invocation& inv) {
   if (out_dir.empty()) out_dir = (std::filesystem::path("out") / scene.source.stem()).string();
   ensure_output_dir(out_dir);
 
-  Provenance prov{inv.command_line, {scene.source, scene.rig->source}};
+  Provenance prov{inv.command_line, {scene.source, scene.rig->source}, csv_comments};
   if (scene.model == Model::clearance) return write_clearance_run(scene, run_clearance(scene), out_dir, prov);
 
   const SeriesTable table = run_nominal(scene);

@@ -45,7 +45,8 @@ Columns: radial_mm, crank_speed_rpm, restitution, friction_coefficient,
 impacts_per_rev (n), sum_normal_impulse_per_rev_Ns (SigmaF), impact_index_Ns
 (I_n = SigmaF/n, 0 when n = 0), contact_losses_per_rev, following_share,
 energy_residual_rel, max_penetration_rel, status ("ok" or "failed"), error
-(why a point failed; its statistics are then empty).
+(why a point failed; its statistics are then empty). The table's provenance
+(version, command, input files) is in OUT.json beside it.
 
 Each finished point is appended to OUT.journal at once. A sweep that was
 interrupted (Ctrl-C, a killed job, a lost node) and is started again with the
@@ -82,18 +83,8 @@ std::string inputs_fingerprint(const std::string& sweep_file, const Scene& base,
   return fingerprint_of(text);
 }
 
-/// A grid value converted back from SI to the file's unit (mm, rpm) carries
-/// the conversion's rounding in its last digit (350 rpm came back as
-/// 350.00000000000006): 15 significant digits give back the decimal the
-/// sweep file holds.
-std::string in_file_units(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.15g", value);
-  return format_double(std::strtod(buf, nullptr));
-}
-
 void write_table(const std::filesystem::path& out_path, const Provenance& prov, const std::vector<SweepPoint>& points) {
-  CsvWriter csv(out_path, prov.comment_lines(),
+  CsvWriter csv(out_path, prov.csv_comment_lines(),
                 {"radial_mm", "crank_speed_rpm", "restitution", "friction_coefficient", "impacts_per_rev",
                  "sum_normal_impulse_per_rev_Ns", "impact_index_Ns", "contact_losses_per_rev", "following_share",
                  "energy_residual_rel", "max_penetration_rel", "status", "error"});
@@ -111,11 +102,12 @@ void write_table(const std::filesystem::path& out_path, const Provenance& prov, 
                              p.max_penetration_rel};
     std::vector<std::string> cells;
     for (std::size_t k = 0; k < std::size(values); ++k)
-      cells.push_back(p.failed() && k >= 4 ? std::string() : k < 2 ? in_file_units(values[k]) : format_double(values[k]));
+      cells.push_back(p.failed() && k >= 4 ? std::string() : k < 2 ? format_input_decimal(values[k]) : format_double(values[k]));
     cells.push_back(p.failed() ? "failed" : "ok");
     cells.push_back(p.error);
     csv.text_row(cells);
   }
+  csv.describe_in_sidecar(prov.to_json());
   csv.commit();
 }
 
@@ -125,16 +117,17 @@ int run_sweep(const Invocation& inv) {
   std::string sweep_file, out_file;
   // Signed, so that "--jobs -1" is refused instead of wrapping round to 4294967295.
   long long jobs = std::max(1u, std::thread::hardware_concurrency());
-  bool quiet = false;
+  bool quiet = false, csv_comments = false;
   po::options_description opts("options");
   opts.add_options()("sweep", po::value(&sweep_file)->required(), "sweep file (TOML)")(
       "out,o", po::value(&out_file), "output table (default: out/<sweep name>.csv)")(
       "jobs,j", po::value(&jobs), "threads (default: all cores; under MPI each rank runs one point at a time)")(
       "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
+  add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("sweep", 1);
   po::variables_map vm;
-  if (!parse_arguments("sweep", "SWEEP.toml [--out FILE] [--jobs N]", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("sweep", "SWEEP.toml [--out FILE] [--jobs N] [--csv-comments]", kDetails, opts, pos, inv, vm)) return 0;
   if (jobs < 1 || jobs > 4096) throw InputError("sweep: --jobs " + std::to_string(jobs) + " must be between 1 and 4096");
 
   // Every rank reads and checks the inputs (so a bad file fails on all of
@@ -180,7 +173,7 @@ int run_sweep(const Invocation& inv) {
       });
   progress.finish();
 
-  write_table(out_path, Provenance{inv.command_line, {sweep_file, base.source, base.rig->source}}, points);
+  write_table(out_path, Provenance{inv.command_line, {sweep_file, base.source, base.rig->source}, csv_comments}, points);
   journal.remove();
 
   constexpr std::size_t kFailuresNamed = 10;  // the rest are in the table

@@ -27,7 +27,9 @@ time_s, theta2..alpha4 and each sensor's true specific force <name>_m_s2, plus
 motion at its crank_speed_rpm and start_angle_deg: the nominal mechanism
 (model = "nominal") or the clearance model (model = "clearance", with the
 scene's [clearance] table, started warmup_revolutions turns before the
-recording; the manifest then carries the scene's clearance).
+recording; the manifest then carries the scene's clearance). Each CSV
+written (the truth, a .csv recording) has its provenance in NAME.csv.json
+beside it.
 
 The scene's [recording] table (README "Virtual rig" lists every key):
   sample_rate_hz, duration_s | revolutions, sample_format (pcm16 pcm24 pcm32
@@ -45,11 +47,12 @@ The scene's [recording] table (README "Virtual rig" lists every key):
 
 int run_virtual_rig(const Invocation& inv) {
   std::string scene_file, out;
-  bool no_truth = false;
+  bool no_truth = false, csv_comments = false;
   po::options_description opts("options");
   opts.add_options()("scene", po::value(&scene_file)->required(), "scene file (TOML) with a [recording] table")(
       "out,o", po::value(&out)->required(), "recording to write (REC.wav, REC.flac, REC.csv, ...)")(
       "no-truth", po::bool_switch(&no_truth), "do not write REC.truth.csv (long recordings)");
+  add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("scene", 1);
   po::variables_map vm;
@@ -77,6 +80,7 @@ int run_virtual_rig(const Invocation& inv) {
   }
   VirtualRigOptions options;
   options.write_truth = !no_truth;
+  options.csv_comments = csv_comments;
   const VirtualRigResult r =
       make_virtual_recording(scene, spec, drive, *motion, out_path, Provenance{inv.command_line, {scene.source, scene.rig->source}}, options);
   std::cout << "wrote " << r.recording.string() << " (" << r.frames << " frames x " << r.channels << " channels at "

@@ -1,24 +1,28 @@
 #include "common/csv_writer.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "common/error.hpp"
+#include "common/json_text.hpp"
 
 namespace fourbar {
 
-std::string format_double(double v) {
-  char buf[32];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, end);
+std::filesystem::path csv_sidecar_path(const std::filesystem::path& csv) {
+  std::filesystem::path p = csv;
+  p += ".json";
+  return p;
 }
 
 CsvWriter::CsvWriter(std::filesystem::path path, const std::vector<std::string>& comments,
                      std::vector<std::string> columns)
     : out_(std::move(path)), columns_(std::move(columns)) {
   for (const auto& c : comments) out_.stream() << "# " << c << '\n';
-  for (std::size_t i = 0; i < columns_.size(); ++i) out_.stream() << (i ? "," : "") << columns_[i];
-  out_.stream() << '\n';
+  line_.clear();
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    if (i) line_ += ',';
+    append_text(columns_[i]);
+  }
+  out_.stream() << line_ << '\n';
 }
 
 void CsvWriter::check(std::span<const double> values, std::size_t expected) {
@@ -31,14 +35,25 @@ void CsvWriter::check(std::span<const double> values, std::size_t expected) {
                      " is not finite; nothing was written");
 }
 
+void CsvWriter::append_text(const std::string& cell) {
+  if (cell.find_first_of(",\"\r\n") == std::string::npos) {
+    line_ += cell;
+    return;
+  }
+  line_ += '"';
+  for (char ch : cell) {
+    if (ch == '"') line_ += '"';
+    line_ += ch;
+  }
+  line_ += '"';
+}
+
 void CsvWriter::row(std::span<const double> values) {
   check(values, columns_.size());
   line_.clear();
-  char buf[32];
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (i) line_ += ',';
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, values[i]);
-    line_.append(buf, end);
+    append_double(line_, values[i]);
   }
   line_ += '\n';
   out_.stream() << line_;
@@ -48,13 +63,11 @@ void CsvWriter::row(std::span<const double> values) {
 void CsvWriter::row(std::span<const double> values, const std::string& last_text) {
   check(values, columns_.size() - 1);
   line_.clear();
-  char buf[32];
   for (double v : values) {
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    line_.append(buf, end);
+    append_double(line_, v);
     line_ += ',';
   }
-  line_ += last_text;
+  append_text(last_text);
   line_ += '\n';
   out_.stream() << line_;
   ++rows_;
@@ -67,17 +80,24 @@ void CsvWriter::text_row(std::span<const std::string> cells) {
   line_.clear();
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (i) line_ += ',';
-    if (cells[i].find_first_of(",\"\r\n") == std::string::npos) {
-      line_ += cells[i];
-      continue;
-    }
-    line_ += '"';
-    for (char ch : cells[i]) line_ += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-    line_ += '"';
+    append_text(cells[i]);
   }
   line_ += '\n';
   out_.stream() << line_;
   ++rows_;
+}
+
+void CsvWriter::describe_in_sidecar(nlohmann::json provenance) { sidecar_ = std::move(provenance); }
+
+void CsvWriter::commit() {
+  if (sidecar_) {
+    const nlohmann::json j = {{"file", out_.path().filename().string()},
+                              {"columns", columns_},
+                              {"rows", rows_},
+                              {"provenance", *sidecar_}};
+    write_text_file(csv_sidecar_path(out_.path()), json_text(j, 2) + "\n");
+  }
+  out_.commit();
 }
 
 }  // namespace fourbar

@@ -10,6 +10,10 @@ std::vector<std::string> Provenance::comment_lines() const {
   return lines;
 }
 
+std::vector<std::string> Provenance::csv_comment_lines() const {
+  return csv_comments ? comment_lines() : std::vector<std::string>{};
+}
+
 nlohmann::json Provenance::to_json() const {
   nlohmann::json j;
   j["tool"] = "fourbar";

@@ -6,6 +6,7 @@
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "report/setup_check_record.hpp"
+#include "report/summary_table.hpp"
 
 namespace fourbar {
 
@@ -28,11 +29,18 @@ std::vector<std::string> comments(const json& session, const json& r) {
   return c;
 }
 
-double num(const json& v) { return v.is_null() ? 0.0 : v.get<double>(); }
+/// A cell: the number in shortest round-trip form, a flag as 1 or 0, empty
+/// for null (a value that does not exist, e.g. no factor where the measured
+/// amplitude is 0) — never a made-up 0.
+std::string cell(const json& v) {
+  if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
+  if (v.is_number()) return format_double(v.get<double>());
+  return {};
+}
 
-void write_recording(const json& session, const json& r, const std::filesystem::path& dir) {
+void write_recording(const json& session, const json& r, const std::filesystem::path& dir, bool csv_comments) {
   const std::string stem = std::filesystem::path(r["name"].get<std::string>()).stem().string();
-  const auto notes = comments(session, r);
+  const auto notes = csv_comments ? comments(session, r) : std::vector<std::string>{};
 
   // Per-angle series.
   std::vector<std::string> cols{"crank_deg"};
@@ -69,13 +77,13 @@ void write_recording(const json& session, const json& r, const std::filesystem::
   CsvWriter ord(dir / (stem + "_orders.csv"), notes, ocols);
   const std::size_t n_orders = orders.empty() ? 0 : orders[0]->size();
   for (std::size_t k = 0; k < n_orders; ++k) {
-    std::vector<double> v{static_cast<double>(k + 1)};
+    std::vector<std::string> v{std::to_string(k + 1)};
     for (const json* o : orders) {
       const json& e = (*o)[k];
-      v.insert(v.end(), {num(e["measured_amplitude"]), num(e["simulated_amplitude"]), num(e["measured_floor"]),
-                         e["significant"].get<bool>() ? 1.0 : 0.0, num(e["factor"])});
+      for (const char* key : {"measured_amplitude", "simulated_amplitude", "measured_floor", "significant", "factor"})
+        v.push_back(cell(e[key]));
     }
-    ord.row(v);
+    ord.text_row(v);
   }
 
   // Impacts.
@@ -93,14 +101,16 @@ void write_recording(const json& session, const json& r, const std::filesystem::
 
 }  // namespace
 
-void write_series_files(const json& session, const std::filesystem::path& out_dir) {
+void write_series_files(const json& session, const std::filesystem::path& out_dir, bool csv_comments) {
   const std::filesystem::path dir = out_dir / "series";
   ensure_output_dir(dir);
   for (const json& r : session["recordings"])
-    if (is_analysed(r)) write_recording(session, r, dir);
+    if (is_analysed(r)) write_recording(session, r, dir, csv_comments);
 
-  std::vector<std::string> c{"made by fourbar " + session["version"].get<std::string>() + ": " +
-                             session["command"].get<std::string>()};
+  std::vector<std::string> c;
+  if (csv_comments)
+    c.push_back("made by fourbar " + session["version"].get<std::string>() + ": " + session["command"].get<std::string>());
+  write_summary_table(session, out_dir, c);
   CsvWriter sev(out_dir / "session_severity.csv", c,
                 {"clearance_mm", "speed_rpm", "measured_alpha3_fluctuation_rms_rad_s2",
                  "measured_alpha4_fluctuation_rms_rad_s2", "simulated_alpha3_fluctuation_rms_rad_s2",
@@ -108,12 +118,14 @@ void write_series_files(const json& session, const std::filesystem::path& out_di
                  "recording"});
   for (const json& g : session["severity"]["by_speed"])
     for (const json& p : g["points"]) {
-      const std::vector<double> v{num(p["clearance_mm"]), num(p["speed_rpm"]),
-                                  num(p["measured_alpha3_fluctuation_rms"]), num(p["measured_alpha4_fluctuation_rms"]),
-                                  num(p["simulated_alpha3_fluctuation_rms"]), num(p["impacts_per_rev"]),
-                                  num(p["sum_normal_impulse_per_rev_Ns"]), num(p["impact_index_Ns"]),
-                                  num(p["magnification_alpha3"])};
-      sev.row(v, p["recording"].get<std::string>());
+      // The clearance as the manifest gives it (0.0254, not 0.025400000000000002 after mm -> m -> mm).
+      std::vector<std::string> v{format_input_decimal(p["clearance_mm"].get<double>())};
+      for (const char* key : {"speed_rpm", "measured_alpha3_fluctuation_rms", "measured_alpha4_fluctuation_rms",
+                              "simulated_alpha3_fluctuation_rms", "impacts_per_rev", "sum_normal_impulse_per_rev_Ns",
+                              "impact_index_Ns", "magnification_alpha3"})
+        v.push_back(cell(p[key]));
+      v.push_back(p["recording"].get<std::string>());
+      sev.text_row(v);
     }
   sev.commit();
 }

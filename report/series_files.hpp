@@ -8,7 +8,10 @@
 //                                       nominal (measured, simulated), floor, significant, factor
 //   series/<stem>_impacts.csv           simulated impacts in the averaged turns
 //   session_severity.csv                one row per analysed recording
-// Written from the session record (session_report.hpp).
+//   summary.csv                         one row per recording (summary_table.hpp)
+// Written from the session record (session_report.hpp); their provenance is
+// in summary.json beside them (with csv_comments also as `#` lines). A value
+// that does not exist (null in summary.json) is an empty cell.
 
 #include <filesystem>
 
@@ -16,6 +19,6 @@
 
 namespace fourbar {
 
-void write_series_files(const nlohmann::json& session, const std::filesystem::path& out_dir);
+void write_series_files(const nlohmann::json& session, const std::filesystem::path& out_dir, bool csv_comments);
 
 }  // namespace fourbar

@@ -187,7 +187,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
                   {"severity", severity_record(records)}};
 
   // Outputs: series first, the report last (each written whole or not at all).
-  write_series_files(session, out_dir);
+  write_series_files(session, out_dir, o.csv_comments);
   out.summary = out_dir / "summary.json";
   write_text_file(out.summary, json_text(summary_of(session), 2) + "\n");
   write_text_file(o.out_html, render_html_report(session));

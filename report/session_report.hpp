@@ -18,12 +18,13 @@ namespace fourbar {
 
 struct ReportOptions {
   std::filesystem::path session_dir;
-  std::filesystem::path out_html;   ///< the report; summary.json, session_severity.csv and series/ go beside it
+  std::filesystem::path out_html;   ///< the report; summary.json, summary.csv, session_severity.csv and series/ go beside it
   std::filesystem::path cache_dir;  ///< empty: <out dir>/.fourbar-cache
   bool use_cache = true;
   bool progress = true;             ///< per-recording progress on stderr when it is a terminal
   std::size_t jobs = 0;             ///< recordings processed at once; 0: default_jobs()
   std::string command_line;         ///< for provenance
+  bool csv_comments = false;        ///< provenance also as `#` lines above the CSV headers
 };
 
 struct ReportOutcome {

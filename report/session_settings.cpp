@@ -141,7 +141,7 @@ SessionFiles find_session_files(const std::filesystem::path& dir) {
     } else if (kExtensions.count(ext) && !name.ends_with(".truth.csv")) {
       f.recordings.push_back(p);
       stems.insert(p.stem().string());
-    } else if (!name.starts_with(".") && !name.ends_with(".truth.csv")) {
+    } else if (!name.starts_with(".") && !name.ends_with(".truth.csv") && !name.ends_with(".csv.json")) {
       f.other_files.push_back(p);
     }
   }

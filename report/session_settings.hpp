@@ -47,12 +47,13 @@ SessionSettings load_session_settings(const std::filesystem::path& dir);
 struct SessionFiles {
   std::vector<std::filesystem::path> recordings;  ///< sorted by name
   std::vector<std::filesystem::path> orphan_manifests;  ///< REC.toml with no recording beside it
-  std::vector<std::filesystem::path> other_files;  ///< neither a recording, a manifest, session.toml nor *.truth.csv
+  std::vector<std::filesystem::path> other_files;  ///< neither a recording, a manifest, session.toml, *.truth.csv nor *.csv.json
 };
 
 /// The recordings in `dir` (top level only): files with a recording
 /// extension (.wav .w64 .rf64 .flac .caf .aiff .aif .csv .tsv .txt), except
-/// the virtual rig's `*.truth.csv`.
+/// the virtual rig's `*.truth.csv`; a CSV's provenance `*.csv.json` is
+/// neither a recording nor another file.
 SessionFiles find_session_files(const std::filesystem::path& dir);
 
 }  // namespace fourbar

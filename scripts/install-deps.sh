@@ -18,6 +18,7 @@ packages=(
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev        # bench/ programs
   python3-scipy           # bench/compare_analyze_scipy.py (numpy/scipy reference of the analyze chain)
+  python3-pandas          # tests/cli/csv_in_pandas.py: every CSV fourbar writes opens with plain read_csv
   libopenmpi-dev openmpi-bin    # fourbar sweep over MPI ranks (cluster/; optional at build time)
   libssl-dev              # SHA-256 (libcrypto) for the report's checksums and cache keys
   libjs-dygraphs          # charting library inlined into the HTML report

@@ -15,7 +15,9 @@
 #     HtmlReport.DrawsEveryChartInHeadlessChromium,
 #     SessionReport.PageDrawsInHeadlessChromium — the time goes to headless
 #       Chromium, which no sanitizer sees; the C++ writing the page runs in
-#       the other report tests.
+#       the other report tests;
+#     csv_in_pandas — the sample jobs read by pandas; their C++ runs in the
+#       other CLI tests.
 #   (The list and the measured times: docs/robustness.md, "Sanitizers".)
 set -euo pipefail
 cd "$(dirname "$0")/.."

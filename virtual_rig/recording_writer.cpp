@@ -100,6 +100,7 @@ class TextWriter final : public RecordingWriter {
   }
   void commit() override { csv_.commit(); }
   int integer_bits() const override { return 0; }
+  void describe_in_sidecar(nlohmann::json provenance) override { csv_.describe_in_sidecar(std::move(provenance)); }
 
  private:
   static std::vector<std::string> with_time(std::vector<std::string> names) {

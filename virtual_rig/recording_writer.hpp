@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace fourbar {
 
 class RecordingWriter {
@@ -26,12 +28,17 @@ class RecordingWriter {
   virtual void commit() = 0;
   /// Bits of integer storage, 0 for float/text.
   virtual int integer_bits() const = 0;
+  /// A CSV recording: also writes NAME.csv.json beside it at commit with
+  /// `provenance` (common/csv_writer.hpp). An audio file keeps its
+  /// provenance in its comment string and ignores this.
+  virtual void describe_in_sidecar(nlohmann::json provenance) { (void)provenance; }
 };
 
 /// The container comes from the extension (wav, w64, rf64, flac, caf, aiff,
 /// aif, csv); `sample_format` (pcm16, pcm24, pcm32, float, double; default
-/// pcm24) must suit it. `comments` (provenance) go into a CSV's `#` header or
-/// the audio file's comment string. InputError
+/// pcm24) must suit it. `comments` (provenance) go into the audio file's
+/// comment string or a CSV's `#` lines above its header (give a CSV none
+/// unless asked for; see RecordingWriter::describe_in_sidecar). InputError
 /// for an unknown extension or an unsuitable sample format.
 std::unique_ptr<RecordingWriter> open_recording_writer(const std::filesystem::path& file, int channels,
                                                        double sample_rate_hz, const std::vector<std::string>& names,

@@ -209,9 +209,17 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   // The recording names what made it, but not where it was written to, so
   // that the same scene and seed give the same bytes anywhere.
   std::vector<std::string> made_by{std::string("made by fourbar ") + kVersion + " virtual-rig"};
-  for (const auto& p : provenance.inputs) made_by.push_back("input: " + p.filename().string());
+  nlohmann::json made_by_json = {{"tool", "fourbar"}, {"version", kVersion}, {"command", "virtual-rig"},
+                                 {"inputs", nlohmann::json::array()}, {"seed", spec.seed}};
+  for (const auto& p : provenance.inputs) {
+    made_by.push_back("input: " + p.filename().string());
+    made_by_json["inputs"].push_back(p.filename().string());
+  }
   made_by.push_back("seed: " + std::to_string(spec.seed));
-  auto writer = open_recording_writer(out, static_cast<int>(nch), fs, names, spec.sample_format.value_or(""), made_by);
+  const bool text_out = is_text_recording(out);
+  auto writer = open_recording_writer(out, static_cast<int>(nch), fs, names, spec.sample_format.value_or(""),
+                                      text_out && !options.csv_comments ? std::vector<std::string>{} : made_by);
+  if (text_out) writer->describe_in_sidecar(std::move(made_by_json));
   const int bits = writer->integer_bits();
   const double to_recorded = bits > 0 ? 1.0 / spec.full_scale_V : 1.0;  // integer: ±1 full scale; else volts
   std::unique_ptr<CsvWriter> truth;
@@ -224,7 +232,9 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       cols.push_back(spec.sensors[c].name + "_m_s2");
       if (hp[c]) cols.push_back(spec.sensors[c].name + "_hp_m_s2");
     }
-    truth = std::make_unique<CsvWriter>(result.truth, provenance.comment_lines(), cols);
+    truth = std::make_unique<CsvWriter>(result.truth, options.csv_comments ? provenance.comment_lines()
+                                                                           : std::vector<std::string>{}, cols);
+    truth->describe_in_sidecar(provenance.to_json());
   }
 
   // Samples, block by block.

@@ -35,6 +35,7 @@ namespace fourbar {
 struct VirtualRigOptions {
   bool write_truth = true;
   bool progress = true;  ///< progress bar on stderr when it is a terminal
+  bool csv_comments = false;  ///< also `#` provenance lines above the CSV headers (truth, a CSV recording)
 };
 
 struct VirtualRigResult {
@@ -52,8 +53,9 @@ struct VirtualRigResult {
 CrankDrive crank_drive(const Scene& scene, const RecordingSpec& spec);
 
 /// Writes `out` (format by extension), `out` with extension .toml (the
-/// manifest) and `<stem>.truth.csv` beside it (unless !write_truth). All
-/// files appear together or not at all.
+/// manifest) and `<stem>.truth.csv` beside it (unless !write_truth); each
+/// CSV with its provenance in NAME.csv.json beside it. All files appear
+/// together or not at all.
 VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec& spec, const CrankDrive& drive,
                                         const MotionSource& motion, const std::filesystem::path& out,
                                         const Provenance& provenance, const VirtualRigOptions& options = {});

@@ -45,9 +45,13 @@ TEST(VirtualRigCommand, ExampleSceneThenAcquire) {
   const auto vr = run_fourbar("virtual-rig " + kExample + " --out " + rec.string());
   ASSERT_EQ(vr.status, 0) << vr.err;
   EXPECT_TRUE(vr.err.empty()) << vr.err;
-  for (const char* f : {"REC.wav", "REC.toml", "REC.truth.csv"})
+  for (const char* f : {"REC.wav", "REC.toml", "REC.truth.csv", "REC.truth.csv.json"})
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "session" / f)) << f;
   EXPECT_EQ(header(dir.path() / "session" / "REC.truth.csv").rfind("crank_deg,time_s,theta2_rad", 0), 0u);
+  std::ifstream truth(dir.path() / "session" / "REC.truth.csv");
+  std::string first_line;
+  std::getline(truth, first_line);
+  EXPECT_EQ(first_line.rfind("crank_deg,", 0), 0u) << "no '#' lines: the truth's provenance is in REC.truth.csv.json";
 
   const auto out = dir.path() / "acq";
   const auto r = run_fourbar("acquire " + rec.string() + " --out " + out.string());

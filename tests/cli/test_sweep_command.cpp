@@ -12,6 +12,8 @@
 #include <sstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -51,9 +53,17 @@ TEST(SweepCommand, GridTable) {
   const auto r = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --jobs 2 --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   std::vector<std::string> header;
-  const auto rows = rows_of(testing::read_file(out), header);
+  const std::string text = testing::read_file(out);
+  const auto rows = rows_of(text, header);
   ASSERT_EQ(rows.size(), 8u);
-  ASSERT_EQ(header.front(), "radial_mm");
+  ASSERT_EQ(text.rfind("radial_mm,", 0), 0u) << "the header is the first line";
+  // The provenance is in t.csv.json beside the table.
+  const auto side = nlohmann::json::parse(testing::read_file(dir.path() / "t.csv.json"));
+  EXPECT_EQ(side.at("file"), "t.csv");
+  EXPECT_EQ(side.at("rows"), 8);
+  EXPECT_EQ(side.at("columns").size(), header.size());
+  EXPECT_EQ(side.at("provenance").at("inputs").size(), 3u);  // sweep, scene, rig
+  EXPECT_NE(side.at("provenance").at("command").get<std::string>().find("sweep "), std::string::npos);
   EXPECT_DOUBLE_EQ(rows[0][0], 0.1016);
   EXPECT_DOUBLE_EQ(rows[7][2], 0.8);
   double total_impacts = 0;

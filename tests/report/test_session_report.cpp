@@ -75,6 +75,10 @@ class SessionReport : public ::testing::Test {
     // A manifest without its recording, and a file that is no recording at all.
     std::filesystem::copy_file(d / "session" / "nominal.toml", d / "session" / "lost.toml");
     dir_->write("session/notes.pdf", "%PDF-1.4\n");
+    // The provenance JSON of CSV files the virtual rig writes (a truth, a CSV
+    // recording) is neither a recording nor a file to warn about.
+    dir_->write("session/old.truth.csv.json", "{}\n");
+    dir_->write("session/take2.csv.json", "{}\n");
     dir_->write("session/session.toml", "title = \"e2e\"\n[theory]\nwarmup_revolutions = 20\naveraged_revolutions = 16\n");
     run_ = new testing::CommandResult(testing::run_fourbar("report " + (d / "session").string() + " --out " +
                                                            (d / "out" / "report.html").string()));
@@ -130,12 +134,10 @@ TEST_F(SessionReport, OutputsDoNotDependOnTheNumberOfJobs) {
     const json s = json::parse(in);
     EXPECT_EQ(s["recordings"], (*summary_)["recordings"]) << "--jobs " << jobs;
     EXPECT_EQ(s["severity"], (*summary_)["severity"]) << "--jobs " << jobs;
-    auto body = [](const std::filesystem::path& f) {  // the series without the provenance line
-      const std::string text = testing::read_file(f);
-      return text.substr(text.find('\n') + 1);
-    };
-    for (const char* name : {"nominal.csv", "clearance.csv", "clearance_impacts.csv"})
-      EXPECT_EQ(body(out / "series" / name), body(d / "out" / "series" / name)) << name << ", --jobs " << jobs;
+    // The tables hold no command line (their provenance is in summary.json): byte for byte the same.
+    for (const std::string name : {"series/nominal.csv", "series/clearance.csv", "series/clearance_impacts.csv",
+                                   "series/clearance_orders.csv", "summary.csv", "session_severity.csv"})
+      EXPECT_EQ(testing::read_file(out / name), testing::read_file(d / "out" / name)) << name << ", --jobs " << jobs;
   }
   const auto bad = testing::run_fourbar("report " + (d / "session").string() + " --jobs -1 --out " +
                                         (d / "jobs_bad" / "report.html").string());
@@ -272,7 +274,52 @@ TEST_F(SessionReport, SeriesFilesBesideTheReport) {
   }
   EXPECT_FALSE(std::filesystem::exists(out / "series" / "corrupt.csv"));
   const std::string sev = testing::read_file(out / "session_severity.csv");
-  EXPECT_EQ(testing::count_lines(sev), 1 + 1 + 2);  // provenance, header, two analysed recordings
+  EXPECT_EQ(sev.rfind("clearance_mm,speed_rpm,", 0), 0u) << "the header is the first line";
+  EXPECT_EQ(testing::count_lines(sev), 1 + 2);  // header, two analysed recordings
+}
+
+TEST_F(SessionReport, SummaryTableHasOneRowPerRecording) {
+  const auto out = dir_->path() / "out";
+  const testing::CsvCells t = testing::read_csv_cells(out / "summary.csv");
+  EXPECT_EQ(testing::read_file(out / "summary.csv").rfind("id,file,status,speed_rpm,", 0), 0u)
+      << "no '#' lines above the header";
+  const auto col = [&](const std::string& name) {
+    const auto it = std::find(t.header.begin(), t.header.end(), name);
+    if (it == t.header.end()) throw std::runtime_error("summary.csv has no column " + name);
+    return static_cast<std::size_t>(it - t.header.begin());
+  };
+  const json& recs = (*summary_)["recordings"];
+  ASSERT_EQ(t.rows.size(), recs.size());
+  for (std::size_t i = 0; i < recs.size(); ++i) {
+    const json& r = recs[i];
+    const auto& row = t.rows[i];
+    ASSERT_EQ(row.size(), t.header.size()) << i;
+    EXPECT_EQ(row[col("file")], r["name"]);
+    EXPECT_EQ(row[col("id")], std::filesystem::path(r["name"].get<std::string>()).stem().string());
+    EXPECT_EQ(row[col("status")], r["status"]);
+    if (r["status"] == "failed") {
+      EXPECT_EQ(row[col("error")], r["error"]) << "a message with commas or quotes comes back whole";
+      for (const char* empty : {"speed_rpm", "clearance_mm", "a_time", "alpha3_correlation_model", "setup_check"})
+        EXPECT_EQ(row[col(empty)], "") << r["name"] << " " << empty << ": no value, not 0";
+      continue;
+    }
+    // Shortest round-trip text: the very double of summary.json comes back.
+    const json& a3 = r["metrics"]["alpha3_rad_s2"];
+    const std::pair<const char*, const json*> same[] = {
+        {"speed_rpm", &r["operating_point"]["speed_rpm"]},
+        {"revolutions_averaged", &r["operating_point"]["revolutions_averaged"]},
+        {"a_time", &a3["magnification"]["time_domain"]},
+        {"a_spectral", &a3["magnification"]["spectral"]},
+        {"alpha3_rms_difference_model_rad_s2", &a3["rms_difference_simulated"]},
+        {"alpha3_correlation_model", &a3["correlation_simulated"]},
+        {"alpha4_a_time", &r["metrics"]["alpha4_rad_s2"]["magnification"]["time_domain"]},
+        {"model_impacts_per_rev", &r["theory"]["severity"]["impacts_per_rev"]}};
+    for (const auto& [name, value] : same) EXPECT_EQ(std::stod(row[col(name)]), value->get<double>()) << name;
+    EXPECT_EQ(row[col("clearance_mm")], "0.254") << "as the manifest writes it";
+    EXPECT_EQ(row[col("setup_check")], r["setup_check"]["status"]);
+    EXPECT_EQ(row[col("setup_findings")], std::to_string(r["setup_check"]["findings"].size()));
+    EXPECT_EQ(row[col("error")], "");
+  }
 }
 
 TEST_F(SessionReport, SecondRunComesFromTheCache) {
