@@ -29,7 +29,7 @@ motion at its crank_speed_rpm and start_angle_deg: the nominal mechanism
 scene's [clearance] table, started warmup_revolutions turns before the
 recording; the manifest then carries the scene's clearance).
 
-The scene's [recording] table (README "Virtual rig" lists every key):
+The scene's [recording] table (docs/virtual-rig.md lists every key):
   sample_rate_hz, duration_s | revolutions, sample_format (pcm16 pcm24 pcm32
   float double), full_scale_V, quantisation_bits, noise_snr_db,
   hum_frequency_hz, hum_mV, hum_harmonics, speed_fluctuation_pct,
