@@ -304,7 +304,7 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
   auto ms = [](double s) { return toml_number_in_unit(s, s * 1e3, ms_to_s); };
   auto quoted = [](const std::string& s) { return toml_quoted(s); };
   std::ostringstream os;
-  os << "# Recording manifest (keys: README \"Recordings and manifests\").\n";
+  os << "# Recording manifest (keys: docs/acquire.md).\n";
   os << "rig = " << quoted(rel(m.rig_file)) << "\n";
   os << "clearance_mm = " << mm(m.clearance_m) << "\n";
   os << "full_scale_V = " << num(m.full_scale_V) << "\n";

@@ -1,6 +1,6 @@
 #pragma once
 // The manifest: a TOML sidecar that says what each channel of a recording is
-// and how to turn its numbers into physical units (README "Recordings and
+// and how to turn its numbers into physical units (docs/acquire.md "Recordings and
 // manifests" lists every key). `REC.toml` beside `REC.wav`, or any file given
 // with --manifest. Strict: an unknown or misspelt key is an error with a
 // suggestion; a channel index or column that the recording lacks is an error

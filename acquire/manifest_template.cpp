@@ -64,7 +64,7 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
                        number(info.sample_rate_hz) + " Hz, " + std::to_string(info.frames) + " samples (" +
                        number(info.duration_s()) + " s).");
   os << "# Replace every \"FILL IN\" by its value (the comment says what it is): acquire refuses this\n"
-     << "# file while one is left. Every key: README \"Recordings and manifests\".\n\n";
+     << "# file while one is left. Every key: docs/acquire.md.\n\n";
   os << fill_in("rig", "the rig file, relative to this manifest, e.g. \"../rigs/thesis.toml\"");
   os << "# clearance_mm = 0.1  # radial clearance of the coupler-rocker bearing in this recording (default: the rig's)\n";
   const std::string unit = common_unit(r);
@@ -83,7 +83,7 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
   else if (info.rate_variable) os << "rate_variable = " << toml_quoted(*info.rate_variable) << "  # the variable holding the sample rate in Hz\n";
   if (options.time_column) os << "time_column = " << toml_quoted(*options.time_column) << "\n";
   os << fill_in("crank_direction", "\"ccw\" when the crank angle increases counter-clockwise in the rig frame "
-                                   "(README sensor axes), \"cw\" when it turns the other way");
+                                   "(README \"Sensor orientation\"), \"cw\" when it turns the other way");
   if (r.pulse_channel < 0)
     os << "\n# No channel looks like a crank-pulse train: give the pulse channel role = \"crank_pulse\"\n"
           "# (and polarity, crank_offset_deg), and delete its accelerometer keys.\n";

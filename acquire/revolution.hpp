@@ -3,7 +3,7 @@
 // with the crank motion sample by sample, and each complete revolution
 // resampled onto a uniform crank-angle grid.
 //
-// Units and conventions (README "Recordings and manifests"):
+// Units and conventions (docs/acquire.md):
 //   crank_rad     θ2 = crank_offset + direction·φ, where φ ∈ [0, 2π) is the
 //                 angle turned since the revolution's pulse; so a revolution
 //                 runs from the pulse angle through one turn (not wrapped);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Recovery bench of `fourbar fit` (README "Fitting the contact parameters"):
+# Recovery bench of `fourbar fit` (docs/fit.md):
 # SYNTHETIC sessions made with known parameters (bench/make_fit_session.sh:
 # 4 recordings, 250/350 rpm x 0.0254/0.254 mm, TURNS turns, 30 dB, a wrong
 # prior e = 0.95 smooth in session.toml), e in {0.2, 0.5, 0.8} x contact

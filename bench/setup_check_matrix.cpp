@@ -2,7 +2,7 @@
 // recordings of the thesis rig: every combination of motion (nominal,
 // clearance 0.254 mm), crank speed, SNR and coupling (DC, AC 0.5 Hz), each
 // analysed with the correct manifest and with each common mistake written
-// into it. Prints the table the README quotes, and (--cost) the check's
+// into it. Prints the table docs/setup-check.md quotes, and (--cost) the check's
 // cost against the analysis's on the same recordings.
 //
 //   build/bench/setup_check_matrix [--seeds S=3] [--revolutions R=12] [--coupler-only] [--verbose]

@@ -56,7 +56,7 @@ rocker), offset_mm, ac_coupled + highpass_hz; crank_pulse: polarity
 debounce_ms, pulses_per_rev + (a crank_index channel | missing_teeth) for a
 tooth wheel; encoder_a: lines_per_rev (with an encoder_b channel, optional
 crank_index = Z); correct_tooth_spacing; notes.
-Meanings and the sensor frame: README "Recordings and manifests".
+Meanings and the sensor frame: docs/acquire.md.
 Warnings (repaired pulses, gaps, clipping) go to stderr and summary.json.
 )";
 

@@ -30,7 +30,7 @@ constexpr const char* kDetailsBeforeDefaults = R"(Acquires the recording (as 'fo
 angle per sample) and turns its tangential accelerometers into the coupler's
 and rocker's angular acceleration: the measured crank speed and acceleration,
 the sensor position and offset, gravity and an AC-coupled sensor's high-pass
-are taken into account (README "Analysis"). Each channel is band-pass
+are taken into account (docs/analysis.md). Each channel is band-pass
 filtered (zero phase, FFT), put on a crank-angle grid of N points per
 revolution, integrated revolution by revolution to the angular velocity
 (periodic: no drift) and averaged over the revolutions. A normal channel on
@@ -81,7 +81,7 @@ Set-up check: from the data alone, the axis sign, calibration scale and
 position of each accelerometer, the crank offset and direction of rotation,
 and whether the coupler and rocker channels are swapped, compared with the
 manifest; a likely mistake is a warning naming the key to change (and in
-summary.json's setup_check; README "The set-up check").
+summary.json's setup_check; docs/setup-check.md).
 Errors (exit 2, nothing written): no coupler_tangential channel, a sensor
 outside its link, a corner at or above the Nyquist frequency, a window
 parameter out of range (tukey 0..1, kaiser 0..50), a record too short; with
@@ -255,7 +255,7 @@ int run_analyze(const Invocation& inv) {
   if (strict && !setup_lines.empty()) {
     std::string msg = "analyze: --strict: the set-up check of " + recording + " found likely mistakes in its manifest: ";
     for (const std::string& line : setup_lines) msg += line + "; ";
-    throw InputError(msg + "fix the keys named (README \"The set-up check\"), or run without --strict");
+    throw InputError(msg + "fix the keys named (docs/setup-check.md), or run without --strict");
   }
   ensure_output_dir(dir);
 

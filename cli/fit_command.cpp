@@ -1,6 +1,6 @@
 // `fourbar fit SESSION_DIR [--out DIR]`: the bearing's contact parameters
 // (restitution e, Coulomb μ) identified from a session's recordings
-// (README "Fitting the contact parameters").
+// (docs/fit.md).
 
 #include <algorithm>
 #include <iostream>
@@ -29,7 +29,7 @@ of the clearance model at the recording's measured speed and clearance. The
 restitution e and the stick-slip friction coefficient mu (mu = 0: smooth) that
 make them agree are searched over the box: NLopt DIRECT-L, then BOBYQA; the
 interval of each parameter is where the objective stays within its noise
-(README "Fitting the contact parameters").
+(docs/fit.md).
 
 Writes DIR/fit.json (default SESSION_DIR/fit/fit.json): parameters ->
 restitution, friction_coefficient -> value, low, high, identifiable, profile;

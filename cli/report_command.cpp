@@ -19,7 +19,7 @@ constexpr const char* kDetails = R"(Every recording in SESSION_DIR (top level: .
 beside it, goes through acquire and analyze; the clearance model and the
 nominal mechanism are simulated at its measured mean crank speed and its
 manifest's clearance (e, mu from session.toml, default e = 0.5 smooth), on the
-same crank-angle grid, and compared (README "The report").
+same crank-angle grid, and compared (docs/report.md).
 
 Writes OUT (default SESSION_DIR/report/report.html), and beside it
 summary.json, summary.csv (one row per recording), session_severity.csv and
@@ -38,7 +38,7 @@ Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
              averaged_revolutions (20), tolerance (1e-8), max_order (50);
   [[recording]] file = "REC.flac" and any [theory] key for that recording.
 
-A recording whose set-up check (README "The set-up check") finds a likely
+A recording whose set-up check (docs/setup-check.md) finds a likely
 manifest mistake gets status "check set-up" instead of "ok": its findings are
 warned on stderr and shown at the top of the report and in summary.json.
 
@@ -87,7 +87,7 @@ int run_report(const Invocation& inv) {
   if (strict && r.check_setup > 0)
     throw InputError("report: --strict: the set-up check found likely manifest mistakes in " +
                      std::to_string(r.check_setup) + (r.check_setup == 1 ? " recording" : " recordings") + " (named above and at the top of " + r.html.string() +
-                     "); fix the keys named (README \"The set-up check\"), or run without --strict");
+                     "); fix the keys named (docs/setup-check.md), or run without --strict");
   return r.failed > 0 ? 1 : 0;
 }
 

@@ -31,7 +31,7 @@ recording; the manifest then carries the scene's clearance). Each CSV
 written (the truth, a .csv recording) has its provenance in NAME.csv.json
 beside it.
 
-The scene's [recording] table (README "Virtual rig" lists every key):
+The scene's [recording] table (docs/virtual-rig.md lists every key):
   sample_rate_hz, duration_s | revolutions, sample_format (pcm16 pcm24 pcm32
   float double), full_scale_V, quantisation_bits, noise_snr_db,
   hum_frequency_hz, hum_mV, hum_harmonics, speed_fluctuation_pct,

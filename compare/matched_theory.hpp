@@ -5,7 +5,7 @@
 // impact law e, μ), both on the measurement's crank-angle grid.
 //
 // The clearance model's following mode is undamped, so a strict steady state
-// is rarely reached (README "Clearance model": not within 300 turns for
+// is rarely reached (docs/clearance-model.md: not within 300 turns for
 // e = 0.5 … 0 on the thesis rig). The theory therefore runs a fixed number of
 // warm-up turns from the nominal start (sec. 3.4/6.1), then averages a fixed
 // number of turns in the crank-angle domain, exactly as the measurement is
@@ -77,7 +77,7 @@ struct MatchedTheory {
   std::array<TheorySeries, 4> series;  ///< by LinkQuantity
   std::vector<BearingImpact> impacts;  ///< in the averaged turns
   TheorySeverity severity;
-  double energy_residual_rel = 0;      ///< energy balance of the run (README "Clearance model")
+  double energy_residual_rel = 0;      ///< energy balance of the run (docs/clearance-model.md)
   double max_penetration_rel = 0;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // fit.json: the fitted contact parameters with their intervals, the
-// objective per recording, and what the fit cost (README "Fitting the
+// objective per recording, and what the fit cost (docs/fit.md "Fitting the
 // contact parameters" lists every field).
 
 #include <string>

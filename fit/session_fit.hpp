@@ -1,6 +1,6 @@
 #pragma once
 // The fit of the bearing's contact parameters to a session's recordings
-// (README "Fitting the contact parameters", docs/fit.md).
+// (docs/fit.md).
 //
 // Parameters: the restitution e and, with `fit_friction`, the Coulomb μ of
 // the stick-slip law (μ = 0 is the smooth law: the stick-slip impulse's

@@ -79,7 +79,7 @@ void validate_rig(const Rig& rig);
 /// with the pin on the bushing wall cannot close and the run is garbage).
 double toggle_margin_m(const Rig& rig);
 
-/// Reads and validates a rig TOML file (keys in README "Rig file").
+/// Reads and validates a rig TOML file (keys in docs/reference.md "Rig file").
 Rig load_rig(const std::filesystem::path& file);
 
 /// The thesis rig of Table 6.1 / 7.1 (clearance 0.254 mm), for tests and benches.

@@ -17,6 +17,7 @@ packages=(
   libsundials-dev         # CVODE with root finding (sim events)
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev        # bench/ programs
+  python3                 # scripts/check-readme.py (CTest readme, doc_links)
   python3-scipy           # bench/compare_analyze_scipy.py (numpy/scipy reference of the analyze chain)
   python3-pandas          # tests/cli/csv_in_pandas.py: every CSV fourbar writes opens with plain read_csv
   libopenmpi-dev openmpi-bin    # fourbar sweep over MPI ranks (cluster/; optional at build time)

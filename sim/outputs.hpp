@@ -22,7 +22,7 @@ struct OutputSpec {
   Quantity quantity;
   std::string_view name;         ///< column name, with its unit
   Needs needs;
-  std::string_view description;  ///< one line for --help and the README
+  std::string_view description;  ///< one line for --help and docs/reference.md
 };
 
 /// Every nominal-model output, in a stable order.

@@ -35,7 +35,7 @@ struct Scene {
   std::optional<toml::table> recording;
 };
 
-/// Reads a scene file (keys in README "Scene file"), loads its rig, and
+/// Reads a scene file (keys in docs/reference.md "Scene file"), loads its rig, and
 /// validates every value; InputError naming file, key and value otherwise.
 Scene load_scene(const std::filesystem::path& file);
 

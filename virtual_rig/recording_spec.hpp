@@ -1,6 +1,6 @@
 #pragma once
 // The scene's `[recording]` table: what the virtual rig records and how
-// (README "Virtual rig" lists every key).
+// (docs/virtual-rig.md lists every key).
 
 #include <cstdint>
 #include <optional>

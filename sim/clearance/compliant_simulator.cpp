@@ -21,7 +21,7 @@ CompliantSimulator::Impl::Impl(const ClearanceModel& m, const CrankMotion& c, co
     : model(m), crank(c), settings(s), integ(s.tolerance, kCoupled) {
   const CompliantSettings& k = s.compliant;
   if (!(k.stiffness_N_per_m_n > 0))
-    throw RunError("compliant clearance model: no contact stiffness (the scene resolves it; see README)");
+    throw RunError("compliant clearance model: no contact stiffness (the scene resolves it; see docs/clearance-model.md)");
   law = {k.stiffness_N_per_m_n, k.exponent, k.damping, s.restitution};
   friction = {s.friction_coefficient, k.friction_stick_speed_m_s, k.friction_slip_speed_m_s};
   hysteresis = hysteresis_factor(k.damping, s.restitution, k.exponent);

@@ -27,7 +27,7 @@
 // Newton iteration sees a continuous Jacobian. Chosen over a bristle (LuGre)
 // model because it adds no state (a bristle state is itself stiff) and the
 // pin sticks only briefly in this bearing; the price is that a pin cannot
-// stay stuck: below v0 it creeps (documented in README "Compliant contact").
+// stay stuck: below v0 it creeps (documented in docs/clearance-model.md "Compliant contact").
 
 namespace fourbar {
 

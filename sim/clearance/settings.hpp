@@ -31,7 +31,7 @@ const char* to_string(ContactLaw c);
 const char* to_string(IntegratorKind k);
 const char* to_string(ClearanceKind k);
 
-/// The compliant model's contact (model = "compliant"; README "Compliant contact").
+/// The compliant model's contact (model = "compliant"; docs/clearance-model.md "Compliant contact").
 struct CompliantSettings {
   DampingLaw damping = DampingLaw::calibrated;
   /// K in N/mⁿ: given (contact_stiffness_N_per_m_n) or computed from the
@@ -62,14 +62,14 @@ struct ClearanceSettings {
   /// Normal speeds below this count as resting contact: a rebound slower than
   /// this ends a chattering sequence in the following mode (the Zeno rule).
   double settle_speed_m_s = 1e-6;
-  /// Which steady state ends the search (README "Clearance model").
+  /// Which steady state ends the search (docs/clearance-model.md).
   enum class SteadyCriterion { periodic, statistical, either };
   bool steady_state = false;     ///< run until the motion is steady (see steady_criterion)
   SteadyCriterion steady_criterion = SteadyCriterion::either;
   int statistical_window = 20;          ///< W: turns per window of the statistical criterion
   double statistical_tolerance = 0.05;  ///< relative agreement of the two windows' means
   int max_revolutions = 200;     ///< bound on the turns simulated to reach steady state
-  double steady_tolerance = 1e-6;  ///< state repeat tolerance (scaled state, see README)
+  double steady_tolerance = 1e-6;  ///< state repeat tolerance (scaled state, see docs/clearance-model.md)
   int max_period = 8;            ///< longest period (in turns) looked for
   /// Sample every following-mode step at kScanPoints points for events even
   /// when its Runge–Kutta stage values already clear it (tests and benches

@@ -16,7 +16,7 @@
 // output to within 1e-13 s (never by stepping over and back):
 //  * contact loss: N + N_guard crosses zero downward (thesis sec. 3.5: the
 //    bearing reaction turning tensile; the magnitude guard N_guard = 1e-9 of
-//    the force scale makes the switch robust to round-off — see README);
+//    the force scale makes the switch robust to round-off — see docs/clearance-model.md);
 //    local minima of N between samples are checked with Brent's method;
 //  * impact: the penetration |e| − ξ crosses zero upward (eq. 4.4-5); local
 //    maxima between samples are checked so grazing double roots are not lost.

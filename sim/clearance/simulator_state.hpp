@@ -29,7 +29,7 @@ constexpr double kRestartTurns = 64;
 
 // Guards and tolerances, each relative to the run's own scales (set in prepare()).
 /// N_guard as a fraction of the force scale: the contact-loss witness is
-/// N + N_guard, so round-off in N near zero cannot flip the mode (see README).
+/// N + N_guard, so round-off in N near zero cannot flip the mode (see docs/clearance-model.md).
 constexpr double kForceGuardFraction = 1e-9;
 /// Arm depth as a fraction of ξ: a free flight from the wall counts as
 /// "inside" only below this penetration, well above round-off in |e| − ξ.

@@ -2,7 +2,7 @@
 // the thesis rig: every common manifest mistake is flagged with the right key
 // and the data's value near the truth, the correct manifest is not flagged.
 // The CI matrix is small (8 short recordings × 8 manifests, seconds); the
-// larger one whose table the README quotes is bench/setup_check_matrix.
+// larger one whose table docs/setup-check.md quotes is bench/setup_check_matrix.
 
 #include <gtest/gtest.h>
 

@@ -174,7 +174,7 @@ TEST_F(SessionReport, OperatingPointIsTheRecordedOne) {
 
 TEST_F(SessionReport, NominalRecordingMatchesTheNominalTheory) {
   // Truth: the rig moved as the nominal mechanism. The analysis chain is good to
-  // 0.2 % on α (README "Analysis"); 1 % leaves room for 50 dB noise on 14 turns.
+  // 0.2 % on α (docs/analysis.md); 1 % leaves room for 50 dB noise on 14 turns.
   const json& m = recording("nominal.flac")["metrics"];
   for (const char* q : {"alpha3_rad_s2", "alpha4_rad_s2", "omega3_rad_s", "omega4_rad_s"}) {
     const json& c = m[q];
@@ -195,7 +195,7 @@ TEST_F(SessionReport, ClearanceRecordingShowsTheModelsImpactBursts) {
   // The impacts are in the measurement: its fluctuation about the nominal is
   // many times that of the clearance-free recording.
   EXPECT_GT(meas_dev, 10 * nominal_dev);
-  // Where the bursts fall: the model's impact sequence is chaotic (README
+  // Where the bursts fall: the model's impact sequence is chaotic (docs/clearance-model.md
   // "Clearance model"), so the recorded run and the matched run differ in
   // detail, but both lose contact and impact in the same part of the turn,
   // after the crank passes 0° on this rig (thesis ch. 8: "points of contact

@@ -45,7 +45,7 @@ TEST(Compliant, EnergyBalanceOverTenTurnsAndBoundedPenetration) {
     EXPECT_GT(d.impact_loss_J, 0.0);
     if (mu > 0) EXPECT_GT(d.friction_loss_J, 0.0);
     else EXPECT_EQ(d.friction_loss_J, 0.0);
-    if (mu == 0) EXPECT_GT(d.impacts, 0u);  // with mu = 0.2 the pin stays on the wall (README)
+    if (mu == 0) EXPECT_GT(d.impacts, 0u);  // with mu = 0.2 the pin stays on the wall (docs/clearance-model.md)
     // Penetration: a few micrometres, far below ξ, with no growth over the run.
     EXPECT_GT(d.max_penetration, 0.0);
     EXPECT_LT(d.max_penetration, 0.1);
@@ -63,7 +63,7 @@ TEST(Compliant, FirstImpactTendsToTheThreeModeOneAsTheStiffnessGrows) {
   // it again; the first impact's time, approach speed and impulse (first
   // compression–restitution cycle) against the three-mode model's with the
   // same e, for K = 1e10, 1e11, 1e12 N/m^1.5. (Statistics over many turns do
-  // not converge over this range: README "Compliant contact".)
+  // not converge over this range: docs/clearance-model.md "Compliant contact".)
   const ClearanceModel model(thesis_rig(), 0.254e-3);
   const double w = units::rpm_to_rad_s(350), T = units::kTwoPi / w;
   const ConstantSpeedCrank crank(0.0, w);
