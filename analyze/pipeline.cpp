@@ -108,6 +108,13 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   result.warnings.insert(result.warnings.begin(), result.acquisition.warnings.begin(),
                          result.acquisition.warnings.end());
   if (options.setup_check) result.setup_check = check_setup(result, manifest);
+  if (result.acquisition.wheel.positions_per_rev == 0 && !channels.links.empty() && result.mean_crank_speed_rad_s != 0 &&
+      options.conversion == ConversionMethod::full) {
+    const AccelerometerMount& mount = channels.links.front().tangential->mount;
+    result.unseen_speed = unseen_speed_sensitivity(*manifest.rig, mount, result.mean_crank_speed_rad_s,
+                                                   manifest.pulse_channel().crank_offset_rad);
+    result.unseen_speed_link = mount.link;
+  }
   return result;
 }
 

@@ -39,6 +39,7 @@
 #include "analyze/filter_design.hpp"
 #include "analyze/sensor_mount.hpp"
 #include "analyze/setup_check.hpp"
+#include "analyze/unseen_speed_change.hpp"
 
 namespace fourbar {
 
@@ -165,6 +166,10 @@ struct RecordingAnalysis {
   std::vector<std::string> warnings;        ///< acquire's and analyze's
   /// The set-up check (options.setup_check); its findings are not in `warnings`.
   std::optional<SetupCheck> setup_check;
+  /// One pulse per turn: how much an unseen in-turn speed change of 0.1 %
+  /// would put into the first link's averaged α and ω (unseen_speed_change.hpp).
+  std::optional<UnseenSpeedSensitivity> unseen_speed;
+  SensedLink unseen_speed_link = SensedLink::coupler;
 };
 
 /// One analysed revolution, as it is finished (time order).

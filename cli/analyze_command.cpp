@@ -18,6 +18,7 @@
 #include "common/json_text.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
+#include "report/recording_job.hpp"
 #include "report/setup_check_record.hpp"
 
 namespace po = boost::program_options;
@@ -346,6 +347,7 @@ int run_analyze(const Invocation& inv) {
   if (a.rocker) j["links"]["rocker"] = link_json(*a.rocker);
   j["warnings"] = a.warnings;
   j["setup_check"] = setup;
+  j["one_pulse_per_turn"] = unseen_speed_json(a);
   j["outputs"] = nlohmann::json::array({"averaged.csv", "spectra.csv", "summary.json"});
   if (per_revolution) j["outputs"].push_back("per_revolution.csv");
 

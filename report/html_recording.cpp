@@ -10,6 +10,26 @@ namespace fourbar {
 
 using nlohmann::json;
 
+namespace {
+
+/// One crank pulse per turn: what the recording cannot see, in numbers.
+std::string one_pulse_note(const json& u, const json& speed_rpm) {
+  if (u.is_null()) return {};
+  const bool coupler = u["quantities"][0] == "alpha3_rad_s2";
+  const std::string a = coupler ? "α3" : "α4", w = coupler ? "ω3" : "ω4";
+  return "<p class=\"note one-pulse\"><b>One crank pulse per turn:</b> a crank-speed change that repeats every turn is "
+         "invisible in this recording, whatever its size (the pulse times are the same with or without it). At " +
+         fmt(speed_rpm, "%.0f") + " rpm with this " + (coupler ? "coupler" : "rocker") + " sensor, each " +
+         fmt(u["speed_change_pct"], "%.1f") + " % of once-per-turn speed change would put up to " +
+         fmt(u["once_per_turn_pct"]["alpha"], "%.2f") + " % into the averaged " + a + " and " +
+         fmt(u["once_per_turn_pct"]["omega"], "%.2f") + " % into " + w + " (twice per turn: " +
+         fmt(u["twice_per_turn_pct"]["alpha"], "%.2f") + " % and " + fmt(u["twice_per_turn_pct"]["omega"], "%.2f") +
+         " %). A loaded crank usually changes speed within the turn: to measure it, fit a tooth wheel "
+         "(<code>pulses_per_rev</code>) or an encoder (<code>encoder_a</code>, <code>encoder_b</code>).</p>";
+}
+
+}  // namespace
+
 void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
   const std::string name = r["name"];
   const bool ok = is_analysed(r);
@@ -36,6 +56,7 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
     << " warm-up + " << fmt(th["settings"]["averaged_revolutions"], "%.0f") << " averaged turns</td><td class=\"l\">"
     << fmt(sv["impacts_per_rev"], "%.1f") << " / " << fmt(sv["sum_normal_impulse_per_rev_Ns"], "%.3g") << " N·s / "
     << fmt(sv["impact_index_Ns"], "%.3g") << " N·s</td></tr></table>";
+  h << one_pulse_note(at(r, {"acquisition", "one_pulse_per_turn"}), op["speed_rpm"]);
   if (!at(r, {"warnings"}).empty()) {
     h << "<div class=\"warn\"><b>Warnings</b><ul>";
     for (const json& w : r["warnings"]) h << "<li>" << html_escape(w) << "</li>";

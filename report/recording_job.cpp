@@ -43,6 +43,17 @@ json link_spectrum(const RecordingAnalysis& a, const LinkResult& link, double ma
 
 }  // namespace
 
+json unseen_speed_json(const RecordingAnalysis& a) {
+  if (!a.unseen_speed) return nullptr;
+  const UnseenSpeedSensitivity& u = *a.unseen_speed;
+  const bool coupler = a.unseen_speed_link == SensedLink::coupler;
+  return {
+      {"quantities", coupler ? json::array({"alpha3_rad_s2", "omega3_rad_s"}) : json::array({"alpha4_rad_s2", "omega4_rad_s"})},
+      {"speed_change_pct", 100 * u.amplitude},
+      {"once_per_turn_pct", {{"alpha", 100 * u.once_per_turn.alpha_rel_rms}, {"omega", 100 * u.once_per_turn.omega_rel_rms}}},
+      {"twice_per_turn_pct", {{"alpha", 100 * u.twice_per_turn.alpha_rel_rms}, {"omega", 100 * u.twice_per_turn.omega_rel_rms}}}};
+}
+
 MeasuredResponse measured_response(const RecordingAnalysis& a) {
   MeasuredResponse m;
   m.grid.grid_points_per_rev = a.grid_points_per_rev;
@@ -87,6 +98,7 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
   if (a.rocker) spectra["alpha4_rad_s2"] = link_spectrum(a, *a.rocker, max_order);
   r["spectra"] = spectra;
   r["warnings"] = a.warnings;
+  if (a.unseen_speed) r["acquisition"]["one_pulse_per_turn"] = unseen_speed_json(a);
   return r;
 }
 

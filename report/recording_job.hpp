@@ -22,6 +22,12 @@ namespace fourbar {
 MeasuredResponse measured_response(const RecordingAnalysis& analysis);
 
 /// The record of a recording that went through (status "ok").
+/// One pulse per turn: {quantities, speed_change_pct, once_per_turn_pct:
+/// {alpha, omega}, twice_per_turn_pct} — what an unseen in-turn speed change
+/// of speed_change_pct would put into the averaged α and ω, worst over its
+/// phase (analyze/unseen_speed_change.hpp); null for wheels and encoders.
+nlohmann::json unseen_speed_json(const RecordingAnalysis& analysis);
+
 nlohmann::json recording_record(const RecordingAnalysis& analysis, const MeasuredResponse& measured,
                                 const MatchedTheory& theory, const RecordingComparison& comparison);
 

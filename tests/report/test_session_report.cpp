@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <regex>
 
@@ -170,6 +171,23 @@ TEST_F(SessionReport, OperatingPointIsTheRecordedOne) {
   // Every file with its checksum.
   for (const json& f : recording("clearance.flac")["files"]) EXPECT_EQ(f["sha256"].get<std::string>().size(), 64u);
   EXPECT_EQ(recording("clearance.flac")["files"].size(), 3u);  // recording, manifest, rig
+}
+
+TEST_F(SessionReport, OnePulseRecordingSaysWhatItCannotSee) {
+  // One pulse per turn: summary.json and the page give what an unseen 0.1 %
+  // in-turn speed change would put into α3 and ω3 (the forward model itself is
+  // checked against the virtual rig in tests/analyze/test_wheel_pipeline.cpp).
+  const json& u = recording("clearance.flac")["acquisition"]["one_pulse_per_turn"];
+  ASSERT_TRUE(u.is_object());
+  EXPECT_EQ(u["quantities"][0], "alpha3_rad_s2");
+  EXPECT_DOUBLE_EQ(u["speed_change_pct"].get<double>(), 0.1);
+  for (const char* k : {"once_per_turn_pct", "twice_per_turn_pct"})
+    for (const char* q : {"alpha", "omega"}) EXPECT_GT(u[k][q].get<double>(), 0.0) << k << " " << q;
+  std::ifstream in(dir_->path() / "out" / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  char alpha[32];
+  std::snprintf(alpha, sizeof alpha, "%.2f %% into the averaged α3", u["once_per_turn_pct"]["alpha"].get<double>());
+  EXPECT_NE(html.find(alpha), std::string::npos) << alpha;
 }
 
 TEST_F(SessionReport, NominalRecordingMatchesTheNominalTheory) {
