@@ -93,7 +93,7 @@ VerdictPart measurement_part(const VerdictInputs& in) {
     p.sentence += (p.sentence.empty() ? "" : " ") + i.sentence;
   }
   if (items.empty()) {
-    p.words = "good";
+    p.words = "ok";
     p.sentence = std::to_string(in.revolutions) + " turns averaged";
     if (in.nominal_rms > 0 && in.floor_rms > 0) p.sentence += ", noise floor " + pct(in.floor_rms / in.nominal_rms) + " of the nominal α3";
     if (rpm > 0) p.sentence += ", crank speed steady to " + pct(in.speed_std_rpm / rpm);
@@ -124,7 +124,7 @@ VerdictPart effect_part(const VerdictInputs& in) {
   const bool none = effect_none(in);
   const bool expected = model_lines >= kEffectSeen || model_scatter >= kScatterSeen;
   if (seen)
-    return {VerdictLevel::good, "seen (" + num(lines) + "× floor, scatter " + pct(scatter) + ")",
+    return {VerdictLevel::good, lines >= kEffectSeen ? "seen (lines " + num(lines) + "× floor)" : "seen (scatter " + pct(scatter) + ")",
             "A clearance effect is measured: " + measured + "."};
   if (none && expected)
     return {VerdictLevel::problem, "none, model expects one",
@@ -156,15 +156,27 @@ std::string fit_sentence(const VerdictInputs& in) {
   return s + ".";
 }
 
-VerdictPart agreement_part(const VerdictInputs& in, const VerdictPart& effect) {
+VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, std::string& a_from) {
   const bool spectral = in.a_spectral && !in.orders_used.empty();
-  const std::optional<double> a = spectral ? in.a_spectral : in.a_time;
-  if (!a) return {VerdictLevel::not_judged, "no a", "No magnification factor: the measurement equals the nominal response." + fit_sentence(in)};
-  std::string from = spectral ? "a (spectral) from orders " : "a (time)";
-  if (spectral)
+  const bool chaotic = in.effect_to_floor.value_or(0) < kEffectSeen && scatter_of(in) >= kScatterSeen && in.spread_rms > 0;
+  std::string from;
+  if (chaotic) {
+    a = in.model_spread_rms / in.spread_rms;
+    a_from = "scatter";
+    from = "a (scatter) = model / measured turn-to-turn scatter of α3";
+  } else if (spectral) {
+    a = in.a_spectral;
+    a_from = "spectral";
+    from = "a (spectral) from orders ";
     for (std::size_t i = 0; i < in.orders_used.size(); ++i) from += (i ? ", " : "") + std::to_string(in.orders_used[i]);
-  const std::string words = "a " + num(*a, 2) + (spectral ? " (spectral)" : " (time)");
-  if (effect.level == VerdictLevel::not_judged || effect_none(in))
+  } else if (in.a_time) {
+    a = in.a_time;
+    a_from = "time";
+    from = "a (time)";
+  }
+  if (!a) return {VerdictLevel::not_judged, "no a", "No magnification factor: the measurement equals the nominal response." + fit_sentence(in)};
+  const std::string words = "a " + num(*a, 2) + " (" + a_from + ")";
+  if (effect_none(in) || (!in.effect_to_floor && in.spread_rms == 0))
     return {VerdictLevel::not_judged, words + ", not meaningful",
             from + " = " + num(*a, 3) + " compares the model with noise: no clearance effect was measured." + fit_sentence(in)};
   VerdictPart p;
@@ -184,8 +196,12 @@ VerdictPart agreement_part(const VerdictInputs& in, const VerdictPart& effect) {
     p.sentence += "model and measurement agree within " + pct(kAgreeHigh - 1) + " (" + e + ", " + in.contact + ")";
   if (p.level != VerdictLevel::good && !in.fit) p.sentence += "; `fourbar fit SESSION_DIR` identifies e (and μ) from the session";
   p.sentence += ".";
-  if (in.a_time && in.a_spectral && *in.a_spectral > 0 &&
-      std::max(*in.a_time / *in.a_spectral, *in.a_spectral / *in.a_time) > kTimeSpectralApart)
+  if (chaotic)
+    p.sentence += " The impacts are chaotic: the effect is in the scatter between turns, not in the averaged curve, so a (time)" +
+                  (in.a_time ? " = " + num(*in.a_time, 3) : std::string()) + " and a (spectral)" +
+                  (in.a_spectral ? " = " + num(*in.a_spectral, 3) : std::string()) + " compare chance residues of the averages.";
+  else if (in.a_time && in.a_spectral && *in.a_spectral > 0 &&
+           std::max(*in.a_time / *in.a_spectral, *in.a_spectral / *in.a_time) > kTimeSpectralApart)
     p.sentence += " a (time) = " + num(*in.a_time, 3) + " differs: it counts every order, also the nominal band (1 … " +
                   std::to_string(in.nominal_band_orders) + ") and mains hum, which the clearance model cannot hold.";
   p.sentence += fit_sentence(in);
@@ -229,7 +245,7 @@ Verdict verdict_of(const VerdictInputs& in) {
   v.setup = setup_part(in);
   v.measurement = measurement_part(in);
   v.effect = effect_part(in);
-  v.agreement = agreement_part(in, v.effect);
+  v.agreement = agreement_part(in, v.a, v.a_from);
   for (const VerdictPart* p : {&v.setup, &v.measurement, &v.effect, &v.agreement}) v.overall = worst(v.overall, p->level);
   return v;
 }
@@ -291,7 +307,9 @@ json verdict_json(const Verdict& v) {
           {"setup", part(v.setup)},
           {"measurement", part(v.measurement)},
           {"clearance_effect", part(v.effect)},
-          {"model_agreement", part(v.agreement)}};
+          {"model_agreement", part(v.agreement)},
+          {"a", v.a ? json(*v.a) : json(nullptr)},
+          {"a_from", v.a_from}};
 }
 
 }  // namespace fourbar

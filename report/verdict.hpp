@@ -13,7 +13,8 @@
 //                     between the lines, and the turn-to-turn scatter against
 //                     the nominal response;
 //   model agreement   the magnification factor a (spectral when it has
-//                     orders, else time) and how to act on it; the fitted
+//                     orders, else time; from the turn-to-turn scatter when
+//                     the effect is chaotic) and how to act on it; the fitted
 //                     contact parameters when a fit.json is given.
 //
 // verdict_of is a pure function of VerdictInputs; verdict_inputs reads them
@@ -48,6 +49,9 @@ inline constexpr double kScatterNone = 0.05, kScatterSeen = 0.10;
 /// Magnification factor a: good within [0.8, 1.25], a problem outside [0.5, 2].
 inline constexpr double kAgreeLow = 0.8, kAgreeHigh = 1.25, kAgreeProblemLow = 0.5, kAgreeProblemHigh = 2.0;
 /// a (time) and a (spectral) further apart than this factor get a word on why.
+/// An effect seen in the scatter only (order lines below kEffectSeen) is
+/// judged by a (scatter) = model scatter / measured scatter: the averages of
+/// chaotic turns compare chance residues.
 inline constexpr double kTimeSpectralApart = 1.5;
 
 struct VerdictFinding {
@@ -98,6 +102,11 @@ struct VerdictPart {
 
 struct Verdict {
   VerdictPart setup, measurement, effect, agreement;
+  /// The magnification factor the agreement part judged and where it came
+  /// from: "spectral", "time", or "scatter" (model over measured turn-to-turn
+  /// scatter, when the effect is chaotic and lives in the scatter, not in the average).
+  std::optional<double> a;
+  std::string a_from;
   VerdictLevel overall = VerdictLevel::not_judged;  ///< the worst judged part
 };
 

@@ -24,14 +24,9 @@ std::string verdict_text_table(const json& records) {
       const json& v = r["verdict"];
       for (const char* p : {"setup", "measurement", "clearance_effect", "model_agreement"})
         row.push_back(v[p]["level"].get<std::string>() + ": " + v[p]["words"].get<std::string>());
-      // a as the verdict reads it: spectral when it has orders, else time.
-      const json* mg = nullptr;
-      if (r.contains("metrics") && r["metrics"].contains("alpha3_rad_s2")) mg = &r["metrics"]["alpha3_rad_s2"]["magnification"];
+      // a as the verdict judged it: spectral, time or scatter.
       std::string a = "–";
-      if (mg && mg->value("spectral", json()).is_number() && !mg->value("orders_used", json::array()).empty())
-        a = format_number((*mg)["spectral"].get<double>(), 3) + " (spectral)";
-      else if (mg && mg->value("time_domain", json()).is_number())
-        a = format_number((*mg)["time_domain"].get<double>(), 3) + " (time)";
+      if (v.value("a", json()).is_number()) a = format_number(v["a"].get<double>(), 3) + " (" + v.value("a_from", "") + ")";
       row.push_back(a);
     }
     rows.push_back(std::move(row));

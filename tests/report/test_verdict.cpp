@@ -42,6 +42,8 @@ TEST(Verdict, CleanRecordingIsGoodInEveryPart) {
   EXPECT_EQ(v.overall, VerdictLevel::good);
   EXPECT_NE(v.agreement.sentence.find("a (spectral) from orders 6, 7, 9 = 1.1"), std::string::npos) << v.agreement.sentence;
   EXPECT_NE(v.effect.sentence.find("A clearance effect is measured"), std::string::npos);
+  EXPECT_EQ(v.effect.words, "seen (lines 8× floor)");
+  EXPECT_EQ(v.a_from, "spectral");
 }
 
 TEST(Verdict, SetupFindingIsAProblemNamingTheKey) {
@@ -149,6 +151,24 @@ TEST(Verdict, ModelAgreementSaysHowToAct) {
   EXPECT_NE(verdict_of(in).agreement.sentence.find("a (time) = 0.5 differs"), std::string::npos);
 }
 
+TEST(Verdict, ChaoticEffectIsJudgedByTheScatter) {
+  // Impacts that differ from turn to turn: the order lines of the average stand at the floor, the
+  // turns scatter 40 % of the nominal response; the model scatters 44 %.
+  VerdictInputs in = clean();
+  in.effect_to_floor = 1.2, in.spread_rms = 40, in.model_spread_rms = 44;
+  in.a_spectral = 0.33, in.a_time = 0.85;
+  const Verdict v = verdict_of(in);
+  EXPECT_EQ(v.effect.level, VerdictLevel::good);
+  EXPECT_EQ(v.effect.words, "seen (scatter 40 %)");
+  ASSERT_TRUE(v.a);
+  EXPECT_DOUBLE_EQ(*v.a, 1.1);
+  EXPECT_EQ(v.a_from, "scatter");
+  EXPECT_EQ(v.agreement.level, VerdictLevel::good) << v.agreement.sentence;
+  EXPECT_NE(v.agreement.sentence.find("chaotic"), std::string::npos);
+  EXPECT_NE(v.agreement.sentence.find("a (spectral) = 0.33"), std::string::npos);
+  EXPECT_EQ(verdict_json(v)["a_from"], "scatter");
+}
+
 TEST(Verdict, FitParametersAreNamed) {
   VerdictInputs in = clean();
   in.a_spectral = 1.6;
@@ -228,7 +248,8 @@ TEST(VerdictTable, ColumnsAlignedInCharacters) {
   EXPECT_EQ(column(l[0], "status"), column(l[1], "ok"));
   EXPECT_EQ(column(l[0], "status"), column(l[2], "failed"));
   EXPECT_EQ(column(l[0], "set-up"), column(l[1], "good: matches"));
-  EXPECT_EQ(column(l[0], "  a") + 2, column(l[1], "1.1 (spectral)"));
+  // The last column (the words of model agreement hold "a 1.1 (spectral)" too).
+  EXPECT_EQ(display_width(l[0].substr(0, l[0].rfind("  a") + 2)), display_width(l[1].substr(0, l[1].rfind("1.1 (spectral)"))));
   EXPECT_EQ(display_width("α3 ±×"), 5u);
 }
 
