@@ -10,6 +10,7 @@
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/progress.hpp"
 #include "fit/fit_json.hpp"
 #include "fit/session_fit.hpp"
 #include "report/session_settings.hpp"
@@ -100,10 +101,12 @@ int run_fit(const Invocation& inv) {
   analysis.progress = false;
   std::vector<RecordingTarget> targets;
   std::size_t max_turns = 0;
+  Progress bar("fit: analysing", files.recordings.size(), !quiet);
   for (const auto& rec : files.recordings) {
     auto manifest = rec;
     manifest.replace_extension(".toml");
-    if (!quiet) std::cerr << "fit: analysing " << rec.filename().string() << "\n";
+    bar.set_label("fit: analysing " + rec.filename().string());
+    bar.update(static_cast<std::uint64_t>(&rec - files.recordings.data()));
     try {
       const RecordingAnalysis a = analyze_recording(rec, manifest, analysis);
       std::optional<RecordingAnalysis> band;
@@ -114,6 +117,7 @@ int run_fit(const Invocation& inv) {
       std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
     }
   }
+  bar.finish();
   if (targets.empty()) throw RunError("fit: no recording of " + session.string() + " could be analysed");
   if (turns == 0) o.simulated_turns = std::max<int>(40, static_cast<int>(2 * max_turns));
 

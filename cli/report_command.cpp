@@ -83,7 +83,7 @@ int run_report(const Invocation& inv) {
   std::cout << "wrote " << r.html.string() << " and " << r.summary.string() << ": " << r.recordings << " recordings, "
             << r.failed << " failed, " << r.from_cache << " from the cache";
   if (r.check_setup > 0) std::cout << ", " << r.check_setup << " to check set-up";
-  std::cout << "\n";
+  std::cout << "\n" << r.verdict_table;
   if (strict && r.check_setup > 0)
     throw InputError("report: --strict: the set-up check found likely manifest mistakes in " +
                      std::to_string(r.check_setup) + (r.check_setup == 1 ? " recording" : " recordings") + " (named above and at the top of " + r.html.string() +

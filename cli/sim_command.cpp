@@ -308,7 +308,7 @@ int run_sim(const Invocation& inv) {
   ensure_output_dir(out_dir);
 
   Provenance prov{inv.command_line, {scene.source, scene.rig->source}, csv_comments};
-  if (scene.model == Model::clearance) return write_clearance_run(scene, run_clearance(scene), out_dir, prov);
+  if (scene.model == Model::clearance) return write_clearance_run(scene, run_clearance(scene, true), out_dir, prov);
 
   const SeriesTable table = run_nominal(scene);
 

@@ -52,7 +52,22 @@ std::vector<double> order_amplitudes(std::span<const double> revolutions, std::s
   return amp;
 }
 
-Magnification magnification_factor(const MagnificationInput& in, int max_order) {
+int nominal_band_orders(std::span<const double> nominal) {
+  const std::size_t n = nominal.size();
+  if (n < 4) return 0;
+  const int top = static_cast<int>(n / 2) - 1;
+  const std::vector<double> a = order_amplitudes(nominal, n, top);
+  double total = 0;
+  for (int k = 1; k <= top; ++k) total += a[static_cast<std::size_t>(k)] * a[static_cast<std::size_t>(k)];
+  double above = total;
+  for (int k = 1; k <= top; ++k) {
+    if (above <= kNominalBandResidual * total) return k - 1;
+    above -= a[static_cast<std::size_t>(k)] * a[static_cast<std::size_t>(k)];
+  }
+  return top;
+}
+
+Magnification magnification_factor(const MagnificationInput& in, int max_order, const MainsHum& mains) {
   const std::size_t n = in.nominal.size();
   Magnification m;
   m.measured_deviation_rms = rms_difference(in.measured_mean, in.nominal);
@@ -78,7 +93,9 @@ Magnification magnification_factor(const MagnificationInput& in, int max_order) 
                   : std::string("one averaged revolution, no window (exactly periodic)");
   };
   m.spectral_method = "measured: " + method(rm) + "; simulated: " + method(rs);
-  double sum_sim = 0, sum_meas = 0;
+  double sum_sim = 0, sum_meas = 0, band_meas = 0, band_sim = 0, band_floor = 0, all_floor = 0;
+  const MainsOrders hum(mains, rm);
+  m.nominal_band_orders = nominal_band_orders(in.nominal);
   for (int k = 1; k <= max_order; ++k) {
     const auto i = static_cast<std::size_t>(k);
     OrderRatio o;
@@ -87,11 +104,23 @@ Magnification magnification_factor(const MagnificationInput& in, int max_order) 
     o.simulated_amplitude = as[i];
     o.measured_floor = floor[i];
     o.significant = am[i] > 0 && am[i] > 3.0 * floor[i];
+    o.mains = hum.at_mains(k);
     if (am[i] > 0) o.factor = as[i] / am[i];
-    if (o.significant) sum_sim += as[i] * as[i], sum_meas += am[i] * am[i];
+    all_floor += floor[i] * floor[i];
+    const bool effect_order = k > m.nominal_band_orders && !o.mains;
+    if (effect_order) band_meas += am[i] * am[i], band_sim += as[i] * as[i], band_floor += floor[i] * floor[i];
+    if (o.significant && effect_order) {
+      sum_sim += as[i] * as[i], sum_meas += am[i] * am[i];
+      m.orders_used.push_back(k);
+    }
     m.orders.push_back(o);
   }
   if (sum_meas > 0) m.spectral = std::sqrt(sum_sim / sum_meas);
+  m.floor_rms = std::sqrt(all_floor / 2);  // a line of amplitude A has RMS A/√2
+  if (band_floor > 0) {
+    m.effect_to_floor = std::sqrt(band_meas / band_floor);
+    m.model_effect_to_floor = std::sqrt(band_sim / band_floor);
+  }
   return m;
 }
 

@@ -22,6 +22,10 @@ struct AngleSeries {
 struct MeasuredResponse {
   CrankGrid grid;
   double crank_speed_rad_s = 0;  ///< mean over the analysed revolutions (sign: direction)
+  double speed_rel_std = 0;      ///< crank speed's standard deviation over its mean (acquisition)
+  /// Mains frequencies whose hum orders the spectral magnification leaves
+  /// out (compare/mains_order.hpp); empty: none.
+  std::vector<double> mains_hz;
   /// Per LinkQuantity (index_of); empty when the recording has no such channel.
   std::array<std::optional<AngleSeries>, 4> series;
 };

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/error.hpp"
+#include "common/units.hpp"
 #include "compare/metrics.hpp"
 
 namespace fourbar {
@@ -51,7 +52,8 @@ RecordingComparison compare_response(const MeasuredResponse& measured, const Mat
       c.largest_burst_offset_deg = std::min(d, 360.0 - d);
     }
     MagnificationInput in{t.nominal, m.mean, sim, m.revolutions, t.clearance_revolutions};
-    c.magnification = magnification_factor(in, theory.settings.max_order);
+    const MainsHum hum{std::abs(measured.crank_speed_rad_s) / units::kTwoPi, measured.mains_hz, measured.speed_rel_std};
+    c.magnification = magnification_factor(in, theory.settings.max_order, hum);
     out.quantities[index_of(q)] = std::move(c);
   }
   return out;

@@ -23,6 +23,7 @@ json quantity_metrics(const QuantityComparison& c) {
                       {"simulated_amplitude", o.simulated_amplitude},
                       {"measured_floor", o.measured_floor},
                       {"significant", o.significant},
+                      {"mains", o.mains},
                       {"factor", optional_json(o.factor)}});
   return {{"measured_rms", c.measured_rms},
           {"simulated_rms", c.simulated_rms},
@@ -42,6 +43,11 @@ json quantity_metrics(const QuantityComparison& c) {
             {"time_domain", optional_json(m.time_domain)},
             {"spectral", optional_json(m.spectral)},
             {"spectral_method", m.spectral_method},
+            {"orders_used", m.orders_used},
+            {"nominal_band_orders", m.nominal_band_orders},
+            {"floor_rms", m.floor_rms},
+            {"effect_to_floor", optional_json(m.effect_to_floor)},
+            {"model_effect_to_floor", optional_json(m.model_effect_to_floor)},
             {"orders", orders}}}};
 }
 

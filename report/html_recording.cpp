@@ -4,6 +4,7 @@
 
 #include "report/html_blocks.hpp"
 #include "report/html_text.hpp"
+#include "report/html_verdict.hpp"
 #include "report/setup_check_record.hpp"
 
 namespace fourbar {
@@ -36,7 +37,7 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
   h << "<section class=\"recording\" id=\"rec" << ri << "\"><h2>" << html_escape(name) << " <span class=\""
     << (!ok ? "failed\">failed" : r["status"] == "ok" ? "ok\">analysed" : "failed\">analysed: check set-up") << "</span>"
     << (r.value("from_cache", false) ? " <span class=\"note\">(from cache)</span>" : "") << "</h2>";
-  if (ok) h << setup_check_html(r.value("setup_check", json::object()), name);
+  if (ok) h << verdict_box(r) << setup_check_html(r.value("setup_check", json::object()), name);
   if (!ok) {
     h << "<p class=\"err\"><b>" << (r["error_kind"] == "input" ? "Bad input" : "Run failed") << ":</b> " << html_escape(r["error"])
       << "</p><h3>Input files</h3>";
@@ -91,8 +92,10 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
     h << "<div class=\"grid2\">";
     chart_box(h, "r" + std::to_string(ri) + "-orders", "Deviation from the nominal response per crank order", true, true);
     chart_box(h, "r" + std::to_string(ri) + "-factor", "Magnification factor a per order (thesis eq. 8.1.2)", true, true);
-    h << "</div><p class=\"note\">" << html_escape(r["metrics"].begin().value()["magnification"]["spectral_method"].get<std::string>())
-      << ". An order is significant when the measured amplitude is 3× above the floor between the order lines.</p>";
+    const json& mg = r["metrics"].begin().value()["magnification"];
+    h << "</div><p class=\"note\">" << html_escape(mg["spectral_method"].get<std::string>())
+      << ". An order is significant when the measured amplitude is 3× above the floor between the order lines. "
+      << html_escape(spectral_orders_note(mg)) << "</p>";
   }
   if (!at(r, {"spectra"}).empty()) chart_box(h, "r" + std::to_string(ri) + "-spectrum", "Spectrum of the measured angular acceleration", true, true);
   h << "<h3>Impact directions in the clearance model (thesis Figs 8.11/8.12)</h3><div>"

@@ -4,6 +4,7 @@
 
 #include "report/html_blocks.hpp"
 #include "report/html_text.hpp"
+#include "report/html_verdict.hpp"
 #include "report/setup_check_record.hpp"
 
 namespace fourbar {
@@ -14,6 +15,7 @@ void summary_section(std::ostringstream& h, const json& data) {
   const json& recs = data["recordings"];
   const int failed = data["recordings_failed"];
   h << "<section id=\"summary\"><h2>Summary</h2>";
+  verdict_summary_table(h, recs);
   for (const json& r : recs)
     if (is_analysed(r)) h << setup_check_html(r.value("setup_check", json::object()), r["name"]);
   h << "<p>" << recs.size() << " recordings, "

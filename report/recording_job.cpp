@@ -60,6 +60,12 @@ MeasuredResponse measured_response(const RecordingAnalysis& a) {
   m.grid.start_rad = a.crank_deg.empty() ? 0.0 : units::deg_to_rad(a.crank_deg[0]);
   m.grid.direction = a.crank_direction;
   m.crank_speed_rad_s = a.mean_crank_speed_rad_s;
+  const SpeedStats& sp = a.acquisition.speed;
+  m.speed_rel_std = sp.mean_rpm > 0 ? sp.std_rpm / sp.mean_rpm : 0.0;
+  // The mains frequency the analysis was given ([analysis] mains_hz); when it
+  // was given none, both 50 and 60 Hz, since every lab has one of them and an
+  // order wrongly left out costs less than hum counted as impact response.
+  m.mains_hz = a.filter.mains_hz > 0 ? std::vector<double>{a.filter.mains_hz} : std::vector<double>{50.0, 60.0};
   if (a.coupler) {
     m.series[index_of(LinkQuantity::alpha3)] = series_from(a.coupler->alpha_rad_s2, a.coupler->alpha_grid);
     m.series[index_of(LinkQuantity::omega3)] = series_from(a.coupler->omega_rad_s, a.coupler->omega_grid);
@@ -84,6 +90,7 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
                       {"revolutions_repaired", acq.revolutions_repaired},
                       {"revolutions_clipped", acq.revolutions_clipped},
                       {"revolutions_in_gaps", acq.revolutions_in_gaps},
+                      {"clipping_checked", acq.clipping_checked},
                       {"speed_rpm", {{"mean", acq.speed.mean_rpm}, {"std", acq.speed.std_rpm}, {"min", acq.speed.min_rpm}, {"max", acq.speed.max_rpm}}}};
   r["analysis"] = {{"points_per_rev", a.grid_points_per_rev},
                    {"filter", filter_json(a.filter)},

@@ -9,13 +9,16 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "acquire/manifest.hpp"
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
 #include "common/json_text.hpp"
+#include "common/progress.hpp"
 #include "common/version.hpp"
 #include "report/analysis_cache.hpp"
 #include "report/comparison_record.hpp"
@@ -25,6 +28,8 @@
 #include "report/series_files.hpp"
 #include "report/session_settings.hpp"
 #include "report/setup_check_record.hpp"
+#include "report/verdict.hpp"
+#include "report/verdict_table.hpp"
 
 namespace fourbar {
 
@@ -56,6 +61,24 @@ json input_files(const std::filesystem::path& rec, const std::filesystem::path& 
     // The manifest is broken: the recording fails with the reason.
   }
   return files;
+}
+
+/// The contact-parameter fit of this session, when `fourbar fit` wrote one:
+/// SESSION_DIR/fit/fit.json (its default), SESSION_DIR/fit.json or fit.json
+/// beside the report. A fit.json that cannot be read is named in a warning.
+std::optional<std::pair<json, std::string>> find_fit(const std::filesystem::path& session_dir,
+                                                      const std::filesystem::path& out_dir) {
+  for (const std::filesystem::path& p : {session_dir / "fit" / "fit.json", session_dir / "fit.json", out_dir / "fit.json"}) {
+    if (!std::filesystem::is_regular_file(p)) continue;
+    try {
+      std::ifstream in(p);
+      return std::make_pair(json::parse(in), std::filesystem::proximate(p, session_dir).string());
+    } catch (const std::exception& e) {
+      std::cerr << "fourbar: warning: report: " << p.string() << " is not a readable fit.json (" << e.what()
+                << "); the verdict leaves the fit out: run `fourbar fit` again\n";
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -90,7 +113,6 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   ensure_output_dir(out_dir);
   const std::filesystem::path cache_dir = o.cache_dir.empty() ? out_dir / ".fourbar-cache" : o.cache_dir;
   if (o.use_cache) ensure_output_dir(cache_dir);
-  const bool tty = o.progress && isatty(STDERR_FILENO);
 
   AnalyzeOptions analysis = settings.analysis;
   analysis.progress = false;  // one line per recording instead
@@ -125,6 +147,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   const std::size_t jobs = std::clamp<std::size_t>(o.jobs > 0 ? o.jobs : default_jobs(), 1, n);
   {
     std::atomic<std::size_t> next{0}, done{0};
+    Progress bar("report", n, o.progress);
     std::mutex io;
     std::exception_ptr failure;
     auto worker = [&] {
@@ -136,10 +159,10 @@ ReportOutcome run_session_report(const ReportOptions& o) {
           if (!failure) failure = std::current_exception();
           next = n;
         }
-        if (tty) {
+        {
           const std::lock_guard lock(io);
-          std::fprintf(stderr, "\rreport: [%zu/%zu] %s done\033[K", done.fetch_add(1) + 1, n,
-                       files.recordings[i].filename().string().c_str());
+          bar.set_label("report: " + std::to_string(done.fetch_add(1) + 1) + "/" + std::to_string(n) + " recordings");
+          bar.update(done.load());
         }
       }
     };
@@ -149,7 +172,12 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     pool.clear();  // joins
     if (failure) std::rethrow_exception(failure);
   }
-  if (tty) std::fprintf(stderr, "\r\033[K");
+
+  // The verdict in words of every analysed recording (never cached: a fit may come later).
+  const auto fit = find_fit(o.session_dir, out_dir);
+  for (json& r : computed)
+    if (is_analysed(r))
+      r["verdict"] = verdict_json(verdict_of(verdict_inputs(r, fit ? &fit->first : nullptr, fit ? fit->second : "")));
 
   ReportOutcome out;
   json records = json::array();
@@ -192,6 +220,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   write_text_file(out.summary, json_text(summary_of(session), 2) + "\n");
   write_text_file(o.out_html, render_html_report(session));
   out.html = o.out_html;
+  out.verdict_table = verdict_text_table(session["recordings"]);
   return out;
 }
 

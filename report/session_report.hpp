@@ -31,6 +31,7 @@ struct ReportOutcome {
   int recordings = 0, failed = 0, from_cache = 0;
   int check_setup = 0;  ///< analysed, but the set-up check found a likely manifest mistake (status "check set-up")
   std::filesystem::path html, summary;
+  std::string verdict_table;  ///< recordings, status, verdict words and a, aligned (report/verdict_table.hpp)
 };
 
 /// Recordings processed at once by default: every core.

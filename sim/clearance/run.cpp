@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/progress.hpp"
 #include "common/units.hpp"
 #include "sim/clearance/compliant_simulator.hpp"
 #include "sim/outputs.hpp"
@@ -67,15 +68,15 @@ const char* to_string(SteadyFound f) {
   return "?";
 }
 
-ClearanceRun run_clearance(const Scene& scene) {
-  return run_clearance(scene, ConstantSpeedCrank(scene.start_angle_rad, scene.crank_speed_rad_s));
+ClearanceRun run_clearance(const Scene& scene, bool progress) {
+  return run_clearance(scene, ConstantSpeedCrank(scene.start_angle_rad, scene.crank_speed_rad_s), progress);
 }
 
 namespace {
 
 /// The run on either simulator (ClearanceSimulator or CompliantSimulator: same interface).
 template <class Simulator>
-ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& sim) {
+ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& sim, bool progress) {
   using Criterion = ClearanceSettings::SteadyCriterion;
   const ClearanceSettings& cs = scene.clearance;
   ClearanceRun out;
@@ -95,8 +96,11 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& s
   out.statistics.worst_relative_difference = 1e300;
   if (cs.steady_state) {
     std::vector<TurnQuantities> turns;
+    Progress bar("sim: steady-state search (at most " + std::to_string(cs.max_revolutions) + " turns)",
+                 static_cast<std::uint64_t>(cs.max_revolutions), progress);
     for (int n = 1; n <= cs.max_revolutions; ++n) {
       sim.advance_to(turn_time(n));
+      bar.update(static_cast<std::uint64_t>(n));
       first = n;
       const auto& revs = sim.revolutions();
       if (static_cast<int>(revs.size()) <= n) continue;
@@ -169,14 +173,14 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& s
 
 }  // namespace
 
-ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank) {
+ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank, bool progress) {
   const ClearanceModel model(*scene.rig, scene.clearance_m());
   if (scene.clearance.model == ClearanceKind::compliant) {
     CompliantSimulator sim(model, crank, scene.clearance);
-    return run_with(scene, crank, sim);
+    return run_with(scene, crank, sim, progress);
   }
   ClearanceSimulator sim(model, crank, scene.clearance);
-  return run_with(scene, crank, sim);
+  return run_with(scene, crank, sim, progress);
 }
 
 }  // namespace fourbar

@@ -39,10 +39,12 @@ struct ClearanceRun {
   StationarityResult statistics;
 };
 
-ClearanceRun run_clearance(const Scene& scene);
+/// `progress`: a progress line on stderr (a terminal only) through the
+/// steady-state search, turn by turn; the results do not depend on it.
+ClearanceRun run_clearance(const Scene& scene, bool progress = false);
 /// The same at a given crank motion (e.g. a MeasuredSpeedCrank) instead of
 /// the scene's constant speed; turns count from the crank angle at t = 0.
-ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank);
+ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank, bool progress = false);
 
 /// Column value of one sample for a clearance output (see sim/outputs.hpp).
 double clearance_column_value(const ClearanceOutputSpec& spec, const ClearanceSample& s, double theta3_cont,

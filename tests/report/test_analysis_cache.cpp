@@ -122,6 +122,11 @@ TEST(AnalysisCache, DamagedOrFailedEntriesAreRecomputed) {
   EXPECT_TRUE(read_cached_record(dir.write("ok.json", R"({"status": "ok", "setup_check": {"findings": []}})")));
   EXPECT_TRUE(read_cached_record(
       dir.write("check.json", R"({"status": "check set-up", "setup_check": {"findings": [{"key": "axis_sign"}]}})")));
+  // Made before the spectral magnification named its orders: recomputed, so the verdict has them.
+  EXPECT_FALSE(read_cached_record(dir.write(
+      "no_orders.json", R"({"status": "ok", "setup_check": {}, "metrics": {"alpha3_rad_s2": {"magnification": {"spectral": 0.2}}}})")));
+  EXPECT_TRUE(read_cached_record(dir.write(
+      "orders.json", R"({"status": "ok", "setup_check": {}, "metrics": {"alpha3_rad_s2": {"magnification": {"orders_used": [6]}}}})")));
 }
 
 }  // namespace

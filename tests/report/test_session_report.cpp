@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <fstream>
 #include <regex>
+#include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -231,6 +233,55 @@ TEST_F(SessionReport, ClearanceRecordingShowsTheModelsImpactBursts) {
   EXPECT_LT(c["theory"]["energy_residual_rel"].get<double>(), 1e-5);
 }
 
+// The verdict on virtual-rig truth: the clearance-free recording (its
+// manifest still carries the rig's 0.254 mm) shows no clearance effect above
+// the noise floor while the model expects one; the clearance recording shows
+// one. Both set-ups match their manifests.
+TEST_F(SessionReport, VerdictTellsAClearanceFreeRecordingFromAClearanceOne) {
+  const json& n = recording("nominal.flac")["verdict"];
+  const json& c = recording("clearance.flac")["verdict"];
+  EXPECT_EQ(n["setup"]["level"], "good");
+  EXPECT_EQ(c["setup"]["level"], "good");
+  EXPECT_EQ(n["clearance_effect"]["level"], "problem") << n.dump(2);
+  EXPECT_NE(n["clearance_effect"]["sentence"].get<std::string>().find("No clearance effect measurable above the noise floor"),
+            std::string::npos);
+  EXPECT_EQ(n["model_agreement"]["level"], "not judged") << "a compares the model with noise";
+  EXPECT_EQ(c["clearance_effect"]["level"], "good") << c.dump(2);
+  EXPECT_EQ(c["clearance_effect"]["words"].get<std::string>().rfind("seen", 0), 0u);
+  EXPECT_NE(c["model_agreement"]["level"], "not judged");
+  // The spectral factor names its orders, none in the nominal band.
+  const json& mg = recording("clearance.flac")["metrics"]["alpha3_rad_s2"]["magnification"];
+  EXPECT_GT(mg["nominal_band_orders"].get<int>(), 0);
+  for (const json& k : mg["orders_used"]) EXPECT_GT(k.get<int>(), mg["nominal_band_orders"].get<int>());
+  // In the page: the verdict table first in the summary, a box first in each recording.
+  const std::string html = testing::read_file(dir_->path() / "out" / "report.html");
+  const auto table = html.find("<table class=\"verdict\">");
+  ASSERT_NE(table, std::string::npos);
+  EXPECT_LT(html.find("<section id=\"summary\">"), table);
+  EXPECT_LT(table, html.find("<table><tr><th class=\"l\">recording</th>"));
+  EXPECT_NE(html.find("<div class=\"verdict\"><b>Verdict:"), std::string::npos);
+}
+
+// stdout ends with the verdict table, one row per recording, columns aligned;
+// stderr (a pipe here) holds no progress line.
+TEST_F(SessionReport, TerminalTableAndNoProgressWhenPiped) {
+  const std::string& out = run_->out;
+  const auto head = out.find("recording ");
+  ASSERT_NE(head, std::string::npos) << out;
+  std::istringstream lines(out.substr(head));
+  std::vector<std::string> l;
+  for (std::string s; std::getline(lines, s);) l.push_back(s);
+  ASSERT_EQ(l.size(), 1u + (*summary_)["recordings"].size()) << out;
+  const auto status_col = l[0].find("status");
+  for (std::size_t i = 1; i < l.size(); ++i) {
+    const json& r = (*summary_)["recordings"][i - 1];
+    EXPECT_EQ(l[i].rfind(r["name"].get<std::string>(), 0), 0u) << l[i];
+    EXPECT_EQ(l[i].find(r["status"].get<std::string>()), status_col) << l[i];  // names are ASCII: bytes = characters
+  }
+  EXPECT_EQ(run_->err.find('\r'), std::string::npos) << run_->err;
+  EXPECT_EQ(run_->err.find("elapsed"), std::string::npos) << run_->err;
+}
+
 TEST_F(SessionReport, SeriesFilesBesideTheReport) {
   // The CSV series hold the very numbers summary.json's metrics were computed
   // from: recomputed here from the files (a second path), they agree.
@@ -394,6 +445,11 @@ TEST_F(SessionReport, SetupMistakeIsFlaggedAndStrictExits2) {
   ASSERT_FALSE(r["setup_check"]["findings"].empty());
   EXPECT_EQ(r["setup_check"]["findings"][0]["key"], "[[channel]] name=\"coupler_t\" axis_sign");
   EXPECT_TRUE(r.contains("metrics"));  // analysed and compared all the same
+  EXPECT_EQ(r["verdict"]["setup"]["level"], "problem");
+  EXPECT_EQ(r["verdict"]["overall"], "problem");
+  EXPECT_NE(r["verdict"]["setup"]["sentence"].get<std::string>().find("change [[channel]] name=\"coupler_t\" axis_sign"),
+            std::string::npos)
+      << r["verdict"]["setup"]["sentence"];
   const std::string html = testing::read_file(d / "bad_out" / "report.html");
   const auto box = html.find("Check set-up: nominal.flac");
   ASSERT_NE(box, std::string::npos);

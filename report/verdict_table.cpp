@@ -1,0 +1,49 @@
+#include "report/verdict_table.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "common/format.hpp"
+
+namespace fourbar {
+
+using nlohmann::json;
+
+std::size_t display_width(const std::string& s) {
+  return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+std::string verdict_text_table(const json& records) {
+  std::vector<std::vector<std::string>> rows = {
+      {"recording", "status", "set-up", "measurement", "clearance effect", "model agreement", "a"}};
+  for (const json& r : records) {
+    std::vector<std::string> row = {r.value("name", ""), r.value("status", "")};
+    if (!r.contains("verdict")) {
+      row.insert(row.end(), {"–", "–", "–", "–", "–"});
+    } else {
+      const json& v = r["verdict"];
+      for (const char* p : {"setup", "measurement", "clearance_effect", "model_agreement"})
+        row.push_back(v[p]["level"].get<std::string>() + ": " + v[p]["words"].get<std::string>());
+      // a as the verdict judged it: spectral, time or scatter.
+      std::string a = "–";
+      if (v.value("a", json()).is_number()) a = format_number(v["a"].get<double>(), 3) + " (" + v.value("a_from", "") + ")";
+      row.push_back(a);
+    }
+    rows.push_back(std::move(row));
+  }
+  std::vector<std::size_t> width(rows[0].size(), 0);
+  for (const auto& row : rows)
+    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], display_width(row[c]));
+  std::string out;
+  for (const auto& row : rows) {
+    std::string line;
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      line += row[c];
+      if (c + 1 < row.size()) line += std::string(width[c] - display_width(row[c]) + 2, ' ');
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+}  // namespace fourbar
