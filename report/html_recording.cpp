@@ -5,6 +5,7 @@
 #include "report/html_blocks.hpp"
 #include "report/html_text.hpp"
 #include "report/html_verdict.hpp"
+#include "report/quantity_names.hpp"
 #include "report/setup_check_record.hpp"
 
 namespace fourbar {
@@ -34,7 +35,7 @@ std::string one_pulse_note(const json& u, const json& speed_rpm) {
 void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
   const std::string name = r["name"];
   const bool ok = is_analysed(r);
-  h << "<section class=\"recording\" id=\"rec" << ri << "\"><h2>" << html_escape(name) << " <span class=\""
+  h << "<section class=\"recording\" id=\"rec" << ri << "\"><h2><span class=\"swatch\" data-rec=\"" << ri << "\"></span>" << html_escape(name) << " <span class=\""
     << (!ok ? "failed\">failed" : r["status"] == "ok" ? "ok\">analysed" : "failed\">analysed: check set-up") << "</span>"
     << (r.value("from_cache", false) ? " <span class=\"note\">(from cache)</span>" : "") << "</h2>";
   if (ok) h << verdict_box(r) << setup_check_html(r.value("setup_check", json::object()), name);
@@ -73,7 +74,7 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
       for (const json& v : a) s += (s.empty() ? "" : ", ") + fmt(v, "%.1f");
       return s;
     };
-    h << "<tr><td class=\"l\">" << html_escape(q) << "</td><td>" << fmt(m["measured_rms"]) << "</td><td>" << fmt(m["simulated_rms"])
+    h << "<tr><td class=\"l\">" << html_escape(quantity_label(q)) << "</td><td>" << fmt(m["measured_rms"]) << "</td><td>" << fmt(m["simulated_rms"])
       << "</td><td>" << fmt(m["nominal_rms"]) << "</td><td>" << fmt(m["rms_difference_simulated"]) << "</td><td>"
       << fmt(m["correlation_simulated"], "%.3f") << "</td><td>" << fmt(m["correlation_nominal"], "%.3f") << "</td><td>"
       << fmt(m["peak_ratio_simulated"], "%.3f") << "</td><td>" << fmt(m["magnification"]["time_domain"], "%.3g") << "</td><td>"
@@ -85,7 +86,8 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
   h << "<div class=\"grid2\">";
   for (const auto& [q, s] : r["series"].items()) {
     if (!s.contains("measured")) continue;
-    chart_box(h, "r" + std::to_string(ri) + "-" + q, html_escape(q) + ": measured vs clearance model vs nominal", false, true);
+    chart_box(h, "r" + std::to_string(ri) + "-" + q, html_escape(quantity_label(q)) + ": measured, clearance model, nominal",
+              false, true);
   }
   h << "</div>";
   if (!r["metrics"].empty()) {

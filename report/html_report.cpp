@@ -8,6 +8,7 @@
 #include "report/html_recording.hpp"
 #include "report/html_summary.hpp"
 #include "report/html_text.hpp"
+#include "report/quantity_names.hpp"
 
 namespace fourbar {
 
@@ -26,7 +27,7 @@ using nlohmann::json;
 std::string report_script() {
   std::string s = "(function(){\n'use strict';\n";
   for (const char* part : {report_core_js, report_recording_charts_js, report_session_charts_js}) s += part;
-  s += "if (expected === 0) document.body.setAttribute('data-charts-drawn', 0);\n})();\n";
+  s += "scriptsDone = true; allDrawn();\n})();\n";  // charts drawn once all scripts ran (none: 0)
   return s;
 }
 
@@ -37,6 +38,7 @@ std::string render_html_report(const json& session_in) {
   const std::string css = without_source_maps(read_text(dygraphs_dir() / "dygraph.min.css"));
   json data = session_in;
   round_numbers(data);
+  data["names"] = quantity_names_json();  // the scripts label charts from the same table as the tables
   const json& recs = data["recordings"];
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"

@@ -18,7 +18,7 @@ void summary_section(std::ostringstream& h, const json& data) {
   verdict_summary_table(h, recs);
   for (const json& r : recs)
     if (is_analysed(r)) h << setup_check_html(r.value("setup_check", json::object()), r["name"]);
-  h << "<p>" << recs.size() << " recordings, "
+  h << "<p>" << recs.size() << (recs.size() == 1 ? " recording, " : " recordings, ")
     << (failed ? "<span class=\"failed\">" + std::to_string(failed) + " failed</span>" : std::string("all analysed"))
     << ". Theory: clearance model and nominal mechanism at each recording's measured mean crank speed and clearance. "
        "a = RMS(model − nominal) / RMS(measured − nominal) on α3 (thesis sec. 8.1): how many times more violent the model is "
@@ -27,7 +27,8 @@ void summary_section(std::ostringstream& h, const json& data) {
        "<th>n per turn</th><th>ΣF per turn (N·s)</th><th>I_n (N·s)</th></tr>";
   for (std::size_t i = 0; i < recs.size(); ++i) {
     const json& r = recs[i];
-    h << "<tr><td class=\"l\"><a href=\"#rec" << i << "\">" << html_escape(r["name"]) << "</a></td>";
+    h << "<tr><td class=\"l\"><span class=\"swatch\" data-rec=\"" << i << "\"></span><a href=\"#rec" << i << "\">"
+      << html_escape(r["name"]) << "</a></td>";
     if (!is_analysed(r)) {
       h << "<td class=\"l failed\" colspan=\"10\">failed: " << html_escape(r["error"]) << "</td></tr>";
       continue;
@@ -62,7 +63,9 @@ void summary_section(std::ostringstream& h, const json& data) {
 void severity_section(std::ostringstream& h, const json& /*data*/) {
   h << "<section id=\"session\"><h2>Severity against clearance and crank speed</h2><p class=\"note\">Measured: RMS of the "
        "averaged α3 about the nominal response (thesis Figs 7.9–7.17). Clearance model: the same, and the impacts per turn n, "
-       "the sum of normal impulses per turn ΣF and I_n = ΣF/n (thesis Figs 7.10/7.11).</p><div class=\"grid2\">";
+       "the sum of normal impulses per turn ΣF and I_n = ΣF/n (thesis Figs 7.10/7.11). Line colour: measured or model; "
+       "line style: the crank speed or clearance of the line; point colour: the recording (as in the summary table).</p>"
+       "<div id=\"sev-table\"></div><div class=\"grid2\" id=\"sev-charts\">";
   chart_box(h, "sev-clearance", "Fluctuation against clearance", true, true);
   chart_box(h, "sev-clearance-sim", "Simulated impacts against clearance", true, true);
   chart_box(h, "sev-speed", "Fluctuation against crank speed", true, true);

@@ -24,6 +24,7 @@ packages=(
   libssl-dev              # SHA-256 (libcrypto) for the report's checksums and cache keys
   libjs-dygraphs          # charting library inlined into the HTML report
   chromium                # headless browser test of the HTML report
+  poppler-utils           # pdftoppm: the printed report's pages as images (browser print test)
   clang libclang-rt-14-dev      # scripts/fuzz.sh: libFuzzer, ASan and UBSan runtimes (Debian 12's clang 14)
 )
 

@@ -11,6 +11,7 @@
 #include "compare/recording_comparison.hpp"
 #include "report/comparison_record.hpp"
 #include "report/html_report.hpp"
+#include "report/quantity_names.hpp"
 #include "support/headless_browser.hpp"
 
 namespace fourbar {
@@ -65,6 +66,25 @@ TEST(HtmlReport, SelfContainedAndEscaped) {
   EXPECT_NE(html.find("not a recording &lt;/script&gt;&lt;b&gt;"), std::string::npos);
   EXPECT_NE(html.find("Dygraph"), std::string::npos);   // the library is inlined
   EXPECT_NE(html.find("@media print"), std::string::npos);
+  // Tables and charts name the quantities as a person reads them, from one table.
+  EXPECT_NE(html.find("<td class=\"l\">coupler angular acceleration α3 (rad/s²)</td>"), std::string::npos);
+  EXPECT_NE(html.find("<h3>rocker angular velocity ω4 (rad/s): measured, clearance model, nominal</h3>"), std::string::npos);
+  EXPECT_EQ(html.find(">alpha3_rad_s2"), std::string::npos);
+  EXPECT_NE(html.find("\"names\":{"), std::string::npos);  // the same table for the scripts
+}
+
+TEST(HtmlReport, QuantityNames) {
+  EXPECT_EQ(quantity_label("alpha3_rad_s2"), "coupler angular acceleration α3 (rad/s²)");
+  EXPECT_EQ(quantity_axis_label("omega4_rad_s"), "ω4 (rad/s)");
+  EXPECT_EQ(quantity_label("impacts_per_rev"), "impacts per turn n");  // a count: no unit
+  EXPECT_EQ(quantity_label("speed_rpm"), "crank speed (rpm)");
+  EXPECT_EQ(quantity_label("something_new"), "something_new");         // unknown: shown as it is
+  const nlohmann::json j = quantity_names_json();
+  EXPECT_EQ(j["alpha4_rad_s2"]["label"], "rocker angular acceleration α4 (rad/s²)");
+  EXPECT_EQ(j["alpha4_rad_s2"]["axis"], "α4 (rad/s²)");
+  // Every quantity of a comparison record has a name.
+  for (const char* k : {"alpha3_rad_s2", "omega3_rad_s", "alpha4_rad_s2", "omega4_rad_s"})
+    EXPECT_NE(find_quantity_name(k), nullptr) << k;
 }
 
 TEST(HtmlReport, DrawsEveryChartInHeadlessChromium) {
@@ -81,8 +101,10 @@ TEST(HtmlReport, DrawsEveryChartInHeadlessChromium) {
   EXPECT_EQ(m[1], "0") << dom.substr(dom.find("js-errors"), 600);
   ASSERT_TRUE(std::regex_search(dom, m, std::regex(R"re(<body[^>]*data-charts-drawn="(\d+)")re"))) << "charts never finished";
   const int drawn = std::stoi(m[1]);
-  // 2 recordings × (4 overlays + orders + factor + spectrum) + 4 session charts.
-  EXPECT_EQ(drawn, 2 * 7 + 4);
+  // 2 recordings × (4 overlays + orders + factor + spectrum) + the 2 session
+  // charts against crank speed (one clearance: none against clearance).
+  EXPECT_EQ(drawn, 2 * 7 + 2);
+  EXPECT_NE(dom.find("One clearance in this session"), std::string::npos);
   std::size_t charts = 0, with_data = 0;
   const std::regex chart_div(R"re(<div class="chart[^"]*" id="([^"]+)"([^>]*)>)re");
   for (auto it = std::sregex_iterator(dom.begin(), dom.end(), chart_div); it != std::sregex_iterator(); ++it) {
@@ -96,6 +118,10 @@ TEST(HtmlReport, DrawsEveryChartInHeadlessChromium) {
   EXPECT_EQ(with_data, charts);
   EXPECT_EQ(run.err.find("Uncaught"), std::string::npos) << run.err;
   EXPECT_NE(dom.find("<canvas"), std::string::npos);
+  // Axis titles from the name table; ω drawn as the deviation from nominal.
+  EXPECT_NE(dom.find(">α3 (rad/s²)</div>"), std::string::npos);
+  EXPECT_NE(dom.find(">ω3 − nominal (rad/s)</div>"), std::string::npos);
+  EXPECT_NE(dom.find(">crank angle θ2 (deg)</div>"), std::string::npos);
   EXPECT_NE(dom.find("class=\"dot\""), std::string::npos);  // the polar impact plots have points
 
   // A screenshot to look at (kept in the test's working folder).

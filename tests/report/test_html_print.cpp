@@ -1,0 +1,242 @@
+// The report of a real session, in a real browser and on paper: `fourbar
+// report` over the sample session (data/session) and over a session of one
+// recording; the page opened in Debian's headless Chromium (no script error,
+// every chart drew data, a table instead of charts where the session has one
+// operating point) and printed to PDF on A4 and on Letter, each page checked
+// as an image (poppler-utils' pdftoppm): no chart or table wider than the
+// page.
+//
+// How "wider than the page" shows on paper: Chromium cuts what overflows at
+// the page margin, so nothing ever lands in the margin itself. The report's
+// print style keeps the last 4 mm before the right margin empty; anything
+// laid out wider than the page runs through that strip up to the margin.
+// The test prints with 12 mm margins and finds no ink in [−2.5, −0.5] mm
+// before the right margin on any page.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "common/atomic_output.hpp"
+#include "support/headless_browser.hpp"
+#include "support/printed_pages.hpp"
+#include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
+
+namespace fourbar {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSample = FOURBAR_SOURCE_DIR "/data/session";
+
+/// A session folder with one recording of the sample session (the rig named
+/// by its absolute path), and the sample's session.toml.
+fs::path one_recording_session(const fs::path& dir) {
+  const fs::path session = dir / "one";
+  fs::create_directories(session);
+  const std::string stem = "thesis_250rpm_0254mm";
+  fs::copy_file(kSample / (stem + ".flac"), session / (stem + ".flac"));
+  fs::copy_file(kSample / "session.toml", session / "session.toml");
+  std::string manifest = testing::read_file(kSample / (stem + ".toml"));
+  const auto rig = manifest.find("rig = ");
+  if (rig == std::string::npos) return {};
+  manifest.replace(rig, manifest.find('\n', rig) - rig, "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"");
+  write_text_file(session / (stem + ".toml"), manifest);
+  return session;
+}
+
+/// `fourbar report SESSION --out DIR/report.html`; the page's path.
+fs::path report(const fs::path& session, const fs::path& out_dir) {
+  const fs::path page = out_dir / "report.html";
+  const auto r = testing::run_fourbar("report " + session.string() + " --out " + page.string() + " -q --no-cache");
+  EXPECT_EQ(r.status, 0) << r.err;
+  return page;
+}
+
+/// Every chart's tick labels: numbers in their shortest form ("4e−3", not a
+/// "4.00e-3" that an axis cuts to "4.00e-"), at most 7 characters, none
+/// repeated on one axis.
+void check_tick_labels(const std::string& dom) {
+  std::vector<std::size_t> starts;
+  const std::regex chart_div(R"re(<div class="chart[ "])re");  // not chart-box
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), chart_div); it != std::sregex_iterator(); ++it)
+    starts.push_back(static_cast<std::size_t>(it->position()));
+  starts.push_back(dom.size());
+  const std::regex label(R"re(<div class="dygraph-axis-label dygraph-axis-label-(x|y|y2)"[^>]*>([^<]*)</div>)re");
+  const std::regex number("^(−|-)?[0-9]+(\\.[0-9]*[1-9])?(e(−|-)?[0-9]+)?$");  // no trailing zeros: "4e-3", not "4.00e-3"
+  std::size_t labels = 0;
+  for (std::size_t c = 0; c + 1 < starts.size(); ++c) {
+    const std::string part = dom.substr(starts[c], starts[c + 1] - starts[c]);
+    std::map<std::string, std::set<std::string>> axes;
+    for (auto it = std::sregex_iterator(part.begin(), part.end(), label); it != std::sregex_iterator(); ++it) {
+      const std::string axis = (*it)[1], text = (*it)[2];
+      if (text.empty()) continue;  // a minor tick of a log axis
+      ++labels;
+      EXPECT_TRUE(std::regex_match(text, number)) << "tick label '" << text << "' in " << part.substr(0, 80);
+      EXPECT_LE(text.size(), 7u + 2u) << text;  // "−" is 3 bytes in UTF-8
+      EXPECT_TRUE(axes[axis].insert(text).second) << "tick label '" << text << "' twice on axis " << axis << " of "
+                                                  << part.substr(0, 80);
+    }
+  }
+  EXPECT_GE(labels, 4u * (starts.size() - 1)) << "charts without tick labels";
+}
+
+/// The DOM after the scripts ran: no script error, every chart drew data.
+/// Returns the DOM ("" after a failure) and the number of charts.
+std::pair<std::string, int> drawn_dom(const fs::path& chromium, const fs::path& page) {
+  const testing::BrowserRun run = testing::run_chromium(chromium, page, "--dump-dom");
+  EXPECT_EQ(run.status, 0) << run.err;
+  const std::string& dom = run.out;
+  std::smatch m;
+  if (!std::regex_search(dom, m, std::regex(R"re(<body[^>]*data-js-errors="(\d+)")re"))) {
+    ADD_FAILURE() << "no data-js-errors on <body>: " << dom.substr(0, 2000);
+    return {"", 0};
+  }
+  EXPECT_EQ(m[1], "0") << dom.substr(dom.find("id=\"js-errors\""), 800);
+  if (!std::regex_search(dom, m, std::regex(R"re(<body[^>]*data-charts-drawn="(\d+)")re"))) {
+    ADD_FAILURE() << "charts never finished drawing";
+    return {"", 0};
+  }
+  const int drawn = std::stoi(m[1]);
+  int charts = 0;
+  const std::regex chart_div(R"re(<div class="chart[ "][^>]*>)re");
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), chart_div); it != std::sregex_iterator(); ++it) {
+    ++charts;
+    const std::string tag = it->str();
+    std::smatch d;
+    if (!std::regex_search(tag, d, std::regex(R"re(data-drawn="(\d+)")re")) || std::stoi(d[1]) == 0)
+      ADD_FAILURE() << "chart drew no data: " << tag;
+  }
+  EXPECT_EQ(drawn, charts);
+  EXPECT_EQ(run.err.find("Uncaught"), std::string::npos) << run.err;
+  check_tick_labels(dom);
+  return {dom, charts};
+}
+
+struct Paper {
+  const char* name;
+  double width_mm, height_mm;
+};
+constexpr Paper kA4{"A4", 210.0, 297.0}, kLetter{"Letter", 215.9, 279.4};
+constexpr double kMarginMm = 12.0;
+constexpr int kDpi = 72;
+
+int px(double mm) { return static_cast<int>(mm / 25.4 * kDpi + 0.5); }
+
+/// Prints `page` on `paper` (as chosen in a print dialog: paper size and
+/// margins) and checks every page: the paper's size, some ink, none in the
+/// strip before the right margin. At least `min_pages` pages.
+void check_printed(const fs::path& chromium, const fs::path& pdftoppm, const fs::path& page, const Paper& paper,
+                   std::size_t min_pages) {
+  SCOPED_TRACE(paper.name);
+  const fs::path dir = page.parent_path() / paper.name;
+  fs::create_directories(dir);
+  std::string html = testing::read_file(page);
+  const auto head = html.find("</head>");
+  ASSERT_NE(head, std::string::npos);
+  char style[96];
+  std::snprintf(style, sizeof style, "<style>@page{size:%s;margin:%gmm}</style>", paper.name, kMarginMm);
+  html.insert(head, style);
+  const fs::path printed = dir / "report.html", pdf = dir / "report.pdf";
+  write_text_file(printed, html);
+  const testing::BrowserRun run = testing::run_chromium(chromium, printed, "--no-pdf-header-footer --print-to-pdf=" + pdf.string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  ASSERT_TRUE(fs::exists(pdf)) << run.err;
+  const std::vector<testing::GreyPage> pages = testing::rasterise_pdf(pdftoppm, pdf, kDpi, dir / "pages");
+  ASSERT_GE(pages.size(), min_pages) << pdf;
+  const int right = px(paper.width_mm - kMarginMm), x0 = right - px(2.5), x1 = right - px(0.5);
+  const int top = px(kMarginMm), bottom = px(paper.height_mm - kMarginMm);
+  for (std::size_t i = 0; i < pages.size(); ++i) {
+    const testing::GreyPage& g = pages[i];
+    SCOPED_TRACE("page " + std::to_string(i + 1) + " of " + pdf.string());
+    ASSERT_FALSE(g.grey.empty());
+    EXPECT_NEAR(g.width, px(paper.width_mm), 1);
+    EXPECT_NEAR(g.height, px(paper.height_mm), 1);
+    EXPECT_GT(testing::ink(g, 0, g.width, 0, g.height), 100u) << "a blank page";
+    std::size_t rows_with_ink = 0;
+    int first = -1;
+    for (int y = top; y < bottom; ++y)
+      if (testing::ink(g, x0, x1, y, y + 1) > 0) rows_with_ink += 1, first = first < 0 ? y : first;
+    EXPECT_EQ(rows_with_ink, 0u) << "something is wider than the page: ink right before the right margin in "
+                                 << rows_with_ink << " rows from " << first * 25.4 / kDpi << " mm down";
+  }
+}
+
+struct Tools {
+  fs::path chromium, pdftoppm;
+};
+
+std::optional<Tools> tools() {
+  const auto chromium = testing::chromium_binary();
+  const auto pdftoppm = testing::pdftoppm_binary();
+  if (!chromium || !pdftoppm) return std::nullopt;
+  return Tools{*chromium, *pdftoppm};
+}
+
+constexpr const char* kMissing =
+    "chromium or pdftoppm is not installed (Debian packages chromium and poppler-utils; scripts/install-deps.sh "
+    "installs them)";
+
+TEST(HtmlPrint, SampleSessionDrawsAndPrintsOnA4AndLetterInHeadlessChromium) {
+  const auto t = tools();
+  if (!t) GTEST_SKIP() << kMissing;
+  testing::TempDir dir;
+  const fs::path page = report(kSample, dir.path());
+  const auto [dom, charts] = drawn_dom(t->chromium, page);
+  // 4 recordings × (α3, ω3, α4, ω4, orders, factor, spectrum) + 4 session charts at least.
+  EXPECT_GE(charts, 4 * 7 + 4);
+  for (const char* id : {"sev-clearance", "sev-clearance-sim", "sev-speed", "sev-speed-sim", "r0-omega3_rad_s", "r3-orders"})
+    EXPECT_NE(dom.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
+  EXPECT_EQ(dom.find("class=\"chart-table\""), std::string::npos);  // two speeds and two clearances: charts
+  check_printed(t->chromium, t->pdftoppm, page, kA4, 1 + 4);
+  check_printed(t->chromium, t->pdftoppm, page, kLetter, 1 + 4);
+}
+
+TEST(HtmlPrint, OneRecordingSessionDrawsAndPrintsOnA4AndLetterInHeadlessChromium) {
+  const auto t = tools();
+  if (!t) GTEST_SKIP() << kMissing;
+  testing::TempDir dir;
+  const fs::path session = one_recording_session(dir.path());
+  ASSERT_FALSE(session.empty());
+  const fs::path page = report(session, dir.path() / "out");
+  const auto [dom, charts] = drawn_dom(t->chromium, page);
+  EXPECT_GE(charts, 7);
+  // One speed and one clearance: no dots on empty axes, one table of the operating point.
+  for (const char* id : {"sev-clearance", "sev-clearance-sim", "sev-speed", "sev-speed-sim"})
+    EXPECT_EQ(dom.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
+  EXPECT_NE(dom.find("class=\"chart-table\""), std::string::npos);
+  EXPECT_NE(dom.find("One operating point in this session"), std::string::npos);
+  check_printed(t->chromium, t->pdftoppm, page, kA4, 2);
+  check_printed(t->chromium, t->pdftoppm, page, kLetter, 2);
+}
+
+TEST(HtmlPrint, VerdictShownInHeadlessChromium) {
+  const auto chromium = testing::chromium_binary();
+  if (!chromium) GTEST_SKIP() << kMissing;
+  testing::TempDir dir;
+  const fs::path page = report(kSample, dir.path());
+  const std::string html = testing::read_file(page);
+  // The verdict is an element of class "verdict" (or carrying data-verdict).
+  const std::regex verdict(R"re(class="([^"]* )?verdict[ "]|data-verdict=)re");
+  if (!std::regex_search(html, verdict))
+    GTEST_SKIP() << "the report has no element of class \"verdict\" (nor a data-verdict attribute) yet; "
+                    "this test checks it once the verdict is part of the report";
+  const auto [dom, charts] = drawn_dom(*chromium, page);
+  std::size_t n = 0;
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), verdict); it != std::sregex_iterator(); ++it) ++n;
+  EXPECT_GE(n, 4u) << "one verdict per recording of the sample session";
+  std::smatch m;
+  const std::regex empty_value(R"re(data-verdict="")re");
+  EXPECT_FALSE(std::regex_search(dom, m, empty_value)) << "a verdict without a value";
+  (void)charts;
+}
+
+}  // namespace
+}  // namespace fourbar
