@@ -15,8 +15,8 @@ std::optional<json> read_cached_record(const std::filesystem::path& file) {
   try {
     json j = json::parse(in);
     // An analysed record ("ok" or "check set-up") that holds the set-up check
-    // (older cache entries without it are recomputed).
-    if (j.is_object() && is_analysed(j) && j.contains("setup_check")) return j;
+    // and the views (older cache entries without them are recomputed).
+    if (j.is_object() && is_analysed(j) && j.contains("setup_check") && j.contains("views")) return j;
   } catch (const std::exception&) {
     // A damaged cache entry is recomputed.
   }

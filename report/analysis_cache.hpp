@@ -12,7 +12,7 @@
 namespace fourbar {
 
 /// The record cached in `file`; nullopt when there is none, it is damaged
-/// (it is then recomputed), or it is not an analysed record with its set-up check.
+/// (it is then recomputed), or it is not an analysed record with its set-up check and views.
 std::optional<nlohmann::json> read_cached_record(const std::filesystem::path& file);
 
 /// Writes `record` to `file` (atomically) when it reads back equal: JSON has
