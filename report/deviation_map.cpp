@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include <openssl/evp.h>
+#include "report/packed_numbers.hpp"
 
 namespace fourbar {
 
@@ -49,18 +49,8 @@ json DeviationMapCollector::map_json(const std::vector<double>& nominal, double 
   std::vector<double> nominal_cols;
   column_means(nominal, columns_, nominal_cols);
   std::vector<double> dev(rows_.size());
-  double largest = 0;
-  for (std::size_t i = 0; i < rows_.size(); ++i) {
-    dev[i] = rows_[i] - nominal_cols[i % columns_];
-    largest = std::max(largest, std::abs(dev[i]));
-  }
-  std::string bytes(dev.size(), '\0');
-  for (std::size_t i = 0; i < dev.size(); ++i)
-    bytes[i] = static_cast<char>(static_cast<signed char>(largest > 0 ? std::lround(127.0 * dev[i] / largest) : 0));
-  std::string b64(4 * ((bytes.size() + 2) / 3) + 1, '\0');
-  const int n = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(b64.data()),
-                                reinterpret_cast<const unsigned char*>(bytes.data()), static_cast<int>(bytes.size()));
-  b64.resize(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < rows_.size(); ++i) dev[i] = rows_[i] - nominal_cols[i % columns_];
+  const PackedCounts packed = quantise(dev, 127);
   const std::size_t m = points_ / columns_;
   json centres = json::array();
   for (std::size_t c = 0; c < columns_; ++c) {
@@ -74,12 +64,13 @@ json DeviationMapCollector::map_json(const std::vector<double>& nominal, double 
           {"columns", columns_},
           {"revolution", numbers_},
           {"crank_deg", centres},
+          {"first_crank_deg", std::fmod(std::fmod(first_deg, 360.0) + 360.0, 360.0)},
           {"crank_direction", direction},
           {"grid_points_per_column", m},
           {"every_kth_revolution", every_},
-          {"largest_abs_rad_s2", largest},
-          {"rad_s2_per_count", largest / 127.0},
-          {"deviation_int8_base64", b64},
+          {"largest_abs_rad_s2", 127.0 * packed.step},
+          {"rad_s2_per_count", packed.step},
+          {"deviation_int8_base64", pack_base64(packed.counts, 1)},
           {"rule", std::string("rows: ") +
                        (every_ == 1 ? "every averaged revolution"
                                     : "the averaged revolutions numbered a multiple of " + std::to_string(every_)) +
@@ -89,17 +80,8 @@ json DeviationMapCollector::map_json(const std::vector<double>& nominal, double 
 }
 
 std::vector<int> decode_map_counts(const std::string& b64) {
-  std::string bytes(3 * (b64.size() / 4) + 3, '\0');
-  const int n = EVP_DecodeBlock(reinterpret_cast<unsigned char*>(bytes.data()),
-                                reinterpret_cast<const unsigned char*>(b64.data()), static_cast<int>(b64.size()));
-  if (n < 0) return {};
-  std::size_t len = static_cast<std::size_t>(n);
-  // EVP_DecodeBlock counts the padding's zero bytes.
-  if (!b64.empty() && b64.back() == '=') --len;
-  if (b64.size() > 1 && b64[b64.size() - 2] == '=') --len;
-  std::vector<int> out(len);
-  for (std::size_t i = 0; i < len; ++i) out[i] = static_cast<signed char>(bytes[i]);
-  return out;
+  const std::vector<std::int32_t> c = unpack_base64(b64, 1);
+  return {c.begin(), c.end()};
 }
 
 }  // namespace fourbar

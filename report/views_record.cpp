@@ -6,6 +6,7 @@
 
 #include "acquire/channel_inputs.hpp"
 #include "common/units.hpp"
+#include "report/packed_numbers.hpp"
 
 namespace fourbar {
 
@@ -102,14 +103,22 @@ json excerpt_json(const AcquisitionReport& acq) {
   if (!acq.excerpt || acq.excerpt->frames == 0) return nullptr;
   const SignalExcerpt& x = *acq.excerpt;
   json traces = json::array();
-  for (const ExcerptTrace& t : x.traces)
-    traces.push_back({{"name", t.name}, {"role", t.role}, {"unit", t.unit}, {"values", t.values}});
+  for (const ExcerptTrace& t : x.traces) {
+    const PackedCounts p = quantise(t.values, 32767);
+    traces.push_back({{"name", t.name}, {"role", t.role}, {"unit", t.unit}, {"unit_per_count", p.step},
+                      {"values_int16_base64", pack_base64(p.counts, 2)}});
+  }
+  // The points lie on a uniform time grid (two per bucket, or every frame).
+  const double fs = acq.recording.sample_rate_hz;
+  const double step_s = x.bucket_frames == 1 ? 1.0 / fs : 0.5 * static_cast<double>(x.bucket_frames) / fs;
   const PulseThresholds& th = acq.thresholds;
   return {{"start_s", x.start_s},
           {"end_s", x.end_s},
           {"frames", x.frames},
           {"bucket_frames", x.bucket_frames},
-          {"time_s", x.time_s},
+          {"points", x.time_s.size()},
+          {"time_first_s", x.time_s.empty() ? 0.0 : x.time_s.front()},
+          {"time_step_s", step_s},
           {"traces", traces},
           {"pulse_channel", acq.pulse_channel},
           {"pulse_s", x.pulse_s},

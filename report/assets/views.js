@@ -22,8 +22,19 @@
       lines(x.pulse_s.filter(function(t, i){ return x.pulse_inserted[i]; }), '#000', [6, 4]);
     };
   }
+  // Counts packed little-endian in base64 (report/packed_numbers.hpp) × their step.
+  function unpack(b64, bytes, step){
+    var bin = atob(b64), n = Math.floor(bin.length / bytes), out = new Array(n);
+    for (var i = 0; i < n; i++){
+      var u = 0; for (var b = 0; b < bytes; b++) u |= bin.charCodeAt(i * bytes + b) << (8 * b);
+      var shift = 32 - 8 * bytes; out[i] = (u << shift >> shift) * step;
+    }
+    return out;
+  }
   function excerptCharts(rec, id){
-    var x = rec.views.excerpt, t = x.time_s;
+    var x = rec.views.excerpt, t = [];
+    for (var k = 0; k < x.points; k++) t.push(x.time_first_s + k * x.time_step_s);
+    x.traces.forEach(function(tr){ tr.values = unpack(tr.values_int16_base64, 2, tr.unit_per_count); });
     var angle = x.traces.filter(function(tr){ return tr.unit === 'V'; });
     var accel = x.traces.filter(function(tr){ return tr.unit !== 'V'; });
     if (document.getElementById(id + 'pulse') && angle.length){
@@ -41,7 +52,7 @@
       chart(id + 'accel', t.map(function(tv, i){ return [tv].concat(accel.map(function(tr){ return tr.values[i]; })); }),
         ['time (s)'].concat(accel.map(function(tr){ return tr.name + ' (m/s²)'; })),
         {colors: viewColors.slice(0, accel.length), strokeWidth: 1, underlayCallback: timeMarkers(x),
-         xlabel: 'time (s)', ylabel: 'specific force along the axis (m/s²)'});
+         xlabel: 'time (s)', ylabel: 'calibrated reading (m/s²)'});
     }
   }
   function speedChart(rec, id){
@@ -66,11 +77,10 @@
   }
   function mapChart(rec, id){
     var m = rec.views.map, div = document.getElementById(id + 'map'); if (!div) return;
-    var bin = atob(m.deviation_int8_base64), n = bin.length, counts = new Int8Array(n);
-    for (var i = 0; i < n; i++) counts[i] = bin.charCodeAt(i) << 24 >> 24;
+    var counts = unpack(m.deviation_int8_base64, 1, 1), n = counts.length;
     var NR = m.rows, C = m.columns, step = m.rad_s2_per_count;
     // Colour range: ± the 99th percentile of |deviation| (beyond it, the bar's end colours).
-    var mags = Array.prototype.map.call(counts, Math.abs).sort(function(a, b){ return a - b; });
+    var mags = counts.map(Math.abs).sort(function(a, b){ return a - b; });
     var limit = Math.max(1, mags[Math.min(n - 1, Math.floor(0.99 * n))]) * step;
     var W = Math.max(480, Math.min(div.clientWidth || 900, 1100)), left = 64, right = 96, top = 8, bottom = 44;
     var H = top + bottom + Math.max(140, Math.min(420, 3 * NR));
@@ -87,10 +97,11 @@
     ctx.imageSmoothingEnabled = false; ctx.drawImage(off, left, top, pw, ph);
     ctx.strokeStyle = '#5b6875'; ctx.strokeRect(left + 0.5, top + 0.5, pw, ph);
     ctx.fillStyle = '#1c2430'; ctx.font = '11px system-ui, sans-serif'; ctx.textAlign = 'center'; ctx.textBaseline = 'top';
-    for (var k = 0; k <= 8; k++){  // x: every 45° of turn, labelled with θ2
-      var col = Math.min(C - 1, Math.round(k * C / 8)), px = left + pw * k / 8;
-      var deg = k === 8 ? m.crank_deg[0] : m.crank_deg[col] - m.crank_direction * 180 / C;
-      ctx.fillRect(px, top + ph, 1, 4); ctx.fillText(String(Math.round(((deg % 360) + 360) % 360)), px, top + ph + 6);
+    var norm = function(d){ return Math.round(((d % 360) + 360) % 360); }, first = norm(m.first_crank_deg);
+    for (var k = 0; k <= 8; k++){  // x: every 45° turned from the pulse, labelled with θ2
+      var px = left + pw * k / 8, label = norm(m.first_crank_deg + m.crank_direction * 45 * k);
+      if (k === 8 && label === first) label = first === 0 ? 360 : first;
+      ctx.fillRect(px, top + ph, 1, 4); ctx.fillText(String(label), px, top + ph + 6);
     }
     ctx.fillText('crank angle θ2 (deg)', left + pw / 2, top + ph + 24);
     ctx.textAlign = 'right'; ctx.textBaseline = 'middle';
@@ -100,7 +111,7 @@
       ctx.fillRect(left - 4, py, 4, 1); ctx.fillText(String(m.revolution[row]), left - 6, py);
     }
     ctx.save(); ctx.translate(14, top + ph / 2); ctx.rotate(-Math.PI / 2); ctx.textAlign = 'center';
-    ctx.fillText('revolution (number in the recording)', 0, 0); ctx.restore();
+    ctx.fillText('revolution no.', 0, 0); ctx.restore();
     // Colour bar.
     var bx = W - right + 18, bw = 14;
     for (var yb = 0; yb < ph; yb++){ var rgb2 = divergingRgb(1 - 2 * yb / (ph - 1)); ctx.fillStyle = 'rgb(' + rgb2.join(',') + ')'; ctx.fillRect(bx, top + yb, bw, 1); }
@@ -108,7 +119,7 @@
     ctx.fillStyle = '#1c2430'; ctx.textAlign = 'left';
     [1, 0.5, 0, -0.5, -1].forEach(function(u){
       var py = top + (1 - u) / 2 * ph, val = u * limit;
-      ctx.fillText((u === 1 ? '≥ ' : u === -1 ? '≤ ' : '') + val.toPrecision(2), bx + bw + 4, py);
+      ctx.fillText((u === 1 ? '≥ ' : u === -1 ? '≤ ' : '') + String(Number(val.toPrecision(2))), bx + bw + 4, py);
     });
     ctx.save(); ctx.translate(W - 8, top + ph / 2); ctx.rotate(-Math.PI / 2); ctx.textAlign = 'center';
     ctx.fillText((m.quantity === 'alpha3_rad_s2' ? 'α3' : 'α4') + ' − nominal (rad/s²)', 0, 0); ctx.restore();

@@ -13,6 +13,7 @@
 
 #include "acquire/acquisition.hpp"
 #include "report/deviation_map.hpp"
+#include "report/packed_numbers.hpp"
 #include "report/recording_job.hpp"
 #include "report/views_record.hpp"
 #include "support/run_command.hpp"
@@ -132,15 +133,26 @@ TEST_F(RecordingViews, ExcerptMarksAcquiresPulsesWhereTheSignalHasItsEdges) {
     if (tr["role"] == "crank_pulse") pulse = &tr;
   ASSERT_NE(pulse, nullptr);
   const double low = x["thresholds"]["low_V"], high = x["thresholds"]["high_V"];
+  // The packed values: counts of a step, on a uniform time grid.
+  const auto values = [](const json& tr) {
+    std::vector<double> v;
+    for (std::int32_t c : unpack_base64(tr["values_int16_base64"], 2)) v.push_back(c * tr["unit_per_count"].get<double>());
+    return v;
+  };
+  std::vector<double> t;
+  for (std::size_t k = 0; k < x["points"].get<std::size_t>(); ++k)
+    t.push_back(x["time_first_s"].get<double>() + static_cast<double>(k) * x["time_step_s"].get<double>());
+  EXPECT_NEAR(t.front(), from, 1e-12);
+  EXPECT_NEAR(t.back(), to, 1.0 / acquired_->report.recording.sample_rate_hz * x["bucket_frames"].get<double>());
+  const std::vector<double> crank = values(*pulse);
   EXPECT_DOUBLE_EQ(low, acquired_->report.thresholds.low);
   const double fs = acquired_->report.recording.sample_rate_hz;
   const double delta = 2.0 * x["bucket_frames"].get<double>() / fs + 2.0 / fs;
-  const auto& t = x["time_s"];
-  ASSERT_EQ(t.size(), (*pulse)["values"].size());
+  ASSERT_EQ(t.size(), crank.size());
   for (double p : pulses) {
     bool below = false, above = false;
     for (std::size_t k = 0; k < t.size(); ++k) {
-      const double tk = t[k], v = (*pulse)["values"][k];
+      const double tk = t[k], v = crank[k];
       if (tk >= p - delta && tk <= p && v < low) below = true;
       if (tk >= p && tk <= p + delta && v > high) above = true;
     }
@@ -154,10 +166,14 @@ TEST_F(RecordingViews, ExcerptMarksAcquiresPulsesWhereTheSignalHasItsEdges) {
     ASSERT_NE(tr, nullptr);
     EXPECT_EQ((*tr)["unit"], "m/s²");
     const ChannelStats& st = acquired_->report.channel_stats[c];
-    for (const json& v : (*tr)["values"]) {
-      EXPECT_GE(v.get<double>(), st.min - 1e-9);
-      EXPECT_LE(v.get<double>(), st.max + 1e-9);
-    }
+    const double half_step = 0.5 * (*tr)["unit_per_count"].get<double>() * (1 + 1e-9);
+    const std::vector<double> v = values(*tr);
+    ASSERT_EQ(v.size(), t.size());
+    double lo = v[0], hi = v[0];
+    for (double e : v) lo = std::min(lo, e), hi = std::max(hi, e);
+    EXPECT_GE(lo, st.min - half_step);
+    EXPECT_LE(hi, st.max + half_step);
+    EXPECT_GT(hi - lo, 0.1 * (st.max - st.min));  // a real excerpt of the signal, not a flat line
   }
 }
 
@@ -229,6 +245,9 @@ TEST_F(RecordingViews, MapRowsAreTheRevolutionsDeviationFromNominal) {
     EXPECT_NEAR(map_mean / static_cast<double>(cols), row_mean / static_cast<double>(cols), 0.5 * step);
   }
   EXPECT_NEAR(map["largest_abs_rad_s2"].get<double>(), largest, 1e-9 * largest);
+  // Rows start at the pulse: θ2 = 20° (the scene's pulse angle).
+  EXPECT_NEAR(map["first_crank_deg"].get<double>(), 20.0, 1e-9);
+  EXPECT_NEAR(map["crank_deg"][0].get<double>(), 20.0 + 360.0 * 0.5 * static_cast<double>(m - 1) / static_cast<double>(n), 1e-9);
   // Impacts: the deviation is not zero.
   EXPECT_GT(largest, 10.0);
 }
