@@ -17,10 +17,10 @@ namespace {
 json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json stats_json(const ChannelStats& s, bool checked) {
-  return {{"min", s.min},
-          {"max", s.max},
-          {"mean", s.mean},
-          {"rms", s.rms},
+  return {{"min", number(s.min)},
+          {"max", number(s.max)},
+          {"mean", number(s.mean)},
+          {"rms", number(s.rms)},
           {"clipping_checked", checked},
           {"clipped_samples", s.clipped_samples},
           {"first_clip_s", s.clipped_samples > 0 ? number(s.first_clip_s) : json(nullptr)}};
@@ -81,9 +81,12 @@ json channel_sheet_json(const Manifest& m, const AcquisitionReport& acq, const j
         const PulseThresholds& t = acq.thresholds;
         row["recorded"] = stats_json(acq.pulse_stats, false);
         row["crank_offset_deg"] = units::rad_to_deg(c.crank_offset_rad);
-        row["thresholds"] = {{"low_V", t.low},       {"high_V", t.high},
-                             {"bottom_level_V", t.bottom_level}, {"top_level_V", t.top_level},
-                             {"noise_V", t.noise},   {"automatic", t.automatic},
+        row["thresholds"] = {{"low_V", number(t.low)},
+                             {"high_V", number(t.high)},
+                             {"bottom_level_V", number(t.bottom_level)},
+                             {"top_level_V", number(t.top_level)},
+                             {"noise_V", number(t.noise)},
+                             {"automatic", t.automatic},
                              {"follows_baseline", t.follows_baseline}};
         if (c.pulses_per_rev > 1) row["pulses_per_rev"] = c.pulses_per_rev, row["missing_teeth"] = c.missing_teeth;
         if (c.lines_per_rev > 0) row["lines_per_rev"] = c.lines_per_rev;
@@ -125,8 +128,8 @@ json excerpt_json(const AcquisitionReport& acq) {
           {"pulse_inserted", x.pulse_inserted},
           {"removed_edge_s", x.removed_edge_s},
           {"wheel_edge_s", x.wheel_edge_s},
-          {"thresholds", {{"low_V", th.low}, {"high_V", th.high}, {"follows_baseline", th.follows_baseline}}},
-          {"edge_level_V", acq.edge_level_V}};
+          {"thresholds", {{"low_V", number(th.low)}, {"high_V", number(th.high)}, {"follows_baseline", th.follows_baseline}}},
+          {"edge_level_V", number(acq.edge_level_V)}};
 }
 
 json speed_json(const AcquisitionReport& acq) {
