@@ -87,6 +87,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   append(report.warnings, std::move(thresholds.warnings));
 
   RevolutionSchedule schedule;
+  SignalExcerpt excerpt;
   if (manifest.multi_edge_angle()) {
     const WheelEdges edges = wheel_edge_pass(stream, manifest, report.thresholds);
     clock.lap(AcquirePass::pulses);
@@ -96,6 +97,13 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     report.wheel = std::move(wheel.report);
     append(report.warnings, std::move(wheel.warnings));
     schedule = std::move(wheel.schedule);
+    if (options.excerpt_revolutions > 0) {
+      excerpt = excerpt_window(report.pulses, options.excerpt_revolutions, info.sample_rate_hz, info.start_time_s, info.frames);
+      for (const auto* main : {&edges.teeth_s, &edges.a_rise_s, &edges.a_fall_s})  // the main channel's edges
+        for (double t : *main)
+          if (t >= excerpt.start_s && t <= excerpt.end_s) excerpt.wheel_edge_s.push_back(t);
+      std::sort(excerpt.wheel_edge_s.begin(), excerpt.wheel_edge_s.end());
+    }
   } else {
     const EdgePassResult edges = edge_pass(stream, manifest, report.thresholds, &scan.pulse_local);
     clock.lap(AcquirePass::pulses);
@@ -103,6 +111,8 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     report.edge_level_V = edges.edge_level_V;
     report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
     schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);
+    if (options.excerpt_revolutions > 0)
+      excerpt = excerpt_window(report.pulses, options.excerpt_revolutions, info.sample_rate_hz, info.start_time_s, info.frames);
   }
   report.revolutions = report.pulses.revolutions();
   if (report.revolutions < 2)
@@ -117,7 +127,11 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   const GridSettings grid{report.grid_points_per_rev, manifest.crank_direction,
                           manifest.pulse_channel().crank_offset_rad, info.sample_rate_hz, info.start_time_s,
                           info.frames};
-  report.revolutions_clipped = tag_pass(stream, std::move(schedule.plan), grid, accel.inputs, clip, sink);
+  std::optional<ExcerptRecorder> recorder;
+  if (excerpt.frames > 0) recorder.emplace(std::move(excerpt), manifest, info.sample_rate_hz, info.start_time_s);
+  report.revolutions_clipped =
+      tag_pass(stream, std::move(schedule.plan), grid, accel.inputs, clip, sink, recorder ? &*recorder : nullptr);
+  if (recorder) report.excerpt = recorder->finish();
   progress.finish();
   clock.lap(AcquirePass::samples);
 

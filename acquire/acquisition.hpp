@@ -24,6 +24,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,7 @@
 #include "acquire/reader.hpp"
 #include "acquire/revolution.hpp"
 #include "acquire/revolution_plan.hpp"
+#include "acquire/signal_excerpt.hpp"
 #include "acquire/streaming_pass.hpp"
 #include "acquire/wheel_plan.hpp"
 
@@ -44,6 +46,9 @@ struct AcquireOptions {
   std::size_t block_frames = 16384;
   bool progress = true;            ///< progress bar on stderr when it is a terminal
   PulseTrainOptions pulses;
+  /// Revolutions of raw signal to keep (AcquisitionReport::excerpt, recorded
+  /// in the third pass, signal_excerpt.hpp); 0: none.
+  std::size_t excerpt_revolutions = 0;
 };
 
 struct AcquisitionReport {
@@ -67,6 +72,7 @@ struct AcquisitionReport {
   bool clipping_checked = false;             ///< false for float/text without adc_range_V
   std::vector<std::string> warnings;
   std::array<double, kAcquirePasses> pass_seconds{};  ///< wall time of scan, pulses, samples passes
+  std::optional<SignalExcerpt> excerpt;      ///< when AcquireOptions::excerpt_revolutions > 0
 };
 
 /// Runs the three passes. `manifest` must be bound to the reader's recording

@@ -4,7 +4,7 @@ namespace fourbar {
 
 std::size_t tag_pass(const BlockStream& stream, std::vector<RevolutionPlan> plan, const GridSettings& grid,
                      std::span<const AccelerometerInput> accelerometers, const ClipRange& clip,
-                     AcquisitionSink& sink) {
+                     AcquisitionSink& sink, ExcerptRecorder* excerpt) {
   const auto channels = static_cast<std::size_t>(stream.reader.info().channels);
   RevolutionBuilder builder(std::move(plan), grid, accelerometers.size(), sink);
   std::vector<double> calibrated(accelerometers.size());
@@ -21,6 +21,7 @@ std::size_t tag_pass(const BlockStream& stream, std::vector<RevolutionPlan> plan
       builder.push(static_cast<std::int64_t>(first + f), calibrated.data(), clipped);
     }
     builder.flush_samples();
+    if (excerpt) excerpt->take(block, frames, first, channels);
   });
   builder.finish();
   return builder.revolutions_clipped();

@@ -11,14 +11,15 @@
 #include "acquire/channel_inputs.hpp"
 #include "acquire/revolution.hpp"
 #include "acquire/revolution_builder.hpp"
+#include "acquire/signal_excerpt.hpp"
 #include "acquire/streaming_pass.hpp"
 
 namespace fourbar {
 
-/// Builds every planned revolution into `sink`. Returns the number of
-/// revolutions marked clipped.
+/// Builds every planned revolution into `sink`; `excerpt` (optional) sees
+/// every block. Returns the number of revolutions marked clipped.
 std::size_t tag_pass(const BlockStream& stream, std::vector<RevolutionPlan> plan, const GridSettings& grid,
                      std::span<const AccelerometerInput> accelerometers, const ClipRange& clip,
-                     AcquisitionSink& sink);
+                     AcquisitionSink& sink, ExcerptRecorder* excerpt = nullptr);
 
 }  // namespace fourbar

@@ -101,6 +101,7 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   ChunkedAnalysis analysis(result, manifest, channels, observer);
   AcquireOptions acquire_options;
   acquire_options.progress = options.progress;
+  acquire_options.excerpt_revolutions = options.excerpt_revolutions;
   result.acquisition = acquire(*opened.reader, manifest, acquire_options, analysis);
   analysis.finish();
   // The analysis resamples on its own grid (acquire made none): report that one.

@@ -105,6 +105,8 @@ struct AnalyzeOptions {
   bool progress = true;  ///< progress bar on stderr when it is a terminal
   /// Run the set-up check (setup_check.hpp) on the finished analysis.
   bool setup_check = true;
+  /// Revolutions of raw signal kept in acquisition.excerpt (AcquireOptions); 0: none.
+  std::size_t excerpt_revolutions = 0;
 
   /// The thesis's processing (§7.2): thesis conversion, ideal (bin-wise,
   /// rectangular) band-pass, running trapezoid. For comparison.

@@ -13,7 +13,7 @@ namespace fourbar {
 
 /// The record cached in `file`; nullopt when there is none, it is damaged
 /// (it is then recomputed), or it is not an analysed record with its set-up
-/// check and the orders of its spectral magnification.
+/// check, the orders of its spectral magnification and the views.
 std::optional<nlohmann::json> read_cached_record(const std::filesystem::path& file);
 
 /// Writes `record` to `file` (atomically) when it reads back equal: JSON has

@@ -6,6 +6,7 @@
 #include "report/html_text.hpp"
 #include "report/html_verdict.hpp"
 #include "report/quantity_names.hpp"
+#include "report/html_views.hpp"
 #include "report/setup_check_record.hpp"
 
 namespace fourbar {
@@ -64,6 +65,7 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
     for (const json& w : r["warnings"]) h << "<li>" << html_escape(w) << "</li>";
     h << "</ul></div>";
   }
+  views_section(h, r, ri);
   // Metrics.
   h << "<h3>Theory over measurement</h3><table><tr><th class=\"l\">quantity</th><th>RMS measured</th><th>RMS clearance model</th>"
        "<th>RMS nominal</th><th>RMS(meas − model)</th><th>corr. model</th><th>corr. nominal</th><th>peak ratio meas/model</th>"

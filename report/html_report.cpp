@@ -17,6 +17,8 @@ extern const char* const report_css;
 extern const char* const report_core_js;
 extern const char* const report_recording_charts_js;
 extern const char* const report_session_charts_js;
+extern const char* const report_views_js;
+extern const char* const report_views_css;
 
 namespace {
 
@@ -26,7 +28,7 @@ using nlohmann::json;
 /// R (the data) and chart(); the others draw into the page's chart boxes.
 std::string report_script() {
   std::string s = "(function(){\n'use strict';\n";
-  for (const char* part : {report_core_js, report_recording_charts_js, report_session_charts_js}) s += part;
+  for (const char* part : {report_core_js, report_recording_charts_js, report_session_charts_js, report_views_js}) s += part;
   s += "scriptsDone = true; allDrawn();\n})();\n";  // charts drawn once all scripts ran (none: 0)
   return s;
 }
@@ -45,7 +47,7 @@ std::string render_html_report(const json& session_in) {
        "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
        "style-src 'unsafe-inline'; img-src data:\">"
        "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\"><title>"
-    << html_escape(data["title"]) << " — fourbar report</title><style>" << css << "</style><style>" << report_css << "</style></head><body>";
+    << html_escape(data["title"]) << " — fourbar report</title><style>" << css << "</style><style>" << report_css << "</style><style>" << report_views_css << "</style></head><body>";
   h << "<header><h1>" << html_escape(data["title"]) << "</h1><p class=\"note\">fourbar " << html_escape(data["version"]) << " · <code>"
     << html_escape(data["command"]) << "</code> · session folder <code>" << html_escape(data["session_dir"]) << "</code></p>";
   if (!data["notes"].get<std::string>().empty()) h << "<p>" << html_escape(data["notes"]) << "</p>";

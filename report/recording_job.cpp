@@ -7,6 +7,7 @@
 #include "common/units.hpp"
 #include "report/comparison_record.hpp"
 #include "report/setup_check_record.hpp"
+#include "report/views_record.hpp"
 
 namespace fourbar {
 
@@ -112,7 +113,10 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
 json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& options,
                        const TheorySettings& settings) {
   try {
-    const RecordingAnalysis a = analyze_recording(recording, {}, options);
+    AnalyzeOptions with_excerpt = options;
+    with_excerpt.excerpt_revolutions = kExcerptRevolutions;
+    DeviationMapCollector map;
+    const RecordingAnalysis a = analyze_recording(recording, {}, with_excerpt, &map);
     if (!a.coupler && !a.rocker)
       throw InputError(recording.string() + ": no tangential channel on the coupler or the rocker; the comparison needs one");
     const MeasuredResponse measured = measured_response(a);
@@ -129,6 +133,7 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
       r["status"] = analysed_status(*a.setup_check);
       r["setup_check"] = setup_check_json(*a.setup_check, a.manifest_file.filename().string());
     }
+    r["views"] = views_record(a, map, r);
     return r;
   } catch (const InputError& e) {
     return {{"status", "failed"}, {"error_kind", "input"}, {"error", e.what()}};

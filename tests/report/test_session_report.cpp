@@ -402,7 +402,14 @@ TEST_F(SessionReport, SecondRunComesFromTheCache) {
     if (r["status"] == "ok") {
       EXPECT_TRUE(r["from_cache"].get<bool>());
       EXPECT_EQ(r["metrics"], recording(r["name"])["metrics"]);
+      // The views come back from the cache as they were computed.
+      ASSERT_TRUE(r.contains("views"));
+      EXPECT_EQ(r["views"], recording(r["name"])["views"]);
     }
+  // … and the page drawn from the cache shows them.
+  const std::string html = testing::read_file(d / "out" / "report.html");
+  for (const char* id : {"-view-pulse\"", "-view-accel\"", "-view-speed\"", "-view-map\"", "Channels and calibration"})
+    EXPECT_NE(html.find(id), std::string::npos) << id;
 }
 
 TEST_F(SessionReport, PageDrawsInHeadlessChromium) {
@@ -414,10 +421,21 @@ TEST_F(SessionReport, PageDrawsInHeadlessChromium) {
   ASSERT_TRUE(std::regex_search(run.out, m, std::regex(R"re(<body[^>]*data-js-errors="(\d+)")re")));
   EXPECT_EQ(m[1], "0");
   ASSERT_TRUE(std::regex_search(run.out, m, std::regex(R"re(<body[^>]*data-charts-drawn="(\d+)")re")));
-  // Two analysed recordings × 7 charts + the 2 session charts against crank
-  // speed (300 and 350 rpm); both at 0.254 mm: a note instead of the charts against clearance.
-  EXPECT_EQ(std::stoi(m[1]), 2 * 7 + 2);
+  // Two analysed recordings × (7 charts + 4 views: raw crank signal, raw
+  // accelerometers, crank speed, deviation map) + the 2 session charts against
+  // crank speed (300 and 350 rpm); both at 0.254 mm: a note instead of the charts against clearance.
+  EXPECT_EQ(std::stoi(m[1]), 2 * (7 + 4) + 2);
   EXPECT_NE(run.out.find("One clearance in this session"), std::string::npos);
+  // Every view drew data.
+  const std::regex view_div(R"re(<div class="chart[^"]*" id="r\d+-view-(pulse|accel|speed|map)"([^>]*)>)re");
+  int views = 0;
+  for (auto it = std::sregex_iterator(run.out.begin(), run.out.end(), view_div); it != std::sregex_iterator(); ++it) {
+    ++views;
+    const std::string attrs = (*it)[2];
+    std::smatch d;
+    EXPECT_TRUE(std::regex_search(attrs, d, std::regex(R"re(data-drawn="(\d+)")re")) && std::stoi(d[1]) > 0) << (*it)[0];
+  }
+  EXPECT_EQ(views, 2 * 4);
 }
 
 // A manifest with the coupler sensor's axis_sign flipped: the recording is
