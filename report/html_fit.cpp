@@ -1,6 +1,7 @@
 #include "report/html_fit.hpp"
 
 #include <string>
+#include <vector>
 
 #include "report/html_blocks.hpp"
 #include "report/html_text.hpp"
@@ -31,13 +32,23 @@ void fit_summary(std::ostringstream& h, const json& f, const std::string& id_pre
   const json& prior = f["prior"];
   h << "<table><tr><th class=\"l\">parameter</th><th>fitted</th><th>interval</th><th class=\"l\">identifiable</th>"
        "<th>prior (session.toml)</th></tr>";
-  for (const auto& [name, p] : f["parameters"].items()) {
-    if (name == "contact") continue;
+  // e first, then μ, then any other fitted parameter (the JSON object is sorted by name).
+  std::vector<std::string> names;
+  for (const char* n : {"restitution", "friction_coefficient"})
+    if (f["parameters"].contains(n)) names.push_back(n);
+  for (const auto& [name, p] : f["parameters"].items())
+    if (name != "contact" && name != "restitution" && name != "friction_coefficient") names.push_back(name);
+  for (const std::string& name : names) {
+    const json& p = f["parameters"][name];
+    // A smooth prior has μ = 0.
+    const json prior_value = prior.contains(name)                                          ? prior[name]
+                             : name == "friction_coefficient" && prior.value("contact", "") == "smooth" ? json(0.0)
+                                                                                             : json(nullptr);
     h << "<tr><td class=\"l\">" << html_escape(name) << "</td><td>" << fmt(p["value"], "%.3g") << "</td><td>["
       << fmt(p["low"], "%.3g") << ", " << fmt(p["high"], "%.3g") << "]</td><td class=\"l\">"
       << (p.value("identifiable", false) ? std::string("yes")
                                          : "<span class=\"failed\">" + std::string(kNotIdentifiable) + "</span>")
-      << "</td><td>" << (prior.contains(name) ? fmt(prior[name], "%.3g") : std::string("–")) << "</td></tr>";
+      << "</td><td>" << fmt(prior_value, "%.3g") << "</td></tr>";
   }
   h << "</table>";
   const json& contact = at(f, {"parameters", "contact"});
