@@ -38,6 +38,14 @@ Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
              averaged_revolutions (20), tolerance (1e-8), max_order (50);
   [[recording]] file = "REC.flac" and any [theory] key for that recording.
 
+With a `fourbar fit` result (--fit FIT.json, or SESSION_DIR/fit/fit.json,
+where `fourbar fit` writes by default, when it exists; --no-fit leaves it
+out), each recording's theory is simulated a second time at the fitted e, mu
+and the report gets the section "Fitted bearing parameters": the fitted
+values with their intervals, measured vs the model at the prior and at the
+fitted values (a, RMS difference, correlation: before -> after) and the
+objective's profiles (docs/fit.md).
+
 A recording whose set-up check (docs/setup-check.md) finds a likely
 manifest mistake gets status "check set-up" instead of "ok": its findings are
 warned on stderr and shown at the top of the report and in summary.json.
@@ -51,8 +59,8 @@ or with --strict a recording to check set-up (the report is written).
 }  // namespace
 
 int run_report(const Invocation& inv) {
-  std::string dir, out, cache;
-  bool no_cache = false, quiet = false, strict = false, csv_comments = false;
+  std::string dir, out, cache, fit;
+  bool no_cache = false, quiet = false, strict = false, csv_comments = false, no_fit = false;
   int jobs = 0;
   po::options_description opts("options");
   opts.add_options()("session", po::value(&dir)->required(), "session folder with the recordings and manifests")(
@@ -61,12 +69,14 @@ int run_report(const Invocation& inv) {
       "no-cache", po::bool_switch(&no_cache), "recompute everything; read and write no cache")(
       "jobs,j", po::value(&jobs), "recordings processed at once (default: every core); the outputs do not depend on it")(
       "quiet,q", po::bool_switch(&quiet), "no progress on stderr")(
+      "fit", po::value(&fit), "fit.json of `fourbar fit` (default SESSION_DIR/fit/fit.json when it exists)")(
+      "no-fit", po::bool_switch(&no_fit), "no fitted theory, even when SESSION_DIR/fit/fit.json exists")(
       "strict", po::bool_switch(&strict), "a likely set-up mistake in a recording is an error (exit 2; the report is written)");
   add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("session", 1);
   po::variables_map vm;
-  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache] [--jobs N] [--strict]", kDetails, opts, pos, inv,
+  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache] [--jobs N] [--fit FIT.json | --no-fit] [--strict]", kDetails, opts, pos, inv,
                        vm))
     return 0;
   ReportOptions o;
@@ -79,10 +89,14 @@ int run_report(const Invocation& inv) {
   o.jobs = static_cast<std::size_t>(jobs);
   o.command_line = inv.command_line;
   o.csv_comments = csv_comments;
+  if (!fit.empty() && no_fit) throw InputError("report: --fit and --no-fit exclude each other; give one");
+  o.fit_json = fit;
+  o.use_fit = !no_fit;
   const ReportOutcome r = run_session_report(o);
   std::cout << "wrote " << r.html.string() << " and " << r.summary.string() << ": " << r.recordings << " recordings, "
             << r.failed << " failed, " << r.from_cache << " from the cache";
   if (r.check_setup > 0) std::cout << ", " << r.check_setup << " to check set-up";
+  if (!r.fit.empty()) std::cout << "; fitted theory from " << r.fit.string();
   std::cout << "\n" << r.verdict_table;
   if (strict && r.check_setup > 0)
     throw InputError("report: --strict: the set-up check found likely manifest mistakes in " +

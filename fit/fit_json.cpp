@@ -30,6 +30,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
     json prof = json::array();
     for (std::size_t i = 0; i < p.profile_at.size(); ++i) prof.push_back({p.profile_at[i], p.profile_chi2[i]});
     pj["profile"] = prof;
+    if (!p.identifiable) pj["advice"] = not_identifiable_advice(p.name);
     params[p.name] = pj;
   }
   json contact = {{"value", to_string(f.best.contact)}};
@@ -66,6 +67,10 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
       if (f.magnification_fitted[r]) rj["magnification_fitted"] = *f.magnification_fitted[r];
       if (f.magnification_prior[r]) rj["magnification_prior"] = *f.magnification_prior[r];
     }
+    if (r < f.measured_scatter_share.size() && f.measured_scatter_share[r])
+      rj["measured_scatter_share"] = *f.measured_scatter_share[r];
+    if (r < f.magnification_from_scatter_fitted.size() && f.magnification_from_scatter_fitted[r])
+      rj["magnification_from_scatter_fitted"] = *f.magnification_from_scatter_fitted[r];
     recs.push_back(rj);
   }
   json stats = json::array();

@@ -308,14 +308,39 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
     };
     out.magnification_fitted.push_back(a(best));
     out.magnification_prior.push_back(a(prior));
+    std::optional<double> share, from_scatter;
+    for (FitLink l : kFitLinks) {
+      const auto li = static_cast<std::size_t>(l);
+      const auto& m = targets[r].measured[li];
+      if (!m) continue;
+      const double md = m->value[index_of(ResponseStatistic::mean_deviation)];
+      const double rm = static_cast<double>(targets[r].turns);
+      const double sm = m->value[index_of(ResponseStatistic::spread)] / std::sqrt(rm);
+      if (md > 0) share = sm / md;
+      const CachedSimulation& sim = cache.at(r, best);
+      if (sim.error.empty() && sim.statistics.link[li] && sm > 0)
+        from_scatter = sim.statistics.link[li]->value[index_of(ResponseStatistic::spread)] /
+                       std::sqrt(static_cast<double>(o.simulated_turns)) / sm;
+      break;
+    }
+    out.measured_scatter_share.push_back(share);
+    out.magnification_from_scatter_fitted.push_back(from_scatter);
   }
   for (const ParameterEstimate& p : out.parameters)
     if (!p.identifiable) out.notes.push_back(p.name + " not identifiable from these recordings");
-  if (out.terms > 0 && out.chi2 / out.terms > kModelFamilyChi2PerTerm)
+  if (out.terms > 0 && out.chi2 / out.terms > kModelFamilyChi2PerTerm) {
+    // Where the model family fails most: the recording with the largest χ² per statistic.
+    std::size_t worst = 0;
+    auto per_term = [&](std::size_t r) { return out.recordings[r].chi2 / std::max(1, out.recordings[r].terms); };
+    for (std::size_t r = 1; r < out.recordings.size(); ++r)
+      if (per_term(r) > per_term(worst)) worst = r;
     out.notes.push_back("at the best parameters the statistics still differ by " +
                         format_number(std::sqrt(out.chi2 / out.terms), 2) +
-                        " standard errors (RMS): the model family does not describe this bearing; the values are "
-                        "effective ones");
+                        " standard errors (RMS; most in " + out.recordings[worst].name + ", " +
+                        format_number(std::sqrt(per_term(worst)), 2) +
+                        "): the model family does not describe this bearing; the values are effective ones and their "
+                        "intervals, which assume the model describes the measurement, are not uncertainties");
+  }
   out.simulations = cache.simulations();
   out.turns_simulated = cache.turns_simulated();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

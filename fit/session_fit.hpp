@@ -98,6 +98,12 @@ struct FitResult {
   /// per recording: RMS of the model's averaged deviation from the nominal
   /// over the measurement's (compare/magnification.hpp), at the fit and at the prior.
   std::vector<std::optional<double>> magnification_fitted, magnification_prior;
+  /// Averaged over R turns, a deviation that varies from turn to turn leaves
+  /// its scatter σ/√R in the average (σ: the spread statistic). Per recording:
+  /// (σ/√R)/RMS(averaged deviation) of the measurement (near 1: the averaged
+  /// deviation is scatter, not a repeatable curve), and the a that the two
+  /// scatters alone would give at the fit, (σ_model/√R_model)/(σ_meas/√R_meas).
+  std::vector<std::optional<double>> measured_scatter_share, magnification_from_scatter_fitted;
   std::vector<std::string> notes;     ///< not identifiable, model family, …
 };
 

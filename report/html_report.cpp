@@ -5,6 +5,7 @@
 
 #include "common/json_text.hpp"
 #include "report/html_blocks.hpp"
+#include "report/html_fit.hpp"
 #include "report/html_recording.hpp"
 #include "report/html_summary.hpp"
 #include "report/html_text.hpp"
@@ -19,6 +20,7 @@ extern const char* const report_recording_charts_js;
 extern const char* const report_session_charts_js;
 extern const char* const report_views_js;
 extern const char* const report_views_css;
+extern const char* const report_fit_charts_js;
 
 namespace {
 
@@ -28,7 +30,7 @@ using nlohmann::json;
 /// R (the data) and chart(); the others draw into the page's chart boxes.
 std::string report_script() {
   std::string s = "(function(){\n'use strict';\n";
-  for (const char* part : {report_core_js, report_recording_charts_js, report_session_charts_js, report_views_js}) s += part;
+  for (const char* part : {report_core_js, report_recording_charts_js, report_session_charts_js, report_views_js, report_fit_charts_js}) s += part;
   s += "scriptsDone = true; allDrawn();\n})();\n";  // charts drawn once all scripts ran (none: 0)
   return s;
 }
@@ -52,11 +54,13 @@ std::string render_html_report(const json& session_in) {
     << html_escape(data["command"]) << "</code> · session folder <code>" << html_escape(data["session_dir"]) << "</code></p>";
   if (!data["notes"].get<std::string>().empty()) h << "<p>" << html_escape(data["notes"]) << "</p>";
   h << "<nav><a href=\"#summary\">summary</a><a href=\"#session\">session</a>";
+  if (data.contains("fit")) h << "<a href=\"#fit\">fit</a>";
   for (std::size_t i = 0; i < recs.size(); ++i) h << "<a href=\"#rec" << i << "\">" << html_escape(recs[i]["name"]) << "</a>";
   h << "<a href=\"#settings\">settings</a></nav></header><main>";
   h << "<div id=\"js-errors\" class=\"err\"><b>Script errors</b><ul></ul></div>";
   summary_section(h, data);
   severity_section(h, data);
+  fit_section(h, data);
 
   for (std::size_t i = 0; i < recs.size(); ++i) recording_section(h, recs[i], i);
 

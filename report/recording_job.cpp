@@ -111,7 +111,7 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
 }
 
 json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& options,
-                       const TheorySettings& settings) {
+                       const TheorySettings& settings, const TheorySettings* fitted) {
   try {
     AnalyzeOptions with_excerpt = options;
     with_excerpt.excerpt_revolutions = kExcerptRevolutions;
@@ -120,15 +120,32 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
     if (!a.coupler && !a.rocker)
       throw InputError(recording.string() + ": no tangential channel on the coupler or the rocker; the comparison needs one");
     const MeasuredResponse measured = measured_response(a);
-    MatchedTheory t;
-    try {
-      t = simulate_matched_theory(*a.rig, a.clearance_m, a.mean_crank_speed_rad_s, measured.grid, settings);
-    } catch (const InputError& e) {
-      throw InputError(a.manifest_file.string() + ": " + e.what());
-    }
-    apply_pass_band(t, a.filter);
+    auto theory_at = [&](const TheorySettings& s) {
+      MatchedTheory t;
+      try {
+        t = simulate_matched_theory(*a.rig, a.clearance_m, a.mean_crank_speed_rad_s, measured.grid, s);
+      } catch (const InputError& e) {
+        throw InputError(a.manifest_file.string() + ": " + e.what());
+      }
+      apply_pass_band(t, a.filter);
+      return t;
+    };
+    const MatchedTheory t = theory_at(settings);
     const RecordingComparison c = compare_response(measured, t);
     json r = recording_record(a, measured, t, c);
+    if (fitted) {
+      // The same theory path at the fitted contact parameters.
+      const MatchedTheory tf = theory_at(*fitted);
+      const json f = comparison_record(measured, tf, compare_response(measured, tf));
+      json series = json::object();
+      for (const auto& [q, s] : f["series"].items())
+        series[q] = {{"clearance", s["clearance"]}, {"clearance_std", s["clearance_std"]}};
+      r["fitted_theory"] = {{"settings", f["theory"]["settings"]},
+                            {"severity", f["theory"]["severity"]},
+                            {"metrics", f["metrics"]},
+                            {"series", series}};
+      for (auto& [q, m] : r["fitted_theory"]["metrics"].items()) m["magnification"].erase("orders");
+    }
     if (a.setup_check) {
       r["status"] = analysed_status(*a.setup_check);
       r["setup_check"] = setup_check_json(*a.setup_check, a.manifest_file.filename().string());

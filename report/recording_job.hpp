@@ -33,8 +33,10 @@ nlohmann::json recording_record(const RecordingAnalysis& analysis, const Measure
 
 /// Runs the chain for one recording; the record (status "ok" or "failed"
 /// with `error` and `error_kind` "input" | "run"). Never throws for a bad
-/// recording.
+/// recording. With `fitted` (a `fourbar fit` result), the theory is simulated
+/// a second time at those settings and compared the same way: "fitted_theory"
+/// holds its settings, metrics, severity and model series (mean and spread).
 nlohmann::json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& analysis,
-                                 const TheorySettings& theory);
+                                 const TheorySettings& theory, const TheorySettings* fitted = nullptr);
 
 }  // namespace fourbar

@@ -23,6 +23,7 @@
 #include "report/analysis_cache.hpp"
 #include "report/comparison_record.hpp"
 #include "report/file_hash.hpp"
+#include "report/fit_record.hpp"
 #include "report/html_report.hpp"
 #include "report/recording_job.hpp"
 #include "report/series_files.hpp"
@@ -92,6 +93,7 @@ json summary_of(const json& session) {
     r.erase("spectra");
     r.erase("impacts");
     r.erase("grid");
+    if (r.contains("fitted_theory")) r["fitted_theory"].erase("series");
   }
   return s;
 }
@@ -109,6 +111,16 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   for (const auto& f : files.other_files)
     std::cerr << "fourbar: warning: report: " << f.filename().string()
               << " is not a recording (.wav .w64 .rf64 .flac .caf .aiff .aif .mat .csv .tsv .txt) nor a manifest; left out\n";
+  // The fit: given, or the one `fourbar fit` wrote into the session folder.
+  std::optional<ReportFit> fit;
+  if (o.use_fit) {
+    const std::filesystem::path found = o.session_dir / "fit" / "fit.json";
+    if (!o.fit_json.empty()) fit = load_report_fit(o.fit_json, files.recordings);
+    else if (std::filesystem::exists(found)) fit = load_report_fit(found, files.recordings);
+    if (fit)
+      for (const std::string& w : fit->warnings) std::cerr << "fourbar: warning: report: " << fit->file.string() << ": " << w << "\n";
+  }
+
   const std::filesystem::path out_dir = o.out_html.has_parent_path() ? o.out_html.parent_path() : ".";
   ensure_output_dir(out_dir);
   const std::filesystem::path cache_dir = o.cache_dir.empty() ? out_dir / ".fourbar-cache" : o.cache_dir;
@@ -126,14 +138,18 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     const std::filesystem::path& rec = files.recordings[i];
     const std::string name = rec.filename().string();
     const TheorySettings& theory = settings.theory_for(name);
+    std::optional<TheorySettings> fitted;
+    if (fit)
+      if (const auto c = fit->for_recording(name)) fitted = with_fitted_contact(theory, *c);
     const json inputs = input_files(rec, o.session_dir);
     const std::string key = sha256_text(std::string(kVersion) + "\n" + json_text(inputs) + "\n" +
-                                        json_text(settings_json["analysis"]) + "\n" + json_text(theory_settings_json(theory)));
+                                        json_text(settings_json["analysis"]) + "\n" + json_text(theory_settings_json(theory)) +
+                                        (fitted ? "\nfitted " + json_text(theory_settings_json(*fitted)) : std::string()));
     const std::filesystem::path cache_file = cache_dir / (key + ".json");
     std::optional<json> record = o.use_cache ? read_cached_record(cache_file) : std::nullopt;
     const bool cached = record.has_value();
     if (!record) {
-      record = process_recording(rec, analysis, theory);
+      record = process_recording(rec, analysis, theory, fitted ? &*fitted : nullptr);
       if (o.use_cache && is_analysed(*record)) write_cached_record(cache_file, *record);
     }
     json& r = *record;
@@ -213,6 +229,10 @@ ReportOutcome run_session_report(const ReportOptions& o) {
                   {"orphan_manifests", orphans},
                   {"other_files", others},
                   {"severity", severity_record(records)}};
+  if (fit) {
+    session["fit"] = fit_report_record(*fit, records, o.session_dir);
+    out.fit = fit->file;
+  }
 
   // Outputs: series first, the report last (each written whole or not at all).
   write_series_files(session, out_dir, o.csv_comments);

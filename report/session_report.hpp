@@ -25,10 +25,17 @@ struct ReportOptions {
   std::size_t jobs = 0;             ///< recordings processed at once; 0: default_jobs()
   std::string command_line;         ///< for provenance
   bool csv_comments = false;        ///< provenance also as `#` lines above the CSV headers
+  /// A `fourbar fit` result: the theory is simulated a second time at its
+  /// fitted contact parameters and the report gets the section "Fitted
+  /// bearing parameters". Empty: SESSION_DIR/fit/fit.json when it exists
+  /// (where `fourbar fit` writes by default) unless `use_fit` is false.
+  std::filesystem::path fit_json;
+  bool use_fit = true;
 };
 
 struct ReportOutcome {
   int recordings = 0, failed = 0, from_cache = 0;
+  std::filesystem::path fit;  ///< the fit.json shown (empty: none)
   int check_setup = 0;  ///< analysed, but the set-up check found a likely manifest mistake (status "check set-up")
   std::filesystem::path html, summary;
   std::string verdict_table;  ///< recordings, status, verdict words and a, aligned (report/verdict_table.hpp)

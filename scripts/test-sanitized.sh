@@ -13,7 +13,8 @@
 #     AnalyzePipeline.NoDriftOver10000Revolutions — 10 000 revolutions
 #       streamed; the other AnalyzePipeline tests run the same code;
 #     HtmlReport.DrawsEveryChartInHeadlessChromium,
-#     SessionReport.PageDrawsInHeadlessChromium — the time goes to headless
+#     SessionReport.PageDrawsInHeadlessChromium,
+#     ReportFit.PageWithTheFitDrawsInHeadlessChromium — the time goes to headless
 #       Chromium, which no sanitizer sees; the C++ writing the page runs in
 #       the other report tests;
 #     csv_in_pandas — the sample jobs read by pandas; their C++ runs in the
