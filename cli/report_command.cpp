@@ -58,7 +58,8 @@ int run_report(const Invocation& inv) {
       "out,o", po::value(&out), "report to write (default SESSION_DIR/report/report.html)")(
       "cache", po::value(&cache), "cache folder (default: .fourbar-cache beside the report)")(
       "no-cache", po::bool_switch(&no_cache), "recompute everything; read and write no cache")(
-      "jobs,j", po::value(&jobs), "recordings processed at once (default: every core); the outputs do not depend on it")(
+      "jobs,j", po::value(&jobs), "cores to use (default: every core): that many recordings at once, or fewer "
+                                  "recordings each on its share of the cores; the outputs do not depend on it")(
       "quiet,q", po::bool_switch(&quiet), "no progress on stderr")(
       "strict", po::bool_switch(&strict), "a likely set-up mistake in a recording is an error (exit 2; the report is written)");
   po::positional_options_description pos;
