@@ -317,6 +317,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
                         " standard errors (RMS): the model family does not describe this bearing; the values are "
                         "effective ones");
   out.simulations = cache.simulations();
+  out.simulations_on_rank_0 = cache.computed_here();
   out.turns_simulated = cache.turns_simulated();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
