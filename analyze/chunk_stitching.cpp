@@ -55,12 +55,16 @@ void ChunkedAnalysis::process_ready() {
   }
 }
 
-void ChunkedAnalysis::keep_from(std::size_t rb) {
+void ChunkedAnalysis::keep_from(std::size_t rb, const std::vector<std::vector<double>>* detached) {
   // Keep what the next chunk needs: from half a kernel before revolution rb.
   const std::size_t keep = std::max(base_, rev_start(rb) >= overlap_ ? rev_start(rb) - overlap_ : 0);
   const auto drop = static_cast<std::ptrdiff_t>(keep - base_);
-  for (auto* v : {&theta_, &speed_, &accel_}) v->erase(v->begin(), v->begin() + drop);
-  for (auto& v : samples_) v.erase(v.begin(), v.begin() + drop);
+  std::vector<std::vector<double>*> buffer{&theta_, &speed_, &accel_};
+  for (auto& v : samples_) buffer.push_back(&v);
+  for (std::size_t i = 0; i < buffer.size(); ++i) {
+    if (detached) buffer[i]->assign((*detached)[i].begin() + drop, (*detached)[i].end());  // (buffer[i] is empty)
+    else buffer[i]->erase(buffer[i]->begin(), buffer[i]->begin() + drop);
+  }
   base_ = keep;
   while (first_rev_ < rb) starts_.pop_front(), ++first_rev_;
 }
@@ -75,6 +79,7 @@ void ChunkedAnalysis::end_segment() {
                                " s): not analysed");
   else if (last_rev_ && static_cast<std::int64_t>(next_rev_) <= *last_rev_)
     process_chunk(static_cast<std::size_t>(*last_rev_) + 1, true);
+  drain(true);  // the segment's chunks still in flight, before its ends are settled
   // The segment's last revolutions were guard revolutions.
   for (auto& p : guard_queue_) commit(*p, false);
   guard_queue_.clear();

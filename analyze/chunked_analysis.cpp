@@ -6,6 +6,8 @@
 // and revolution_results.cpp.
 #include "analyze/chunked_analysis.hpp"
 
+#include <algorithm>
+
 #include "analyze/analysis_settings.hpp"
 #include "analyze/chunk_plan.hpp"
 #include "common/units.hpp"
@@ -15,13 +17,17 @@ namespace fourbar {
 ChunkedAnalysis::ChunkedAnalysis(RecordingAnalysis& result, const Manifest& manifest, AnalysisChannels channels,
                                  RevolutionObserver* observer)
     : result_(result), manifest_(manifest), channels_(std::move(channels)), observer_(observer) {
-  for (const LinkChannels& l : channels_.links)
+  for (const LinkChannels& l : channels_.links) {
     for (const auto* ch : {&l.tangential, &l.normal})
       if (*ch) used_.push_back((*ch)->index);
+    has_normal_ = has_normal_ || l.normal.has_value();
+  }
   samples_.resize(used_.size());
 }
 
-ChunkedAnalysis::~ChunkedAnalysis() = default;
+ChunkedAnalysis::~ChunkedAnalysis() {
+  in_flight_.clear();  // waits for the chunks still running (after an error in acquire)
+}
 
 void ChunkedAnalysis::on_plan(const AcquisitionReport& report) {
   result_.acquisition = report;  // so far: pulses, speed statistics (complete after acquire)
@@ -51,17 +57,12 @@ void ChunkedAnalysis::resolve_settings(const AcquisitionReport& report) {
   const double slowest_rev_frames = slowest_revolution_frames(fs_, report.speed.min_rpm);
   chunk_revs_ = plan_chunk_revolutions(o.chunk_revolutions, taps, overlap_, slowest_rev_frames, frames_per_rev);
   if (taps > 0)
-    make_filter_blocks(filter_block_frames(chunk_revs_, slowest_rev_frames, overlap_, longest_frames, half_kernel_));
+    filter_block_frames_ = filter_block_frames(chunk_revs_, slowest_rev_frames, overlap_, longest_frames, half_kernel_);
+  threads_ = std::max(1u, o.threads);
+  give_back(make_workspace());  // the filter blocks made now, before the long pass
   make_spectra(resolve_spectrum_segment_frames(o.spectrum_segment, frames_per_rev, longest_frames));
   make_averagers();
   lay_out_result(taps);
-}
-
-void ChunkedAnalysis::make_filter_blocks(std::size_t block_frames) {
-  alpha_filter_ = std::make_unique<FftFilter>(filter_, fs_, block_frames, Boundary::zero);
-  if (channels_.links.front().normal || channels_.links.back().normal)
-    normal_filter_block_ =
-        std::make_unique<FftFilter>(normal_filter_, fs_, block_frames, Boundary::zero, alpha_filter_->transform());
 }
 
 void ChunkedAnalysis::make_spectra(std::size_t segment_frames) {

@@ -15,16 +15,29 @@
 // samples × (3 crank values + the channels used) doubles, plus one chunk's
 // working arrays.
 //
+// Chunks on several cores (AnalyzeOptions::threads > 1): a chunk's
+// transform depends only on its own samples, so each chunk's samples are
+// copied and transformed on a thread of its own, at most `threads` at once,
+// while acquire fills the next one. What carries from chunk to chunk (the
+// spectra, the running-trapezoid ω, the guard revolutions, the averages, the
+// observer) is done by the calling thread, chunk by chunk in order, so the
+// result is bit for bit the one of one thread. Memory: `threads` more copies
+// of a chunk's samples and working arrays.
+//
 // The class is split by concept, one file each:
 //   chunked_analysis.cpp   the driver: settings into members (analysis_settings,
 //                          chunk_plan), filter blocks, averagers, result layout
 //   chunk_stitching.cpp    the segment buffer: samples in, chunks out, what the
 //                          next chunk keeps, segment ends
 //   chunk_transform.cpp    one chunk: convert, filter, integrate, resample
+//   chunk_dispatch.cpp     chunks in order: in the calling thread, or on
+//                          worker threads and delivered in order
 //   revolution_results.cpp guard revolutions, averages, the finished result
 
 #include <deque>
+#include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +65,41 @@ class ChunkedAnalysis final : public AcquisitionSink {
   void finish();
 
  private:
+  /// One chunk's samples: spans into the segment buffer (one thread), or
+  /// into `owned` (the buffer handed to a worker thread).
+  struct ChunkJob {
+    std::size_t rev_begin = 0, rev_end = 0;  ///< the chunk's own revolutions [rev_begin, rev_end)
+    std::size_t c0 = 0, c1 = 0;              ///< their samples within the chunk
+    std::size_t stream_at = 0;               ///< sample c0 within the segment (the spectra's stream)
+    bool at_start = false, segment_end = false;
+    std::vector<std::vector<double>> owned;  ///< the detached buffer: θ, ω2, α2, then the used channels
+    std::span<const double> theta, speed, accel;
+    std::vector<std::span<const double>> samples;  ///< per used channel
+  };
+  /// One chunk's transform, waiting to be delivered in order.
+  struct ChunkOutcome {
+    std::size_t rev_begin = 0, rev_end = 0;
+    bool segment_end = false;
+    long first_revolution = 0;
+    std::size_t revolutions = 0;
+    std::vector<double> speed;                          ///< revolutions × N
+    std::vector<LinkGrids> grids;                       ///< per link
+    std::vector<std::vector<double>> normal_grid;       ///< per link (empty without a normal channel)
+    std::vector<std::vector<double>> spectrum_samples;  ///< per link: α before the filter over [c0, c1)
+    std::vector<SpectrumAverager::SegmentPowers> spectrum_powers;  ///< per link: the segments inside them
+    // Running trapezoid only: ω per sample before its start value is known
+    // (it carries from the previous chunk), the nominal ω at c0, the grid.
+    std::vector<std::vector<double>> omega_samples;
+    std::vector<double> nominal_start_omega;
+    std::size_t c0 = 0, c1 = 0;
+    std::optional<RevolutionResampler> resampler;
+  };
+  /// A worker's filter blocks and working arrays (one per chunk in flight).
+  struct ChunkWorkspace {
+    std::unique_ptr<FftFilter> alpha_filter, normal_filter;  // windowed: linear convolution, made once
+    std::vector<double> alpha, unfiltered, w2;
+  };
+
   /// One revolution of a chunk on the grid, waiting to be committed.
   struct Pending {
     std::size_t number = 0;
@@ -62,21 +110,40 @@ class ChunkedAnalysis final : public AcquisitionSink {
 
   // chunked_analysis.cpp
   void resolve_settings(const AcquisitionReport& report);
-  void make_filter_blocks(std::size_t block_frames);
+  std::unique_ptr<ChunkWorkspace> make_workspace() const;
   void make_spectra(std::size_t segment_frames);
   void make_averagers();
   void lay_out_result(std::size_t taps);
   // chunk_stitching.cpp
   void process_ready();
-  /// Drops the buffered samples no chunk from revolution `rev` on needs.
-  void keep_from(std::size_t rev);
+  /// Drops the buffered samples no chunk from revolution `rev` on needs;
+  /// `detached`: the buffer was handed to a chunk (detach_buffer) and is
+  /// empty: what is kept is copied back from there.
+  void keep_from(std::size_t rev, const std::vector<std::vector<double>>* detached = nullptr);
   void end_segment();
   std::size_t rev_start(std::size_t rev) const;
-  // chunk_transform.cpp
+  // chunk_dispatch.cpp
   void process_chunk(std::size_t rev_end, bool segment_end);
+  /// The chunk ending at revolution `rev_end`, as spans into the buffer.
+  ChunkJob make_job(std::size_t rev_end, bool segment_end) const;
+  /// The segment buffer's vectors (θ, ω2, α2, the used channels), swapped
+  /// for emptied spare ones.
+  std::vector<std::vector<double>> detach_buffer();
+  /// Delivers the chunks in flight, in order: all of them, or (`wait` false)
+  /// those finished at the front.
+  void drain(bool wait);
+  std::unique_ptr<ChunkWorkspace> take_workspace();
+  void give_back(std::unique_ptr<ChunkWorkspace> w);
+  // chunk_transform.cpp
+  /// The chunk's transform: reads only the job, the settings and `w`, so
+  /// chunks may run on several threads at once.
+  ChunkOutcome transform(const ChunkJob& job, ChunkWorkspace& w) const;
+  /// What carries over from chunk to chunk, in order.
+  void deliver(ChunkOutcome&& outcome);
   /// Filters one chunk's values in place; a segment end is continued
   /// periodically in the crank angle first (crank_periodic_extension).
-  void filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start, bool at_end);
+  void filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start, bool at_end,
+              ChunkWorkspace& w) const;
   // revolution_results.cpp
   void accept(Pending&& rev);
   void commit(Pending& rev, bool averaged);
@@ -92,8 +159,8 @@ class ChunkedAnalysis final : public AcquisitionSink {
   AngleGridSpec grid_;
   FilterSpec filter_, normal_filter_;
   std::size_t half_kernel_ = 0, overlap_ = 0, chunk_revs_ = 0;
-  std::unique_ptr<FftFilter> alpha_filter_, normal_filter_block_;  // windowed: linear convolution, made once
-  std::vector<double> work_alpha_, work_unfiltered_, work_w2_;      // one chunk's working arrays
+  std::size_t filter_block_frames_ = 0;  // windowed filter: length of the filter blocks
+  bool has_normal_ = false;
   std::shared_ptr<const RigTables> tables_;
   std::vector<std::size_t> used_;  // acquire channel indices buffered, in order
 
@@ -115,6 +182,14 @@ class ChunkedAnalysis final : public AcquisitionSink {
   std::unique_ptr<SynchronousAverager> speed_avg_;
   std::vector<SynchronousAverager> alpha_avg_, omega_avg_, normal_avg_, omega_sq_avg_;
   std::vector<std::unique_ptr<SpectrumAverager>> spectra_;
+
+  // Chunks on worker threads (chunk_dispatch.cpp). Declared last: the
+  // destructor waits for the chunks in flight before anything they read goes.
+  std::size_t threads_ = 1;
+  std::mutex workspace_mutex_;
+  std::vector<std::unique_ptr<ChunkWorkspace>> spare_workspaces_;
+  std::vector<std::vector<std::vector<double>>> spare_buffers_;  // detached buffers, back from their chunks
+  std::deque<std::future<ChunkOutcome>> in_flight_;
 };
 
 }  // namespace fourbar

@@ -102,6 +102,10 @@ struct AnalyzeOptions {
   /// with the ideal filter about kIdealChunkFrames (2^19) frames, the chunk
   /// being one period. Results do not depend on it.
   std::size_t chunk_revolutions = 0;
+  /// Chunks analysed at once, each on a thread of its own while acquire
+  /// reads on (chunked_analysis.hpp); 1: everything in the calling thread.
+  /// The result does not depend on it: bit for bit the same.
+  unsigned threads = 1;
   bool progress = true;  ///< progress bar on stderr when it is a terminal
   /// Run the set-up check (setup_check.hpp) on the finished analysis.
   bool setup_check = true;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "analyze/fftw_plan.hpp"
 #include "common/error.hpp"
@@ -103,27 +105,64 @@ SpectrumAverager::SpectrumAverager(double fs, const WelchOptions& o)
 SpectrumAverager::~SpectrumAverager() = default;
 
 void SpectrumAverager::push(std::span<const double> x) {
+  SegmentPowers none;
+  none.at = position_;
+  push(x, none);
+}
+
+void SpectrumAverager::push(std::span<const double> x, const SegmentPowers& powers) {
+  if (powers.at != position_)
+    throw std::logic_error("spectrum: segment powers of the piece at sample " + std::to_string(powers.at) +
+                           " pushed at sample " + std::to_string(position_));
+  position_ += x.size();
   while (!x.empty()) {
     const std::size_t take = std::min(x.size(), m_ - pending_.size());
     pending_.insert(pending_.end(), x.begin(), x.begin() + static_cast<std::ptrdiff_t>(take));
     x = x.subspan(take);
     if (pending_.size() == m_) {
-      run_segment();
+      run_segment(&powers);
       pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(step_));
     }
   }
 }
 
-void SpectrumAverager::restart() { pending_.clear(); }
+void SpectrumAverager::restart() {
+  pending_.clear();
+  position_ = since_restart_ = 0;
+}
 
-void SpectrumAverager::run_segment() {
-  const double mean = std::accumulate(pending_.begin(), pending_.end(), 0.0) / static_cast<double>(m_);
-  auto t = fft_->time();
-  for (std::size_t i = 0; i < m_; ++i) t[i] = (pending_[i] - mean) * window_[i];
-  fft_->forward();
-  const auto s = fft_->spectrum();
-  for (std::size_t k = 0; k < sum_.size(); ++k) sum_[k] += std::norm(s[k]);
+void SpectrumAverager::transform_segment(std::span<const double> segment, RealFft& fft) const {
+  const double mean = std::accumulate(segment.begin(), segment.end(), 0.0) / static_cast<double>(m_);
+  auto t = fft.time();
+  for (std::size_t i = 0; i < m_; ++i) t[i] = (segment[i] - mean) * window_[i];
+  fft.forward();
+}
+
+SpectrumAverager::SegmentPowers SpectrumAverager::segment_powers(std::span<const double> x, std::size_t at) const {
+  SegmentPowers out;
+  out.at = at;
+  out.first = (at + step_ - 1) / step_;
+  RealFft fft(m_);
+  for (std::size_t k = out.first; k * step_ + m_ <= at + x.size(); ++k) {
+    transform_segment(x.subspan(k * step_ - at, m_), fft);
+    const auto s = fft.spectrum();
+    std::vector<double>& p = out.power.emplace_back(s.size());
+    for (std::size_t b = 0; b < p.size(); ++b) p[b] = std::norm(s[b]);
+  }
+  return out;
+}
+
+void SpectrumAverager::run_segment(const SegmentPowers* powers) {
+  const std::size_t k = since_restart_++;
   ++segments_;
+  if (powers && k >= powers->first && k - powers->first < powers->power.size()) {
+    const std::vector<double>& p = powers->power[k - powers->first];
+    for (std::size_t b = 0; b < sum_.size(); ++b) sum_[b] += p[b];
+    return;
+  }
+  transform_segment(pending_, *fft_);
+  const auto s = fft_->spectrum();
+  for (std::size_t b = 0; b < sum_.size(); ++b) sum_[b] += std::norm(s[b]);
 }
 
 std::vector<double> SpectrumAverager::frequency_hz() const { return frequencies(m_, fs_); }

@@ -59,6 +59,23 @@ class SpectrumAverager {
   /// A break in the record: the partial segment is dropped.
   void restart();
 
+  /// |X|² of the segments that lie wholly inside one piece of the stream,
+  /// computed apart from the averager (on another thread) and summed later.
+  struct SegmentPowers {
+    std::size_t at = 0;                      ///< stream position of the piece
+    std::size_t first = 0;                   ///< index of the first segment since the last restart
+    std::vector<std::vector<double>> power;  ///< per segment, per bin
+  };
+  /// Samples pushed since the last restart (where the next push starts).
+  std::size_t position() const { return position_; }
+  /// The segments inside `x`, a piece of the stream starting at position
+  /// `at`. Reads only the window and the sizes: safe on several threads at once.
+  SegmentPowers segment_powers(std::span<const double> x, std::size_t at) const;
+  /// push(x) where the segments of `powers` are summed from it instead of
+  /// transformed again: bit for bit the same sums. `x` must be the piece
+  /// `powers` was computed from, at position() (else std::logic_error).
+  void push(std::span<const double> x, const SegmentPowers& powers);
+
   std::size_t segments() const { return segments_; }
   std::size_t segment_length() const { return m_; }
   std::vector<double> frequency_hz() const;
@@ -66,7 +83,9 @@ class SpectrumAverager {
   std::vector<double> psd() const;
 
  private:
-  void run_segment();
+  void run_segment(const SegmentPowers* powers);
+  /// The windowed segment, its mean removed, through `fft`.
+  void transform_segment(std::span<const double> segment, RealFft& fft) const;
 
   double fs_;
   std::size_t m_, step_;
@@ -76,6 +95,7 @@ class SpectrumAverager {
   std::vector<double> pending_;  // samples of the segment being filled
   std::vector<double> sum_;      // Σ|X_k|²
   std::size_t segments_ = 0;
+  std::size_t position_ = 0, since_restart_ = 0;  // samples and segments since the last restart
 };
 
 /// Order of each frequency: f / f_crank, with f_crank = |ω2|/2π.

@@ -6,11 +6,20 @@
 // nominal truth at the start and at the end of the record.
 //
 //   build/bench/bench_analyze_pipeline [SECONDS=3600] [FILE=/tmp/fourbar_bench_<SECONDS>s.wav] [--thesis]
+//                                      [--threads N]
 //
 // Generation and analysis each run in a child process, so the peak resident
 // memory reported (getrusage of the child) is the analysis's alone.
+// --threads N: each analysis runs twice, back to back, with 1 and with N
+// threads (AnalyzeOptions::threads): the wall-time ratio measured in one run
+// (so under the same machine load), and a digest of every number of the two
+// results (averages, spreads, spectra, every revolution's grids) that must
+// be equal bit for bit.
+
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -27,6 +36,31 @@ using namespace fourbar;
 using bench::ChildResult;
 using bench::in_child;
 
+/// FNV-1a over the bytes of doubles: equal digests, equal numbers (bit for bit).
+struct Digest {
+  std::uint64_t h = 1469598103934665603ull;
+  void add(double v) {
+    unsigned char b[sizeof v];
+    std::memcpy(b, &v, sizeof v);
+    for (unsigned char c : b) h = (h ^ c) * 1099511628211ull;
+  }
+  void add(std::span<const double> v) {
+    for (double x : v) add(x);
+  }
+};
+
+/// Every number of the result that the threads could change.
+void add_result(Digest& d, const RecordingAnalysis& r) {
+  d.add(double(r.revolutions)), d.add(double(r.spectra.segments));
+  d.add(r.crank_speed_rad_s.mean), d.add(r.crank_speed_rad_s.std);
+  for (const auto* l : {&r.coupler, &r.rocker}) {
+    if (!*l) continue;
+    const LinkResult& x = **l;
+    for (const AngleAverage* a : {&x.alpha_rad_s2, &x.omega_rad_s}) d.add(a->mean), d.add(a->std);
+    d.add(x.alpha_amplitude);
+  }
+}
+
 /// Per-revolution errors against the nominal truth, for the revolutions in
 /// the first and the last `window` of the record.
 class DriftCheck final : public RevolutionObserver {
@@ -41,6 +75,9 @@ class DriftCheck final : public RevolutionObserver {
   }
   void on_revolution(const AnalyzedRevolution& r) override {
     ++seen_;
+    digest_.add(double(r.number)), digest_.add(r.averaged ? 1.0 : 0.0);
+    for (const auto& v : {r.crank_speed_rad_s, r.alpha3_rad_s2, r.omega3_rad_s, r.alpha4_rad_s2, r.omega4_rad_s})
+      digest_.add(v);
     const bool early = r.number < window_, late = r.number + window_ + 2 >= total_;
     if (!early && !late) return;
     double e_w = 0, t_w = 0, e_a = 0, t_a = 0;
@@ -59,6 +96,7 @@ class DriftCheck final : public RevolutionObserver {
     std::size_t count = 0;
   } early_, late_;
   std::size_t seen_ = 0;
+  Digest digest_;
 
  private:
   CrankDrive drive_;
@@ -71,9 +109,11 @@ class DriftCheck final : public RevolutionObserver {
 
 int main(int argc, char** argv) {
   bool thesis = false;
+  unsigned threads = 1;
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--thesis") == 0) thesis = true;
+    else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) threads = static_cast<unsigned>(std::atoi(argv[++i]));
     else args.emplace_back(argv[i]);
   }
   const double seconds = !args.empty() ? std::atof(args[0].c_str()) : 3600.0;
@@ -84,34 +124,56 @@ int main(int argc, char** argv) {
   std::printf("file: %s, %.0f MB, %.0f frames\n", file.c_str(), double(std::filesystem::file_size(file)) / 1e6, frames);
   const std::size_t total_revs = static_cast<std::size_t>(seconds * 350 / 60);
   for (int method = 0; method < (thesis ? 2 : 1); ++method) {
-    const ChildResult a = in_child([&] {
-      AnalyzeOptions o = method == 0 ? AnalyzeOptions{} : AnalyzeOptions::thesis_method();
-      o.progress = false;
-      o.filter.mains_hz = 50;
-      DriftCheck drift(setup, 500, total_revs);
-      const auto t0 = std::chrono::steady_clock::now();
-      const RecordingAnalysis r = analyze_recording(file, {}, o, &drift);
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::printf("  %s: %zu revolutions averaged (N = %zu, %zu per chunk, kernel %zu taps), acquire passes %.1f + %.1f + "
-                  "%.1f s (the last includes the analysis)\n",
-                  method == 0 ? "this chain" : "thesis method", r.revolutions, r.grid_points_per_rev, r.chunk_revolutions,
-                  r.kernel_taps, r.acquisition.pass_seconds[0], r.acquisition.pass_seconds[1],
-                  r.acquisition.pass_seconds[2]);
-      std::printf("    alpha3 RMS %.3f rad/s^2, omega3 RMS %.4f rad/s; spread (std RMS) alpha3 %.3f, omega3 %.5f\n",
-                  r.coupler->alpha_rms_rad_s2, r.coupler->omega_rms_rad_s, r.coupler->alpha_std_rms_rad_s2,
-                  r.coupler->omega_std_rms_rad_s);
-      std::printf("    single revolutions vs truth, RMS error / RMS: first 500 revolutions omega3 %.4f %%, alpha3 %.4f %%; "
-                  "last 500: omega3 %.4f %%, alpha3 %.4f %% (%zu, %zu revolutions)\n",
-                  100 * drift.early_.omega / double(drift.early_.count), 100 * drift.early_.alpha / double(drift.early_.count),
-                  100 * drift.late_.omega / double(drift.late_.count), 100 * drift.late_.alpha / double(drift.late_.count),
-                  drift.early_.count, drift.late_.count);
-      std::printf("    analyze_recording %.1f s wall, %.2f M frames/s\n", wall, frames / wall / 1e6);
-      std::fflush(stdout);
-      return 0;
-    });
-    if (a.status != 0) return 1;
-    std::printf("  child: %.1f s wall, %.1f s CPU, %.2f M frames/s (wall), peak resident %.0f MB\n", a.wall_s, a.cpu_s,
-                frames / a.wall_s / 1e6, a.peak_mb);
+    double wall_one = 0;
+    std::uint64_t digest_one = 0;
+    for (const unsigned t : threads > 1 ? std::vector<unsigned>{1, threads} : std::vector<unsigned>{1}) {
+      int digest_pipe[2];
+      if (pipe(digest_pipe) != 0) return 1;
+      const ChildResult a = in_child([&] {
+        AnalyzeOptions o = method == 0 ? AnalyzeOptions{} : AnalyzeOptions::thesis_method();
+        o.progress = false;
+        o.filter.mains_hz = 50;
+        o.threads = t;
+        DriftCheck drift(setup, 500, total_revs);
+        const auto t0 = std::chrono::steady_clock::now();
+        const RecordingAnalysis r = analyze_recording(file, {}, o, &drift);
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("  %s, %u thread%s: %zu revolutions averaged (N = %zu, %zu per chunk, kernel %zu taps), acquire "
+                    "passes %.1f + %.1f + %.1f s (the last includes the analysis)\n",
+                    method == 0 ? "this chain" : "thesis method", t, t == 1 ? "" : "s", r.revolutions,
+                    r.grid_points_per_rev, r.chunk_revolutions, r.kernel_taps, r.acquisition.pass_seconds[0],
+                    r.acquisition.pass_seconds[1], r.acquisition.pass_seconds[2]);
+        std::printf("    alpha3 RMS %.3f rad/s^2, omega3 RMS %.4f rad/s; spread (std RMS) alpha3 %.3f, omega3 %.5f\n",
+                    r.coupler->alpha_rms_rad_s2, r.coupler->omega_rms_rad_s, r.coupler->alpha_std_rms_rad_s2,
+                    r.coupler->omega_std_rms_rad_s);
+        std::printf("    single revolutions vs truth, RMS error / RMS: first 500 revolutions omega3 %.4f %%, alpha3 %.4f "
+                    "%%; last 500: omega3 %.4f %%, alpha3 %.4f %% (%zu, %zu revolutions)\n",
+                    100 * drift.early_.omega / double(drift.early_.count),
+                    100 * drift.early_.alpha / double(drift.early_.count),
+                    100 * drift.late_.omega / double(drift.late_.count), 100 * drift.late_.alpha / double(drift.late_.count),
+                    drift.early_.count, drift.late_.count);
+        rusage self{};
+        getrusage(RUSAGE_THREAD, &self);
+        std::printf("    analyze_recording %.1f s wall, %.2f M frames/s; calling thread CPU %.1f s\n", wall, frames / wall / 1e6,
+                    double(self.ru_utime.tv_sec + self.ru_stime.tv_sec) + 1e-6 * double(self.ru_utime.tv_usec + self.ru_stime.tv_usec));
+        std::fflush(stdout);
+        add_result(drift.digest_, r);
+        return write(digest_pipe[1], &drift.digest_.h, sizeof drift.digest_.h) == sizeof drift.digest_.h ? 0 : 1;
+      });
+      std::uint64_t digest = 0;
+      const bool got = a.status == 0 && read(digest_pipe[0], &digest, sizeof digest) == sizeof digest;
+      close(digest_pipe[0]), close(digest_pipe[1]);
+      if (!got) return 1;
+      std::printf("  child: %.1f s wall, %.1f s CPU, %.2f M frames/s (wall), peak resident %.0f MB; result digest %016llx\n",
+                  a.wall_s, a.cpu_s, frames / a.wall_s / 1e6, a.peak_mb, static_cast<unsigned long long>(digest));
+      if (t == 1) {
+        wall_one = a.wall_s, digest_one = digest;
+      } else {
+        std::printf("  %u threads / 1 thread: wall %.1f / %.1f s = %.2f; results %s\n", t, a.wall_s, wall_one,
+                    a.wall_s / wall_one, digest == digest_one ? "identical (bit for bit)" : "DIFFER");
+        if (digest != digest_one) return 1;
+      }
+    }
   }
   return 0;
 }

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "analyze/analysis_defaults.hpp"
 #include "analyze/pipeline.hpp"
@@ -184,6 +185,7 @@ int run_analyze(const Invocation& inv) {
   std::string recording, manifest_file, out_dir, band = "bandpass", window, integration;
   double low = 0, high = 0, mains = 0, mains_width = 1, transition = 0;
   std::size_t points = 0, guard = 0, spectrum_segment = 0, chunk = 0;
+  int jobs = 0;
   bool thesis = false, per_revolution = false, strict = false, csv_comments = false;
   namespace d = analysis_defaults;
   const std::string low_help =
@@ -220,6 +222,8 @@ int run_analyze(const Invocation& inv) {
       "spectrum-segment", po::value(&spectrum_segment),
       "samples per spectrum segment (default: a power of two >= 8 revolutions)")(
       "chunk-revolutions", po::value(&chunk), chunk_help.c_str())(
+      "jobs,j", po::value(&jobs), "chunks analysed at once, one per core (default 0: every core); the outputs do not "
+                                  "depend on it")(
       "thesis", po::bool_switch(&thesis), "the thesis's processing, for comparison (see below)");
   add_csv_comments_option(opts, csv_comments);
   const std::string details = kDetailsBeforeDefaults + details_defaults() + kDetailsAfterDefaults;
@@ -242,6 +246,8 @@ int run_analyze(const Invocation& inv) {
   o.guard_revolutions = guard;
   o.spectrum_segment = spectrum_segment;
   o.chunk_revolutions = chunk;
+  if (jobs < 0) throw InputError("analyze: --jobs " + std::to_string(jobs) + " must be 1 or more (or 0 for every core)");
+  o.threads = jobs > 0 ? static_cast<unsigned>(jobs) : std::max(1u, std::thread::hardware_concurrency());
   o.keep_revolutions = false;
   validate_options(o);
 

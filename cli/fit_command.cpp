@@ -3,16 +3,20 @@
 // (docs/fit.md).
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <thread>
 
 #include "cli/command.hpp"
+#include "cluster/case_queue.hpp"
+#include "cluster/mpi_session.hpp"
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/progress.hpp"
 #include "fit/fit_json.hpp"
 #include "fit/session_fit.hpp"
+#include "fit/simulation_cache.hpp"
 #include "report/session_settings.hpp"
 
 namespace po = boost::program_options;
@@ -56,6 +60,28 @@ std::pair<double, double> parse_box(const std::string& option, const std::string
   }
 }
 
+/// What the simulations of each target depend on, in exact hexadecimal:
+/// equal on every rank, or the ranks would simulate different things.
+std::string operating_points(const std::vector<RecordingTarget>& targets) {
+  std::string text;
+  for (const RecordingTarget& t : targets) {
+    char line[512];
+    std::snprintf(line, sizeof line, "%a %a %zu %a %a | %d %a %a %a %a %d %a %a | %d %zu %zu %d %d %d %d\n",
+                  t.clearance_m, t.crank_speed_rad_s, t.grid.grid_points_per_rev, t.grid.start_rad, t.grid.direction,
+                  static_cast<int>(t.filter.band), t.filter.low_hz, t.filter.high_hz, t.filter.mains_hz,
+                  t.filter.mains_width_hz, static_cast<int>(t.filter.window.type), t.filter.window.parameter,
+                  t.filter.transition_hz, t.band_filter.has_value() ? 1 : 0, t.band_grid_points_per_rev, t.turns,
+                  t.measured[0].has_value() ? 1 : 0, t.measured[1].has_value() ? 1 : 0,
+                  t.measured_band[0].has_value() ? 1 : 0, t.measured_band[1].has_value() ? 1 : 0);
+    text += t.name + " " + line;
+    if (t.band_filter) {
+      std::snprintf(line, sizeof line, "band %a %a\n", t.band_filter->low_hz, t.band_filter->high_hz);
+      text += line;
+    }
+  }
+  return text;
+}
+
 }  // namespace
 
 int run_fit(const Invocation& inv) {
@@ -71,7 +97,7 @@ int run_fit(const Invocation& inv) {
       "friction", po::value(&friction_box), "box for mu, LOW:HIGH (default 0:0.5)")(
       "turns", po::value(&turns), "simulated turns per simulation kept (default: 2x the measured turns, at least 40)")(
       "warmup", po::value(&warmup), "simulated turns discarded before them (default 20)")(
-      "jobs,j", po::value(&jobs), "simulations at once (default: every core)")(
+      "jobs,j", po::value(&jobs), "simulations (and analysis chunks) at once (default: every core; under MPI one per rank)")(
       "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
   po::positional_options_description pos;
   pos.add("session", 1);
@@ -96,9 +122,17 @@ int run_fit(const Invocation& inv) {
   const SessionFiles files = find_session_files(session);
   if (files.recordings.empty())
     throw InputError("fit: " + session.string() + ": no recordings (.wav .flac .csv ...) in the folder");
+  // Under MPI every rank analyses the recordings (each needs the targets to
+  // simulate them), each with one thread (a rank per core); only rank 0
+  // talks, searches and writes. The ranks check that they got the same
+  // operating points before any simulation relies on it.
+  const MpiSession& mpi = MpiSession::get();
+  if (!mpi.leader()) quiet = true;
+  if (mpi.distributed()) o.threads = static_cast<unsigned>(mpi.size());  // simulations at once
   AnalyzeOptions analysis = settings.analysis;
   analysis.keep_revolutions = true;
   analysis.progress = false;
+  analysis.threads = mpi.distributed() ? 1 : o.threads;  // (before the search: the cores are free)
   std::vector<RecordingTarget> targets;
   std::size_t max_turns = 0;
   Progress bar("fit: analysing", files.recordings.size(), !quiet);
@@ -114,11 +148,15 @@ int run_fit(const Invocation& inv) {
       targets.push_back(make_recording_target(a, band ? &*band : nullptr, rec.filename().string()));
       max_turns = std::max(max_turns, targets.back().turns);
     } catch (const std::exception& e) {
-      std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
+      if (mpi.leader()) std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
     }
   }
   bar.finish();
   if (targets.empty()) throw RunError("fit: no recording of " + session.string() + " could be analysed");
+  if (!mpi.same_on_every_rank(operating_points(targets)))
+    throw RunError("fit: the MPI ranks analysed the recordings of " + session.string() +
+                   " to different operating points (different hardware or fourbar builds on the nodes?); run every "
+                   "rank with the same build on the same kind of node");
   if (turns == 0) o.simulated_turns = std::max<int>(40, static_cast<int>(2 * max_turns));
 
   const double effect = clearance_effect_ratio(targets);
@@ -128,6 +166,12 @@ int run_fit(const Invocation& inv) {
                    "stands at most " + format_number(effect, 2) +
                    "x above the sensor-noise floor; impacts need " + format_number(kEffectRatio, 2) +
                    "x): nothing to fit. Record at a larger clearance or higher speed, or check the sensors");
+
+  if (!mpi.leader()) {  // the simulations rank 0 hands out, until its search is done
+    serve_described_cases(
+        [&](const std::string& description) { return SimulationCache::simulate_described(targets, description); });
+    return 0;
+  }
 
   const TheorySettings& t = settings.theory;
   const ContactParameters prior{t.restitution, t.contact, t.friction_coefficient};
@@ -159,6 +203,8 @@ int run_fit(const Invocation& inv) {
     report("session", f);
     result = fit_to_json(f, targets, prior, o);
   }
+  end_described_cases();  // the other ranks stop serving
+  result["mpi_ranks"] = mpi.size();
   result["session"] = session.string();
   result["clearance_effect_ratio"] = effect;
   result["command_line"] = inv.command_line;

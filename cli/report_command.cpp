@@ -67,7 +67,8 @@ int run_report(const Invocation& inv) {
       "out,o", po::value(&out), "report to write (default SESSION_DIR/report/report.html)")(
       "cache", po::value(&cache), "cache folder (default: .fourbar-cache beside the report)")(
       "no-cache", po::bool_switch(&no_cache), "recompute everything; read and write no cache")(
-      "jobs,j", po::value(&jobs), "recordings processed at once (default: every core); the outputs do not depend on it")(
+      "jobs,j", po::value(&jobs), "cores to use (default: every core): that many recordings at once, or fewer "
+                                  "recordings each on its share of the cores; the outputs do not depend on it")(
       "quiet,q", po::bool_switch(&quiet), "no progress on stderr")(
       "fit", po::value(&fit), "fit.json of `fourbar fit` (default SESSION_DIR/fit/fit.json when it exists)")(
       "no-fit", po::bool_switch(&no_fit), "no fitted theory, even when SESSION_DIR/fit/fit.json exists")(

@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <exception>
 #include <iostream>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -71,17 +73,25 @@ CaseQueueStats run_on_threads(std::span<const std::size_t> cases, unsigned threa
 
 enum Tag : int { kRequest = 1, kWork = 2, kStop = 3, kResult = 4 };
 
+/// A case as the worker ranks get it: its index, and its description when it has one.
+using WorkerCompute = std::function<std::string(std::size_t index, const std::string& description)>;
+
 /// Every rank but 0: ask, compute, send the result back (which asks again).
-CaseQueueStats run_worker_rank(const MpiSession& mpi, const CaseCompute& compute) {
+CaseQueueStats run_worker_rank(const MpiSession& mpi, const WorkerCompute& compute) {
   CaseQueueStats stats{0, 0, mpi.size(), 1};
   MPI_Send(nullptr, 0, MPI_BYTE, 0, kRequest, MPI_COMM_WORLD);
-  std::string message;
+  std::string message, work;
   for (;;) {
-    std::uint64_t index = 0;
     MPI_Status status;
-    MPI_Recv(&index, 1, MPI_UINT64_T, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+    MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    work.resize(static_cast<std::size_t>(bytes));
+    MPI_Recv(work.data(), bytes, MPI_BYTE, 0, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (status.MPI_TAG == kStop) break;
-    std::string result = compute(static_cast<std::size_t>(index));
+    std::uint64_t index = 0;
+    std::memcpy(&index, work.data(), sizeof index);
+    std::string result = compute(static_cast<std::size_t>(index), work.substr(sizeof index));
     message.resize(sizeof index + result.size());
     std::memcpy(message.data(), &index, sizeof index);
     std::memcpy(message.data() + sizeof index, result.data(), result.size());
@@ -94,7 +104,7 @@ CaseQueueStats run_worker_rank(const MpiSession& mpi, const CaseCompute& compute
 /// Rank 0: serves the other ranks from the main thread (the only one that
 /// calls MPI) while a thread of its own computes cases too.
 CaseQueueStats run_leader_rank(const MpiSession& mpi, std::span<const std::size_t> cases, const CaseCompute& compute,
-                               const CaseDone& done) {
+                               const CaseDone& done, const std::vector<std::string>* descriptions = nullptr) {
   CaseCursor cursor(cases);
   std::mutex local_mutex;
   std::deque<std::pair<std::size_t, std::string>> local_results;
@@ -112,6 +122,7 @@ CaseQueueStats run_leader_rank(const MpiSession& mpi, std::span<const std::size_
 
   int serving = mpi.size() - 1;
   std::vector<char> buffer;
+  std::string work;
   auto drain_local = [&] {
     std::deque<std::pair<std::size_t, std::string>> ready;
     {
@@ -140,7 +151,9 @@ CaseQueueStats run_leader_rank(const MpiSession& mpi, std::span<const std::size_
         }
         if (const auto next = cursor.take()) {
           const std::uint64_t index = *next;
-          MPI_Send(&index, 1, MPI_UINT64_T, status.MPI_SOURCE, kWork, MPI_COMM_WORLD);
+          work.assign(reinterpret_cast<const char*>(&index), sizeof index);
+          if (descriptions) work += (*descriptions)[*next];
+          MPI_Send(work.data(), static_cast<int>(work.size()), MPI_BYTE, status.MPI_SOURCE, kWork, MPI_COMM_WORLD);
         } else {
           MPI_Send(nullptr, 0, MPI_BYTE, status.MPI_SOURCE, kStop, MPI_COMM_WORLD);
           --serving;
@@ -175,10 +188,59 @@ CaseQueueStats run_case_queue(std::span<const std::size_t> cases, unsigned threa
 #if FOURBAR_HAVE_MPI
   const MpiSession& mpi = MpiSession::get();
   if (mpi.distributed()) {
-    return mpi.leader() ? run_leader_rank(mpi, cases, compute, done) : run_worker_rank(mpi, compute);
+    return mpi.leader() ? run_leader_rank(mpi, cases, compute, done)
+                        : run_worker_rank(mpi, [&](std::size_t i, const std::string&) { return compute(i); });
   }
 #endif
   return run_on_threads(cases, threads, compute, done);
+}
+
+namespace {
+#if FOURBAR_HAVE_MPI
+/// Rank 0 tells the others whether another batch of described cases follows.
+void announce_batch(bool another) {
+  int go = another ? 1 : 0;
+  MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+}
+#endif
+}  // namespace
+
+CaseQueueStats run_described_cases(const std::vector<std::string>& descriptions, unsigned threads,
+                                   const DescribedCaseCompute& compute, const CaseDone& done) {
+  std::vector<std::size_t> cases(descriptions.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) cases[i] = i;
+  const CaseCompute by_index = [&](std::size_t i) { return compute(descriptions[i]); };
+#if FOURBAR_HAVE_MPI
+  const MpiSession& mpi = MpiSession::get();
+  if (mpi.distributed()) {
+    if (!mpi.leader()) throw std::logic_error("run_described_cases on a rank other than 0 (serve_described_cases there)");
+    announce_batch(true);
+    return run_leader_rank(mpi, cases, by_index, done, &descriptions);
+  }
+#endif
+  return run_on_threads(cases, threads, by_index, done);
+}
+
+void serve_described_cases(const DescribedCaseCompute& compute) {
+#if FOURBAR_HAVE_MPI
+  const MpiSession& mpi = MpiSession::get();
+  if (!mpi.distributed() || mpi.leader()) return;
+  for (;;) {
+    int go = 0;
+    MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (!go) return;
+    run_worker_rank(mpi, [&](std::size_t, const std::string& description) { return compute(description); });
+  }
+#else
+  (void)compute;
+#endif
+}
+
+void end_described_cases() {
+#if FOURBAR_HAVE_MPI
+  const MpiSession& mpi = MpiSession::get();
+  if (mpi.distributed() && mpi.leader()) announce_batch(false);
+#endif
 }
 
 }  // namespace fourbar

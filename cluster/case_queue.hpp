@@ -15,6 +15,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace fourbar {
 
@@ -38,5 +39,23 @@ struct CaseQueueStats {
 /// rank computes one case at a time.
 CaseQueueStats run_case_queue(std::span<const std::size_t> cases, unsigned threads, const CaseCompute& compute,
                               const CaseDone& done);
+
+/// Computes the case a description gives (a case only rank 0 knows, such as
+/// a fit's next evaluations, chosen as the search goes); returns its result as
+/// bytes. Must not throw for a case that fails (encode the failure); an
+/// exception is a fault of the run (every rank is stopped).
+using DescribedCaseCompute = std::function<std::string(const std::string& description)>;
+
+/// Batches of described cases: rank 0 calls run_described_cases for each
+/// batch as its work needs them and end_described_cases once at the end;
+/// every other rank calls serve_described_cases, which computes cases of
+/// every batch and returns after end_described_cases. Each case travels with
+/// its description, so the other ranks need to know nothing of the search.
+/// Without a distributed session the batch runs on `threads` threads (the
+/// other two calls return at once).
+CaseQueueStats run_described_cases(const std::vector<std::string>& descriptions, unsigned threads,
+                                   const DescribedCaseCompute& compute, const CaseDone& done);
+void serve_described_cases(const DescribedCaseCompute& compute);
+void end_described_cases();
 
 }  // namespace fourbar

@@ -43,6 +43,22 @@ std::string MpiSession::describe() const {
   return std::to_string(size_) + (size_ == 1 ? " MPI rank" : " MPI ranks");
 }
 
+bool MpiSession::same_on_every_rank(const std::string& text) const {
+#if FOURBAR_HAVE_MPI
+  if (!distributed()) return true;
+  unsigned long long length = text.size();
+  MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+  std::string leaders = leader() ? text : std::string(length, '\0');
+  MPI_Bcast(leaders.data(), static_cast<int>(length), MPI_BYTE, 0, MPI_COMM_WORLD);
+  int same = leaders == text ? 1 : 0, all = 0;
+  MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  return all == 1;
+#else
+  (void)text;
+  return true;
+#endif
+}
+
 void MpiSession::abort_all(int exit_code) {
 #if FOURBAR_HAVE_MPI
   int up = 0, down = 0;

@@ -23,6 +23,10 @@ class MpiSession {
   bool leader() const { return rank_ == 0; }
   /// "3 MPI ranks" or "no MPI" (for messages).
   std::string describe() const;
+  /// Collective (every rank calls it): whether `text` is the same on every
+  /// rank as on rank 0 — inputs each rank derived on its own, checked before
+  /// the ranks rely on them being equal. Always true without a distributed session.
+  bool same_on_every_rank(const std::string& text) const;
 
   /// Ends every rank at once (MPI_Abort) when one fails while the others
   /// may be waiting for it; a no-op without a distributed session.

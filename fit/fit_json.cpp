@@ -88,6 +88,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
             {"smooth_model", {{"fitted", f.surrogate_ok}, {"residual_rms", f.surrogate_residual_rms}}},
             {"evaluations", f.evaluations},
             {"simulations", f.simulations},
+            {"simulations_on_rank_0", f.simulations_on_rank_0},
             {"turns_per_simulation", o.warmup_turns + o.simulated_turns},
             {"warmup_turns", o.warmup_turns},
             {"simulated_turns", o.simulated_turns},

@@ -342,6 +342,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
                         "intervals, which assume the model describes the measurement, are not uncertainties");
   }
   out.simulations = cache.simulations();
+  out.simulations_on_rank_0 = cache.computed_here();
   out.turns_simulated = cache.turns_simulated();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;

@@ -90,6 +90,7 @@ struct FitResult {
   std::vector<RecordingFitTerm> recordings;
   int evaluations = 0;       ///< objective evaluations (NLopt + profile)
   int simulations = 0;       ///< simulations run (cache misses)
+  int simulations_on_rank_0 = 0;  ///< of these, run by this process (fewer under MPI: the other ranks ran the rest)
   long long turns_simulated = 0;
   double seconds = 0;        ///< wall time
   double cpu_seconds = 0;    ///< CPU time of the process over the fit (all threads)

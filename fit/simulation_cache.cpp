@@ -1,6 +1,8 @@
 #include "fit/simulation_cache.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -71,7 +73,41 @@ CachedSimulation decode(const std::string& in) {
   return c;
 }
 
+/// What a rank needs to run one simulation: the recording's name, the
+/// parameters as simulated and the settings, doubles in exact hexadecimal.
+std::string describe(const std::string& name, const ContactParameters& p, const SimulationSettings& s) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%a %d %a %d %d %a\n", p.restitution, static_cast<int>(p.contact),
+                p.friction_coefficient, s.warmup_turns, s.simulated_turns, s.tolerance);
+  return line + name;
+}
+
 }  // namespace
+
+std::string SimulationCache::simulate_described(const std::vector<RecordingTarget>& targets,
+                                                const std::string& description) {
+  const auto eol = description.find('\n');
+  ContactParameters p;
+  SimulationSettings s;
+  int contact = 0;
+  if (eol == std::string::npos ||
+      std::sscanf(description.c_str(), "%la %d %la %d %d %la", &p.restitution, &contact, &p.friction_coefficient,
+                  &s.warmup_turns, &s.simulated_turns, &s.tolerance) != 6)
+    throw RunError("fit: internal error: unreadable simulation case '" + description + "'");
+  p.contact = static_cast<ContactLaw>(contact);
+  const std::string name = description.substr(eol + 1);
+  const auto target = std::find_if(targets.begin(), targets.end(), [&](const RecordingTarget& t) { return t.name == name; });
+  if (target == targets.end())
+    throw RunError("fit: internal error: this rank has no recording named '" + name + "' to simulate");
+  CachedSimulation c;
+  try {
+    c.statistics = simulate_statistics(*target, p, s.warmup_turns, s.simulated_turns, s.tolerance);
+  } catch (const std::exception& e) {
+    c.error = e.what();
+    if (c.error.empty()) c.error = "failed";
+  }
+  return encode(c);
+}
 
 SimulationCache::SimulationCache(const std::vector<RecordingTarget>& targets, SimulationSettings settings)
     : targets_(targets), settings_(settings) {}
@@ -102,25 +138,15 @@ void SimulationCache::ensure(const std::vector<ContactParameters>& points) {
       todo.emplace_back(r, canonical(p));
     }
   if (todo.empty()) return;
-  std::vector<std::size_t> cases(todo.size());
-  for (std::size_t i = 0; i < cases.size(); ++i) cases[i] = i;
+  std::vector<std::string> cases;
+  for (const auto& [r, p] : todo) cases.push_back(describe(targets_[r].name, p, settings_));
   const auto t0 = std::chrono::steady_clock::now();
-  run_case_queue(
-      cases, settings_.threads,
-      [&](std::size_t i) {
-        CachedSimulation c;
-        try {
-          c.statistics = simulate_statistics(targets_[todo[i].first], todo[i].second, settings_.warmup_turns,
-                                             settings_.simulated_turns, settings_.tolerance);
-        } catch (const std::exception& e) {
-          c.error = e.what();
-          if (c.error.empty()) c.error = "failed";
-        }
-        return encode(c);
-      },
+  const CaseQueueStats stats = run_described_cases(
+      cases, settings_.threads, [&](const std::string& description) { return simulate_described(targets_, description); },
       [&](std::size_t i, std::string&& bytes) { cache_[key(todo[i].first, todo[i].second)] = decode(bytes); });
   compute_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   simulations_ += static_cast<int>(todo.size());
+  computed_here_ += static_cast<int>(stats.computed_here);
   turns_ += static_cast<long long>(todo.size()) * (settings_.warmup_turns + settings_.simulated_turns);
 }
 

@@ -1,6 +1,9 @@
 #pragma once
 // The fit's simulations, cached by (recording, e, μ) and computed in
-// batches over the threads or MPI ranks of cluster/case_queue. The
+// batches over the threads or MPI ranks of cluster/case_queue (described
+// cases: each travels as its recording's name, the parameters and the
+// simulation settings in exact hexadecimal, so a rank needs only the
+// recordings' targets: simulate_described). The
 // parameters are rounded to 1e-6 before they key the cache and before they
 // are simulated, so a point asked for twice is simulated once and gives the
 // same statistics.
@@ -41,7 +44,15 @@ class SimulationCache {
   /// A simulated pair (ensure() first).
   const CachedSimulation& at(std::size_t recording, const ContactParameters& p) const;
 
+  /// The simulation a case description names, among `targets` (by name),
+  /// as encoded result bytes: what every rank computes for ensure(). A
+  /// simulation that fails is a result (its reason); a description naming
+  /// no target throws RunError.
+  static std::string simulate_described(const std::vector<RecordingTarget>& targets, const std::string& description);
+
   int simulations() const { return simulations_; }
+  /// Of these, run by this process (under MPI: rank 0's own share).
+  int computed_here() const { return computed_here_; }
   long long turns_simulated() const { return turns_; }
   double compute_seconds() const { return compute_s_; }
   const std::vector<RecordingTarget>& targets() const { return targets_; }
@@ -53,7 +64,7 @@ class SimulationCache {
   const std::vector<RecordingTarget>& targets_;
   SimulationSettings settings_;
   std::map<Key, CachedSimulation> cache_;
-  int simulations_ = 0;
+  int simulations_ = 0, computed_here_ = 0;
   long long turns_ = 0;
   double compute_s_ = 0;
 };

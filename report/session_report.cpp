@@ -160,7 +160,13 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     return std::move(r);
   };
   std::vector<json> computed(n);
-  const std::size_t jobs = std::clamp<std::size_t>(o.jobs > 0 ? o.jobs : default_jobs(), 1, n);
+  // `jobs` is the number of cores to use: as many recordings at once (at
+  // most all of them), each analysed on its share of the cores, so that
+  // fewer recordings than cores (one long recording) still use them all and
+  // no more than `jobs` compute at once.
+  const std::size_t cores = o.jobs > 0 ? o.jobs : default_jobs();
+  const std::size_t jobs = std::clamp<std::size_t>(cores, 1, n);
+  analysis.threads = static_cast<unsigned>(std::max<std::size_t>(1, cores / jobs));
   {
     std::atomic<std::size_t> next{0}, done{0};
     Progress bar("report", n, o.progress);

@@ -22,7 +22,9 @@ struct ReportOptions {
   std::filesystem::path cache_dir;  ///< empty: <out dir>/.fourbar-cache
   bool use_cache = true;
   bool progress = true;             ///< per-recording progress on stderr when it is a terminal
-  std::size_t jobs = 0;             ///< recordings processed at once; 0: default_jobs()
+  /// Cores used (0: default_jobs()): min(jobs, recordings) recordings at
+  /// once, each analysed on jobs / that many threads (AnalyzeOptions::threads).
+  std::size_t jobs = 0;
   std::string command_line;         ///< for provenance
   bool csv_comments = false;        ///< provenance also as `#` lines above the CSV headers
   /// A `fourbar fit` result: the theory is simulated a second time at its
@@ -41,7 +43,7 @@ struct ReportOutcome {
   std::string verdict_table;  ///< recordings, status, verdict words and a, aligned (report/verdict_table.hpp)
 };
 
-/// Recordings processed at once by default: every core.
+/// Cores used by default: every core.
 std::size_t default_jobs();
 
 /// Runs the whole session. Recordings are processed `jobs` at a time; the

@@ -5,7 +5,9 @@
 
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "analyze/spectrum.hpp"
@@ -78,6 +80,37 @@ TEST(Spectrum, WelchEqualsDirectPeriodogramAverage) {
   }
   EXPECT_EQ(segs, 7);  // (230 − 64)/24 + 1
   for (std::size_t k = 0; k <= 32; ++k) EXPECT_NEAR(s.value[k], ref[k] / segs, 1e-12 * (1 + ref[k])) << k;
+}
+
+// The stream in pieces whose inner segments were transformed apart
+// (segment_powers, as the chunks of an analysis on several threads do) sums
+// to the same spectrum as pushing the samples alone, bit for bit; a piece
+// given at the wrong position is refused.
+TEST(Spectrum, SegmentPowersComputedApartSumTheSame) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> d(0, 1);
+  std::vector<double> x(5000);
+  for (double& v : x) v = d(rng) + 0.5;
+  const WelchOptions o{256, 128, {WindowType::hann, 0}};
+  SpectrumAverager plain(1000, o), apart(1000, o);
+  const std::size_t cuts[] = {0, 300, 301, 1400, 1900, 3333, 5000};  // inside, across and at segment ends
+  for (std::size_t i = 0; i + 1 < std::size(cuts); ++i) {
+    const std::span<const double> piece = std::span(x).subspan(cuts[i], cuts[i + 1] - cuts[i]);
+    plain.push(piece);
+    const SpectrumAverager::SegmentPowers p = apart.segment_powers(piece, cuts[i]);
+    if (piece.size() >= 2 * o.segment_length) EXPECT_FALSE(p.power.empty());
+    apart.push(piece, p);
+  }
+  ASSERT_EQ(plain.segments(), apart.segments());
+  EXPECT_EQ(plain.segments(), (5000u - 256) / 128 + 1);
+  const std::vector<double> a = plain.amplitude(), b = apart.amplitude();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+  // A restart begins a new stream at position 0.
+  apart.restart();
+  EXPECT_EQ(apart.position(), 0u);
+  const auto p = apart.segment_powers(std::span(x).subspan(0, 600), 100);
+  EXPECT_THROW(apart.push(std::span(x).subspan(0, 600), p), std::logic_error);
 }
 
 TEST(Spectrum, OrderAxisAndBadInput) {
