@@ -119,6 +119,13 @@ int run_fit(const Invocation& inv) {
 
   const std::filesystem::path session = dir;
   const SessionSettings settings = load_session_settings(session);
+  // fit varies the three-mode model's e and μ; a compliant theory would be fitted as another model.
+  bool compliant = settings.theory.model == ClearanceKind::compliant;
+  for (const auto& [name, t] : settings.theory_by_recording) compliant = compliant || t.model == ClearanceKind::compliant;
+  if (compliant)
+    throw InputError("fit: " + settings.file.string() + ": [theory] model = \"compliant\": fourbar fit fits the "
+                     "three-mode model's restitution and friction only (the compliant contact is not fitted); "
+                     "remove model (and the compliant keys) from session.toml to fit, or use fourbar report");
   const SessionFiles files = find_session_files(session);
   if (files.recordings.empty())
     throw InputError("fit: " + session.string() + ": no recordings (.wav .flac .csv ...) in the folder");

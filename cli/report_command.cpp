@@ -33,9 +33,15 @@ Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
   [analysis] grid_points_per_rev, low_hz, high_hz, mains_hz, mains_width_hz,
              window ("kaiser:8"), transition_hz, guard_revolutions,
              integration ("spectral" | "closed_trapezoid" | "trapezoid");
-  [theory]   restitution, contact ("smooth" | "rough" | "stick-slip"),
+  [theory]   model ("three-mode" | "compliant"), restitution,
+             contact ("smooth" | "rough" | "stick-slip"; three-mode),
              friction_coefficient, warmup_revolutions (20),
              averaged_revolutions (20), tolerance (1e-8), max_order (50);
+             with model = "compliant" instead of contact the scene's compliant
+             keys: damping, contact_stiffness_N_per_m_n (absent: from the
+             recording's rig bearing), contact_exponent,
+             friction_stick_speed_mm_s, friction_slip_speed_mm_s,
+             damping_floor_speed_mm_s (README "Compliant contact");
   [[recording]] file = "REC.flac" and any [theory] key for that recording.
 
 With a `fourbar fit` result (--fit FIT.json, or SESSION_DIR/fit/fit.json,

@@ -6,6 +6,8 @@
 #include "analyze/fft_filter.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "sim/clearance/compliant_simulator.hpp"
+#include "sim/clearance/contact_stiffness.hpp"
 #include "sim/clearance/crank_motion.hpp"
 #include "sim/clearance/simulator.hpp"
 #include "mechanism/kinematics.hpp"
@@ -22,6 +24,31 @@ double wrap_deg(double deg) {
 void check(bool ok, const std::string& key, double value, const std::string& rule) {
   if (!ok) throw InputError("theory setting '" + key + "' = " + std::to_string(value) + ": " + rule);
 }
+
+/// The run's settings from the theory's: the three-mode impact law, or the
+/// compliant contact with its stiffness resolved from the rig's bearing.
+ClearanceSettings clearance_settings(const Rig& rig, double clearance_m, const TheorySettings& settings) {
+  ClearanceSettings cs;
+  cs.radial_clearance_m = clearance_m;
+  cs.model = settings.model;
+  cs.restitution = settings.restitution;
+  cs.contact = settings.contact;
+  cs.friction_coefficient = settings.friction_coefficient;
+  cs.tolerance = settings.tolerance;
+  if (settings.model == ClearanceKind::compliant) {
+    cs.compliant = settings.compliant;
+    const std::string source = settings.source.empty() ? std::string("[theory]") : settings.source;
+    resolve_contact_stiffness(rig, clearance_m, cs, [&](const char* key, const std::string& what) {
+      throw InputError("theory setting '" + std::string(key) + "' (" + source + ") " + what);
+    });
+  }
+  return cs;
+}
+
+/// The averaged turns of either clearance simulator (same interface).
+template <class Simulator>
+void run_model(Simulator& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
+               MatchedTheory& out);
 
 }  // namespace
 
@@ -40,8 +67,7 @@ MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double
   out.crank_speed_rad_s = crank_speed_rad_s;
   out.clearance_m = clearance_m;
   out.settings = settings;
-  const std::size_t n = grid.grid_points_per_rev, turns = static_cast<std::size_t>(settings.averaged_revolutions);
-  const int warm = settings.warmup_revolutions;
+  const std::size_t n = grid.grid_points_per_rev;
   const double w = std::abs(crank_speed_rad_s);
   const double cell_s = units::kTwoPi / (static_cast<double>(n) * w);  // time between grid points
 
@@ -59,15 +85,27 @@ MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double
 
   // Clearance model: the nominal start at the grid's first angle, `warm`
   // turns, then samples at every half grid cell of the averaged turns.
-  ClearanceSettings cs;
-  cs.radial_clearance_m = clearance_m;
-  cs.restitution = settings.restitution;
-  cs.contact = settings.contact;
-  cs.friction_coefficient = settings.friction_coefficient;
-  cs.tolerance = settings.tolerance;
+  const ClearanceSettings cs = clearance_settings(rig, clearance_m, settings);
+  out.settings.compliant = cs.compliant;  // with the stiffness it used
   const ClearanceModel model(rig, clearance_m);
   const ConstantSpeedCrank crank(grid.start_rad, crank_speed_rad_s);
-  ClearanceSimulator sim(model, crank, cs);
+  if (cs.model == ClearanceKind::compliant) {
+    CompliantSimulator sim(model, crank, cs);
+    run_model(sim, grid, crank, settings, out);
+  } else {
+    ClearanceSimulator sim(model, crank, cs);
+    run_model(sim, grid, crank, settings, out);
+  }
+  return out;
+}
+
+namespace {
+
+template <class Simulator>
+void run_model(Simulator& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
+               MatchedTheory& out) {
+  const std::size_t n = grid.grid_points_per_rev, turns = static_cast<std::size_t>(settings.averaged_revolutions);
+  const int warm = settings.warmup_revolutions;
   sim.set_revolution_origin(grid.start_rad);
   sim.start_nominal(0.0);
   auto time_at = [&](double turns_from_start) {
@@ -103,11 +141,9 @@ MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double
     b.revolution = r.revolution - warm;
     b.turned_deg = wrap_deg(units::rad_to_deg(grid.direction * (r.crank_angle_rad - grid.start_rad)));
     b.normal_impulse_Ns = r.result.normal_impulse_Ns;
-    const double th3 = std::atan2(r.result.after.u3.y, r.result.after.u3.x);
-    const double th4 = std::atan2(r.result.after.u4.y, r.result.after.u4.x);
     b.global_deg = wrap_deg(units::rad_to_deg(r.eta_rad));
-    b.pin_deg = wrap_deg(units::rad_to_deg(r.eta_rad - th3));
-    b.bushing_deg = wrap_deg(units::rad_to_deg(r.eta_rad - th4));
+    b.pin_deg = wrap_deg(units::rad_to_deg(r.eta_rad - r.theta3_rad));
+    b.bushing_deg = wrap_deg(units::rad_to_deg(r.eta_rad - r.theta4_rad));
     out.impacts.push_back(b);
   }
   TheorySeverity& sv = out.severity;
@@ -129,8 +165,9 @@ MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double
   ClearanceDiagnostics d = sim.diagnostics();
   out.energy_residual_rel = d.energy_scale_J > 0 ? d.max_energy_residual_J / d.energy_scale_J : 0.0;
   out.max_penetration_rel = d.max_penetration;
-  return out;
 }
+
+}  // namespace
 
 void apply_pass_band(MatchedTheory& theory, const FilterSpec& spec_in) {
   const std::size_t n = theory.grid.grid_points_per_rev;

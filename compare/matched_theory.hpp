@@ -1,8 +1,10 @@
 #pragma once
 // The theory matched to a measurement (thesis ch. 8): the nominal mechanism
-// and the three-mode clearance model at the measured operating point (mean
-// crank speed of the analysed revolutions, the recording's clearance, the
-// impact law e, μ), both on the measurement's crank-angle grid.
+// and a clearance model — the three-mode model, or the compliant contact
+// (model = "compliant", README "Compliant contact") — at the measured
+// operating point (mean crank speed of the analysed revolutions, the
+// recording's clearance, the contact law), both on the measurement's
+// crank-angle grid.
 //
 // The clearance model's following mode is undamped, so a strict steady state
 // is rarely reached (docs/clearance-model.md: not within 300 turns for
@@ -30,13 +32,20 @@
 namespace fourbar {
 
 struct TheorySettings {
+  ClearanceKind model = ClearanceKind::three_mode;
   double restitution = 0.5;                ///< Newton e (thesis ch. 8 suggests e < 1; the bushing is brass)
-  ContactLaw contact = ContactLaw::smooth;
-  double friction_coefficient = 0.0;       ///< Coulomb μ (stick-slip only)
+  ContactLaw contact = ContactLaw::smooth;  ///< three-mode only
+  double friction_coefficient = 0.0;       ///< Coulomb μ (three-mode: stick-slip only; compliant: the wall's)
+  /// model = compliant: the contact law. A stiffness of 0 (not given) is
+  /// computed from the recording's rig bearing (contact_stiffness.hpp).
+  CompliantSettings compliant;
   int warmup_revolutions = 20;             ///< turns simulated and discarded
   int averaged_revolutions = 20;           ///< turns averaged on the grid
   double tolerance = 1e-8;                 ///< integrator tolerance
   int max_order = 50;                      ///< orders in the spectral comparison
+  /// Where these settings were given (e.g. "session.toml [theory]"): named in
+  /// the errors found only once the recording's rig is known.
+  std::string source;
 };
 
 /// An impact on the bearing, located in each part's own frame (thesis Fig.

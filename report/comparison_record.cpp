@@ -59,13 +59,25 @@ std::optional<double> opt(const json& j, const char* key) {
 }  // namespace
 
 json theory_settings_json(const TheorySettings& t) {
-  return {{"restitution", t.restitution},
-          {"contact", to_string(t.contact)},
-          {"friction_coefficient", t.friction_coefficient},
-          {"warmup_revolutions", t.warmup_revolutions},
-          {"averaged_revolutions", t.averaged_revolutions},
-          {"tolerance", t.tolerance},
-          {"max_order", t.max_order}};
+  json j = {{"restitution", t.restitution},
+            {"contact", to_string(t.contact)},
+            {"friction_coefficient", t.friction_coefficient},
+            {"warmup_revolutions", t.warmup_revolutions},
+            {"averaged_revolutions", t.averaged_revolutions},
+            {"tolerance", t.tolerance},
+            {"max_order", t.max_order}};
+  if (t.model == ClearanceKind::compliant) {  // (the three-mode settings as before: cached records stay valid)
+    const CompliantSettings& k = t.compliant;
+    j["contact"] = std::string("compliant, ") + to_string(k.damping) + " damping";  // (the HTML report's theory cell)
+    j["model"] = to_string(t.model);
+    j["damping"] = to_string(k.damping);
+    j["contact_stiffness_N_per_m_n"] = k.stiffness_N_per_m_n > 0 ? json(k.stiffness_N_per_m_n) : json("from the rig");
+    j["contact_exponent"] = k.exponent;
+    j["friction_stick_speed_mm_s"] = k.friction_stick_speed_m_s * 1e3;
+    j["friction_slip_speed_mm_s"] = k.friction_slip_speed_m_s * 1e3;
+    j["damping_floor_speed_mm_s"] = k.damping_floor_speed_m_s * 1e3;
+  }
+  return j;
 }
 
 json comparison_record(const MeasuredResponse& measured, const MatchedTheory& t, const RecordingComparison& c) {

@@ -22,14 +22,40 @@ ContactLaw contact_from(const std::string& s) {
   return ContactLaw::smooth;
 }
 
+/// The compliant contact's keys, read with the scene's reader (same names,
+/// checks and messages), over the values `s` holds.
+void read_compliant_theory(TomlSection& t, TheorySettings& s) {
+  ClearanceSettings c;
+  c.restitution = s.restitution;
+  c.friction_coefficient = s.friction_coefficient;
+  c.compliant = s.compliant;
+  read_compliant_settings(t, c);
+  s.compliant = c.compliant;
+  s.friction_coefficient = c.friction_coefficient;
+}
+
 /// [theory] keys (also allowed in each [[recording]]), over `base`.
-TheorySettings read_theory(TomlSection& t, TheorySettings s) {
+TheorySettings read_theory(TomlSection& t, TheorySettings s, const std::string& source) {
+  s.source = source;
   s.restitution = t.in_range("restitution", 0.0, 1.0, s.restitution);
-  if (t.has("contact")) s.contact = contact_from(t.choice("contact", {"smooth", "rough", "stick-slip"}));
-  if (t.has("friction_coefficient")) {
-    if (s.contact != ContactLaw::stick_slip)
-      t.fail("friction_coefficient", "is used only with contact = \"stick-slip\"; set contact or remove it");
-    s.friction_coefficient = t.non_negative("friction_coefficient");
+  if (t.has("model")) {
+    const ClearanceKind m =
+        t.choice("model", {"three-mode", "compliant"}) == "compliant" ? ClearanceKind::compliant : ClearanceKind::three_mode;
+    if (m != s.model) s.friction_coefficient = 0;  // μ means the impact law's or the wall's: not carried over
+    s.model = m;
+  }
+  if (s.model == ClearanceKind::compliant) {
+    read_compliant_theory(t, s);
+  } else {
+    for (const char* key : {"damping", "contact_stiffness_N_per_m_n", "contact_exponent", "friction_stick_speed_mm_s",
+                            "friction_slip_speed_mm_s", "damping_floor_speed_mm_s"})
+      if (t.has(key)) t.fail(key, "is only used with model = \"compliant\"; remove it or set model = \"compliant\"");
+    if (t.has("contact")) s.contact = contact_from(t.choice("contact", {"smooth", "rough", "stick-slip"}));
+    if (t.has("friction_coefficient")) {
+      if (s.contact != ContactLaw::stick_slip)
+        t.fail("friction_coefficient", "is used only with contact = \"stick-slip\"; set contact or remove it");
+      s.friction_coefficient = t.non_negative("friction_coefficient");
+    }
   }
   s.warmup_revolutions = static_cast<int>(t.integer("warmup_revolutions", 0, 10000, s.warmup_revolutions));
   s.averaged_revolutions = static_cast<int>(t.integer("averaged_revolutions", 1, 10000, s.averaged_revolutions));
@@ -107,7 +133,7 @@ SessionSettings load_session_settings(const std::filesystem::path& dir) {
     a->finish();
   }
   if (auto t = root.optional_section("theory")) {
-    s.theory = read_theory(*t, s.theory);
+    s.theory = read_theory(*t, s.theory, std::string(kSessionFile) + " [theory]");
     t->finish();
   }
   for (TomlSection& r : root.sections("recording")) {
@@ -115,7 +141,7 @@ SessionSettings load_session_settings(const std::filesystem::path& dir) {
     if (name.find('/') != std::string::npos || !std::filesystem::exists(dir / name))
       r.fail("file", "'" + name + "' is not a file in the session folder " + dir.string());
     if (s.theory_by_recording.count(name)) r.fail("file", "'" + name + "' has two [[recording]] tables; merge them");
-    s.theory_by_recording[name] = read_theory(r, s.theory);
+    s.theory_by_recording[name] = read_theory(r, s.theory, std::string(kSessionFile) + " [[recording]] " + name);
     r.finish();
   }
   root.finish();

@@ -9,9 +9,15 @@
 //   [analysis]    points_per_rev, low_hz, high_hz, mains_hz, mains_width_hz,
 //                 window ("kaiser:8"), transition_hz, guard_revolutions,
 //                 integration ("spectral" | "closed_trapezoid" | "trapezoid")
-//   [theory]      restitution, contact ("smooth" | "rough" | "stick-slip"),
+//   [theory]      model ("three-mode" | "compliant"), restitution,
+//                 contact ("smooth" | "rough" | "stick-slip", three-mode),
 //                 friction_coefficient, warmup_revolutions,
-//                 averaged_revolutions, tolerance, max_order
+//                 averaged_revolutions, tolerance, max_order; with
+//                 model = "compliant" the scene's compliant keys instead of
+//                 contact (damping, contact_stiffness_N_per_m_n,
+//                 contact_exponent, friction_*_speed_mm_s,
+//                 damping_floor_speed_mm_s; stiffness from the rig's bearing
+//                 when absent)
 //   [[recording]] file = "run3.flac", then any [theory] key for that recording
 
 #include <filesystem>

@@ -148,6 +148,8 @@ void CompliantSimulator::Impl::onset(double time, StiffState& y) {
   r.time_s = ep.onset_abs_s;
   r.crank_angle_rad = crank.at(r.time_s).angle_rad;
   r.eta_rad = std::atan2(k.bearing.normal.y, k.bearing.normal.x);
+  r.theta3_rad = std::atan2(k.links.u3.y, k.links.u3.x);
+  r.theta4_rad = std::atan2(k.links.u4.y, k.links.u4.x);
   r.revolution = books.revolutions_on ? revolution_of(time) : 0;
   r.result.normal_speed_before_m_s = k.bearing.normal_speed_m_s;
   r.result.tangential_speed_before_m_s = k.bearing.tangential_speed_m_s;
@@ -163,6 +165,7 @@ void CompliantSimulator::Impl::release(double time, const StiffState& y) {
   r.contact_impulse_Ns = impulse;
   r.result.normal_impulse_Ns = ep.phase == 2 ? ep.impact_impulse_Ns : impulse;
   r.result.tangential_impulse_Ns = y[kImpulseT] * scale.force_N / w;
+  r.result.after = k.links;
   r.result.normal_speed_after_m_s = k.bearing.normal_speed_m_s;
   r.result.tangential_speed_after_m_s = k.bearing.tangential_speed_m_s;
   r.result.energy_loss_J = (y[kContactLoss] + y[kFrictionLoss] - ep.loss_at_onset) * scale.energy_J;

@@ -9,10 +9,20 @@
 
 namespace fourbar {
 
+const NominalMotion& CompliantSimulator::Impl::nominal_at(double time) const {
+  NominalCache& cache = nominal_cache;
+  for (const NominalCache::Entry& e : cache.entries)
+    if (e.valid && e.time == time && e.origin_s == origin_s) return e.motion;
+  NominalCache::Entry& e = cache.entries[cache.next];
+  cache.next = (cache.next + 1) % cache.entries.size();
+  e = {origin_s, time, true, solve_motion(model.rig(), crank_at(time))};
+  return e.motion;
+}
+
 ContactState CompliantSimulator::Impl::evaluate(double time, const StiffState& y) const {
   ContactState k;
-  const CrankState c = crank_at(time);
-  k.nominal = solve_motion(model.rig(), c);
+  k.nominal = nominal_at(time);
+  const CrankState& c = k.nominal.crank;
   k.links = deviation_links(k.nominal, scale.deviation, y.data());
   const Vec2 u2 = k.nominal.pose.u2;
   k.bearing = model.bearing(c, u2, k.links);
@@ -40,7 +50,7 @@ void CompliantSimulator::Impl::rhs(double time, const StiffState& y, StiffState&
   dy[1] = y[3] * w;
   dy[2] = (k.alpha3_rad_s2 - k.nominal.alpha3_rad_s2) / rate_scale;
   dy[3] = (k.alpha4_rad_s2 - k.nominal.alpha4_rad_s2) / rate_scale;
-  dy[kWork] = k.crank_torque_Nm * crank_at(time).speed_rad_s / scale.energy_J;
+  dy[kWork] = k.crank_torque_Nm * k.nominal.crank.speed_rad_s / scale.energy_J;
   // Damping dissipation (F_n − K·δⁿ)·δ̇ ≥ 0 and friction dissipation −F_t·v_t ≥ 0.
   const double elastic = elastic_force_N(law, k.penetration_m);
   dy[kContactLoss] = k.penetration_m > 0
@@ -52,15 +62,14 @@ void CompliantSimulator::Impl::rhs(double time, const StiffState& y, StiffState&
 }
 
 double CompliantSimulator::Impl::witness(double time, const StiffState& y) {
-  const CrankState c = crank_at(time);
-  const NominalMotion nm = solve_motion(model.rig(), c);
+  const NominalMotion& nm = nominal_at(time);
   const LinkMotion m = deviation_links(nm, scale.deviation, y.data());
-  return -model.bearing(c, nm.pose.u2, m).gap_m / model.clearance_m();
+  return -model.bearing(nm.crank, nm.pose.u2, m).gap_m / model.clearance_m();
 }
 
 StiffState CompliantSimulator::Impl::state_of(double time, const LinkMotion& m, const StiffState& q) const {
   StiffState y = q;
-  deviation_state(solve_motion(model.rig(), crank_at(time)), scale.deviation, m, y.data());
+  deviation_state(nominal_at(time), scale.deviation, m, y.data());
   return y;
 }
 

@@ -1,7 +1,9 @@
 // The compliant model's keys of the scene's `[clearance]` table
 // (model = "compliant"): the damping law, the stiffness (or none: computed
 // from the rig's bearing when the scene is loaded), the exponent and the wall
-// friction. The three-mode model's impact-law keys are refused here.
+// friction. The three-mode model's impact-law keys are refused here. A key
+// that is absent keeps the value `c` holds (the defaults for a scene; the
+// session's [theory] values for one of its [[recording]] tables).
 
 #include "sim/clearance/settings.hpp"
 
@@ -16,7 +18,7 @@ void read_compliant_settings(TomlSection& s, ClearanceSettings& c) {
     s.fail("integrator", "is not used with model = \"compliant\" (always CVODE BDF with a dense Jacobian); remove it");
   CompliantSettings& k = c.compliant;
   const std::string damping =
-      s.choice("damping", {"calibrated", "flores", "hunt-crossley", "lankarani-nikravesh"}, "calibrated");
+      s.choice("damping", {"calibrated", "flores", "hunt-crossley", "lankarani-nikravesh"}, to_string(k.damping));
   k.damping = damping == "calibrated"      ? DampingLaw::calibrated
               : damping == "flores"        ? DampingLaw::flores
               : damping == "hunt-crossley" ? DampingLaw::hunt_crossley
@@ -31,15 +33,16 @@ void read_compliant_settings(TomlSection& s, ClearanceSettings& c) {
              "must be a positive number (K in N/m^n, e.g. 1e9); or remove it to compute K from the rig's bearing");
     k.stiffness_given = true;
   }
-  k.exponent = s.in_range("contact_exponent", 1.0, 3.0, 1.5);
+  k.exponent = s.in_range("contact_exponent", 1.0, 3.0, k.exponent);
   if (s.has("friction_coefficient")) {
     c.friction_coefficient = s.number("friction_coefficient");
     if (!(c.friction_coefficient >= 0) || c.friction_coefficient > 100)
       s.fail("friction_coefficient", "must be >= 0 (Coulomb coefficient μ of the wall)");
   }
-  k.friction_stick_speed_m_s = s.in_range("friction_stick_speed_mm_s", 0.0, 1e3, 0.1) * 1e-3;
-  k.friction_slip_speed_m_s = s.in_range("friction_slip_speed_mm_s", 1e-6, 1e4, 1.0) * 1e-3;
-  k.damping_floor_speed_m_s = s.in_range("damping_floor_speed_mm_s", 1e-9, 1e3, 0.01) * 1e-3;
+  k.friction_stick_speed_m_s = s.in_range("friction_stick_speed_mm_s", 0.0, 1e3, k.friction_stick_speed_m_s * 1e3) * 1e-3;
+  k.friction_slip_speed_m_s = s.in_range("friction_slip_speed_mm_s", 1e-6, 1e4, k.friction_slip_speed_m_s * 1e3) * 1e-3;
+  k.damping_floor_speed_m_s =
+      s.in_range("damping_floor_speed_mm_s", 1e-9, 1e3, k.damping_floor_speed_m_s * 1e3) * 1e-3;
   if (!(k.friction_slip_speed_m_s > k.friction_stick_speed_m_s))
     s.fail("friction_slip_speed_mm_s", "must be above friction_stick_speed_mm_s (v1 > v0 of the friction ramp)");
 }

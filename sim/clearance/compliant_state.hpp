@@ -6,6 +6,7 @@
 //   compliant_books.cpp      contacts, revolutions, statistics, samples, energy
 //   compliant_simulator.cpp  starts, the main loop, the public API
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -66,6 +67,20 @@ struct CompliantSimulator::Impl final : StiffSystem {
   double seg_start = 0;  ///< local start of the current integration segment
   double start_abs_s = 0;  ///< absolute start time of the run
   CrankState crank_at(double time) const { return crank.at_local(origin_s, time); }
+  /// The nominal motion at the last few (origin, local time) pairs: a step's
+  /// Newton iterations, Jacobian columns and root function share one time,
+  /// and the nominal kinematics is most of a right-hand side's cost.
+  struct NominalCache {
+    struct Entry {
+      double origin_s = 0, time = 0;
+      bool valid = false;
+      NominalMotion motion;
+    };
+    std::array<Entry, 4> entries;
+    std::size_t next = 0;
+  };
+  mutable NominalCache nominal_cache;
+  const NominalMotion& nominal_at(double time) const;
   double absolute(double time) const { return origin_s + time; }
   double local(double absolute_time) const { return absolute_time - origin_s; }
   double rebase(double time);

@@ -1,6 +1,7 @@
 #include "sim/clearance/contact_stiffness.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "common/format.hpp"
@@ -17,12 +18,22 @@ double conformal_cylinder_stiffness(double e_star, double length_m, double clear
 }
 
 void resolve_contact_stiffness(TomlSection& s, const Rig& rig, double clearance_m, ClearanceSettings& settings) {
+  resolve_contact_stiffness(rig, clearance_m, settings,
+                            [&s](const char* key, const std::string& what) { s.fail(key, what); });
+}
+
+void resolve_contact_stiffness(const Rig& rig, double clearance_m, ClearanceSettings& settings,
+                               const std::function<void(const char* key, const std::string& what)>& report) {
+  auto fail = [&report](const char* key, const std::string& what) {
+    report(key, what);
+    throw std::logic_error("resolve_contact_stiffness: the failure callback returned");
+  };
   const BearingBodies& b = rig.bearing;
   const std::string rig_file = rig.source.empty() ? std::string("the rig") : rig.source.string();
   if (b.pin_radius_m && b.bushing_radius_m) {
     const double fit = *b.bushing_radius_m - *b.pin_radius_m;
     if (!(std::abs(fit - clearance_m) <= 1e-9 * std::max(1e-3, *b.bushing_radius_m)))
-      s.fail("radial_mm", "= " + format_number(units::m_to_mm(clearance_m)) + " mm does not fit " + rig_file +
+      fail("radial_mm", "= " + format_number(units::m_to_mm(clearance_m)) + " mm does not fit " + rig_file +
                               "'s bearing: its bushing_radius_mm - pin_radius_mm = " +
                               format_number(units::m_to_mm(fit)) +
                               " mm; remove radial_mm here or change the rig's radii");
@@ -37,12 +48,12 @@ void resolve_contact_stiffness(TomlSection& s, const Rig& rig, double clearance_
       {"bushing_poisson_ratio", b.bushing_poisson_ratio.has_value()}};
   for (const auto& [key, present] : needed)
     if (!present)
-      s.fail("contact_stiffness_N_per_m_n",
+      fail("contact_stiffness_N_per_m_n",
              std::string("is not given and ") + rig_file + " has no [clearance] " + key +
                  " to compute it from; give contact_stiffness_N_per_m_n (N/m^n) here or the rig's bearing keys "
                  "(bearing_length_mm, pin/bushing_youngs_modulus_GPa, pin/bushing_poisson_ratio)");
   if (k.exponent != 1.5)
-    s.fail("contact_exponent", "must be 1.5 (or absent) when the stiffness is computed from the rig's bearing (the "
+    fail("contact_exponent", "must be 1.5 (or absent) when the stiffness is computed from the rig's bearing (the "
                                "conformal-cylinder law is a 1.5 power law); or give contact_stiffness_N_per_m_n");
   const double e_star = composite_modulus_Pa(*b.pin_youngs_modulus_Pa, *b.pin_poisson_ratio,
                                              *b.bushing_youngs_modulus_Pa, *b.bushing_poisson_ratio);

@@ -24,6 +24,9 @@
 // on steel (L = 10 mm, ξ = 0.254 mm) this law and the sphere law with
 // R_p = 10 mm give K = 8.0e10 and 9.8e10 N/m^1.5 (same order).
 
+#include <functional>
+#include <string>
+
 #include "common/toml_section.hpp"
 #include "mechanism/rig.hpp"
 #include "sim/clearance/settings.hpp"
@@ -42,5 +45,10 @@ double conformal_cylinder_stiffness(double composite_modulus_Pa, double length_m
 /// clearance the scene uses. Fails on `section` naming the missing or
 /// contradicting key.
 void resolve_contact_stiffness(TomlSection& section, const Rig& rig, double clearance_m, ClearanceSettings& settings);
+
+/// The same outside a scene (a session's matched theory): `fail(key, what)`
+/// reports the problem and must throw.
+void resolve_contact_stiffness(const Rig& rig, double clearance_m, ClearanceSettings& settings,
+                               const std::function<void(const char* key, const std::string& what)>& fail);
 
 }  // namespace fourbar

@@ -128,6 +128,8 @@ void ClearanceSimulator::Impl::handle_impact(double time) {
   rec.time_s = absolute(time);
   rec.crank_angle_rad = crank.at(rec.time_s).angle_rad;
   rec.eta_rad = std::atan2(b.normal.y, b.normal.x);
+  rec.theta3_rad = std::atan2(before.u3.y, before.u3.x);
+  rec.theta4_rad = std::atan2(before.u4.y, before.u4.x);
   rec.result = resolve_impact(model, c, before, law);
   rec.revolution = books.revolutions_on ? revolution_of(time) : 0;
   const bool counted = b.normal_speed_m_s > settings.settle_speed_m_s;

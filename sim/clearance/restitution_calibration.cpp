@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <mutex>
 #include <string>
+#include <utility>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -46,8 +49,9 @@ double effective_restitution(double c, double n) {
   throw RunError("restitution calibration: the scaled collision did not end (c = " + std::to_string(c) + ")");
 }
 
-double calibrated_hysteresis(double e, double n) {
-  if (e >= 1) return 0.0;
+namespace {
+
+double solve_hysteresis(double e, double n) {
   auto f = [&](double c) { return effective_restitution(c, n) - e; };
   // effective_restitution falls from 1 at c = 0; bracket by doubling.
   double lo = 0, hi = 1, f_hi = f(hi);
@@ -56,6 +60,25 @@ double calibrated_hysteresis(double e, double n) {
   auto stop = [](double a, double b) { return std::abs(b - a) <= 1e-12 * std::abs(b); };
   const auto r = boost::math::tools::toms748_solve(f, lo, hi, f(lo), f_hi, stop, iters);
   return 0.5 * (r.first + r.second);
+}
+
+}  // namespace
+
+double calibrated_hysteresis(double e, double n) {
+  if (e >= 1) return 0.0;
+  // Solved once per (e, n) in the process: a sweep or a session runs the
+  // same contact law many times, and the solve costs about as much as two
+  // turns of the compliant model. Deterministic, so the memo changes no result.
+  static std::mutex mutex;
+  static std::map<std::pair<double, double>, double> solved;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = solved.find({e, n}); it != solved.end()) return it->second;
+  }
+  const double c = solve_hysteresis(e, n);
+  const std::lock_guard<std::mutex> lock(mutex);
+  solved.emplace(std::make_pair(e, n), c);
+  return c;
 }
 
 }  // namespace fourbar

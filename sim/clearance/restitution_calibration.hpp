@@ -5,7 +5,8 @@
 //   x″ = −xⁿ·(1 + c·x′)⁺,   x(0) = 0, x′(0) = 1,
 // so the rebound speed ratio depends on c and n only. effective_restitution
 // integrates this (CVODE BDF, root finding on x = 0, tolerance 1e-12);
-// calibrated_hysteresis inverts it by TOMS 748 on c. This is the default
+// calibrated_hysteresis inverts it by TOMS 748 on c (once per (e, n) in a
+// process, then remembered). This is the default
 // damping law ("calibrated"): the published closed forms c(e) are
 // approximations of this map, measured in tests/sim/clearance/
 // test_contact_force.cpp and docs/clearance-model.md "Compliant contact".

@@ -34,6 +34,8 @@ struct ClearanceSample {
 
 struct ImpactRecord {
   double time_s = 0, crank_angle_rad = 0, eta_rad = 0;
+  /// Coupler and rocker angles θ3, θ4 at the impact (the compliant model: at the contact's onset).
+  double theta3_rad = 0, theta4_rad = 0;
   int revolution = 0;
   ImpactResult result;  ///< three-mode: the Newton impact itself
   ContactMode mode_after = ContactMode::free_flight;

@@ -147,6 +147,7 @@ StiffIntegrator::Step StiffIntegrator::step(double t_stop) {
     s.root = found > 0 ? 1 : -1;
   }
   t_ = t;
+  copy_in(c.y, y_end_);
   ++steps_;
   stepped_ = true;
   return s;
@@ -174,6 +175,10 @@ StiffIntegrator::Counters StiffIntegrator::since_reset() const {
 void StiffIntegrator::interpolate(double t, StiffState& y) {
   if (!stepped_) {
     y = y0_;
+    return;
+  }
+  if (t == t_) {  // the step's end: CVODE's own output, what the dense output gives there
+    y = y_end_;
     return;
   }
   check(CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");

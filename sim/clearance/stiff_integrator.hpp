@@ -73,6 +73,7 @@ class StiffIntegrator {
   double t_ = 0;
   bool stepped_ = false;
   StiffState y0_{};
+  StiffState y_end_{};  ///< the state at t_ (the last step's end)
 };
 
 }  // namespace fourbar
