@@ -64,24 +64,6 @@ json input_files(const std::filesystem::path& rec, const std::filesystem::path& 
   return files;
 }
 
-/// The contact-parameter fit of this session, when `fourbar fit` wrote one:
-/// SESSION_DIR/fit/fit.json (its default), SESSION_DIR/fit.json or fit.json
-/// beside the report. A fit.json that cannot be read is named in a warning.
-std::optional<std::pair<json, std::string>> find_fit(const std::filesystem::path& session_dir,
-                                                      const std::filesystem::path& out_dir) {
-  for (const std::filesystem::path& p : {session_dir / "fit" / "fit.json", session_dir / "fit.json", out_dir / "fit.json"}) {
-    if (!std::filesystem::is_regular_file(p)) continue;
-    try {
-      std::ifstream in(p);
-      return std::make_pair(json::parse(in), std::filesystem::proximate(p, session_dir).string());
-    } catch (const std::exception& e) {
-      std::cerr << "fourbar: warning: report: " << p.string() << " is not a readable fit.json (" << e.what()
-                << "); the verdict leaves the fit out: run `fourbar fit` again\n";
-    }
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
 std::size_t default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
@@ -195,11 +177,11 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     if (failure) std::rethrow_exception(failure);
   }
 
-  // The verdict in words of every analysed recording (never cached: a fit may come later).
-  const auto fit = find_fit(o.session_dir, out_dir);
+  // The verdict in words of every analysed recording (never cached: a fit may
+  // come later), with the fit the report shows (--fit, or SESSION_DIR/fit/fit.json).
+  const std::string fit_name = fit ? std::filesystem::proximate(fit->file, o.session_dir).string() : std::string();
   for (json& r : computed)
-    if (is_analysed(r))
-      r["verdict"] = verdict_json(verdict_of(verdict_inputs(r, fit ? &fit->first : nullptr, fit ? fit->second : "")));
+    if (is_analysed(r)) r["verdict"] = verdict_json(verdict_of(verdict_inputs(r, fit ? &fit->fit : nullptr, fit_name)));
 
   ReportOutcome out;
   json records = json::array();
