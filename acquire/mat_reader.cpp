@@ -79,14 +79,21 @@ bool is_rate_name(const std::string& name) {
   return std::any_of(std::begin(kNames), std::end(kNames), [&](const char* n) { return name == n; });
 }
 
-/// v5 files: walks the top-level data elements (tag: type, byte count) and
-/// says whether the last one runs past the end of the file. libmatio stops
-/// quietly at a truncated element, which would drop the variables after it.
-bool v5_truncated(const std::filesystem::path& file) {
+/// v5 files: checks the endian indicator and walks the top-level data
+/// elements (tag: type, byte count); empty when sound, else what is wrong.
+/// libmatio stops quietly at a truncated element, which would drop the
+/// variables after it.
+std::string v5_damage(const std::filesystem::path& file) {
+  const std::string truncated = "truncated: a variable runs past the end of the file (an interrupted copy?)";
   std::ifstream in(file, std::ios::binary);
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < 128) return true;
-  const bool swap = bytes[126] == 'M' && bytes[127] == 'I';  // "IM" as written by this machine's byte order
+  if (bytes.size() < 128) return truncated;
+  // The endian indicator must read "IM" (this machine's byte order) or "MI";
+  // with anything else libmatio guesses, and a size read in the wrong order
+  // asked it for 8 GB (fuzzing: tests/fuzz/regressions/mat/).
+  if (!((bytes[126] == 'I' && bytes[127] == 'M') || (bytes[126] == 'M' && bytes[127] == 'I')))
+    return "damaged header: the byte-order mark at bytes 126-127 is not 'IM' or 'MI'";
+  const bool swap = bytes[126] == 'M' && bytes[127] == 'I';
   auto u32 = [&](std::size_t at) {
     std::uint32_t v = 0;
     std::memcpy(&v, &bytes[at], 4);
@@ -94,17 +101,17 @@ bool v5_truncated(const std::filesystem::path& file) {
   };
   std::size_t at = 128;
   while (at < bytes.size()) {
-    if (at + 8 > bytes.size()) return true;
+    if (at + 8 > bytes.size()) return truncated;
     const std::uint32_t type = u32(at), count = u32(at + 4);
-    if (type >> 16) {  // small data element: 4 bytes of data inside the tag
-      at += 8;
-      continue;
-    }
+    // A file's top level holds variables only: miMATRIX (14) or miCOMPRESSED (15).
+    if (type != 14 && type != 15)
+      return "damaged: the data element at byte " + std::to_string(at) + " is of type " + std::to_string(type) +
+             ", not a variable (miMATRIX or miCOMPRESSED)";
     const std::size_t end = at + 8 + static_cast<std::size_t>(count);
-    if (end > bytes.size()) return true;
+    if (end > bytes.size()) return truncated;
     at = type == 15 ? end : (end + 7) / 8 * 8;  // miMATRIX is padded to 8 bytes, miCOMPRESSED is not
   }
-  return false;
+  return {};
 }
 
 struct VarInfo {
@@ -136,9 +143,9 @@ class MatReader final : public Reader {
     info_.format = version == MAT_FT_MAT73 ? "MAT v7.3" : "MAT v5";
     std::error_code ec;
     const auto file_bytes = std::filesystem::file_size(file, ec);
-    if (version == MAT_FT_MAT5 && v5_truncated(file))
-      throw InputError(f + ": truncated: a variable runs past the end of the file (" + std::to_string(file_bytes) +
-                       " bytes; an interrupted copy?); copy the file again");
+    if (version == MAT_FT_MAT5)
+      if (const std::string damage = v5_damage(file); !damage.empty())
+        throw InputError(f + ": " + damage + " (" + std::to_string(file_bytes) + " bytes); copy the file again");
 
     // Every variable's header (class and size), without its data.
     std::vector<VarInfo> vars;
