@@ -15,7 +15,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -91,7 +93,14 @@ inline std::filesystem::path long_recording_path(double seconds, const char* giv
 /// Writes the recording (in a child process) unless it exists; false on failure.
 inline bool ensure_long_recording(const std::filesystem::path& file, double seconds, const char* tool,
                                   bool wheel = false) {
-  if (std::filesystem::exists(file)) return true;
+  if (std::filesystem::exists(file)) {
+    // Reuse it only if its manifest names this checkout's rig: a file left by
+    // another checkout (or a removed one) would be read against the wrong rig.
+    std::ifstream manifest(std::filesystem::path(file).replace_extension(".toml"));
+    const std::string text{std::istreambuf_iterator<char>(manifest), std::istreambuf_iterator<char>()};
+    if (text.find(FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml") != std::string::npos) return true;
+    std::printf("%s was written by another checkout: writing it again\n", file.c_str());
+  }
   std::printf("writing %s (%.0f s, 3 channels, 25.6 kHz float) ...\n", file.c_str(), seconds);
   const ChildResult g = in_child([&] {
     const LongRecording r(file, seconds, wheel);
