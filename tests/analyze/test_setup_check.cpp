@@ -103,6 +103,18 @@ TEST(SetupCheck, FindingsCarryTheTrueValues) {
     EXPECT_GE(finding(k, "crank_offset_deg").confidence, 0.5);
   }
   {
+    // The falling edge of a 10°-wide mark that starts rising: every crank
+    // angle is 10° late. The finding names the polarity and the offset that
+    // would also fix it.
+    const SetupCheck k = analyse(rec, Mistake::pulse_polarity).check;
+    EXPECT_NEAR(k.crank_offset_deg, 10.0, 1.0) << describe(k);
+    const SetupFinding f = finding(k, "polarity");
+    EXPECT_EQ(f.manifest, "\"falling\" with crank_offset_deg = 0");
+    EXPECT_NE(f.data.find("\"rising\" with crank_offset_deg = 0"), std::string::npos) << f.data;
+    EXPECT_NE(f.key.find("[[channel]] name=\"crank_pulse\" polarity"), std::string::npos) << f.key;
+    EXPECT_GE(f.confidence, 0.5);
+  }
+  {
     const SetupCheck k = analyse(rec, Mistake::crank_direction).check;
     EXPECT_EQ(k.crank_direction, 1.0);
     EXPECT_EQ(finding(k, "crank_direction").data, "\"ccw\"");
