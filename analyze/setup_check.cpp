@@ -439,6 +439,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
 
   // Per channel at the joint best: sign and scale (manifest position), position.
   double fit_manifest = 0;
+  std::vector<double> judged_scales;  // channels on their own link, within the scale tolerance
   for (const Channel& ch : channels) {
     ChannelSetupEstimate e;
     e.channel = ch.spec->name;
@@ -466,6 +467,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
         add_finding(out, "axis_sign", name, channel_key(name, "axis_sign"), ch.spec->axis_sign > 0 ? "+1" : "-1",
                     ch.spec->axis_sign > 0 ? "-1" : "+1", confidence(1 - one.r2, 1.0));
       const double ratio = std::abs(one.k);
+      if (!(ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance)) judged_scales.push_back(ratio);
       if (ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance) {
         const double sign = one.k < 0 ? -1.0 : 1.0;
         const double conf = confidence(1 - one.r2, 1 - one_term_r2(ch, f, best.ti, best.s, ch.r_m, sign));
@@ -483,6 +485,9 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     out.channels.push_back(std::move(e));
   }
   out.fit_manifest = fit_manifest;
+  if (!best.swapped)
+    add_common_scale_finding(out, judged_scales, lim.common_scale_tolerance, manifest.rig_file.string(),
+                             lim.min_confidence);
   return out;
 }
 

@@ -27,6 +27,7 @@ enum class Mistake {
   swapped,           ///< coupler_t and rocker_t channel indices exchanged
   rocker_sign,       ///< rocker_t axis_sign flipped
   pulse_polarity,    ///< the pulse's other edge ("falling"; the mark starts rising, 10° wide)
+  full_scale,        ///< full_scale_V × 1.1 (every channel 10 % high)
 };
 /// The mistakes a manifest with only the coupler's tangential channel can make.
 inline const std::vector<Mistake>& coupler_only_mistakes() {
@@ -37,7 +38,7 @@ inline const std::vector<Mistake>& coupler_only_mistakes() {
 inline const std::vector<Mistake>& all_mistakes() {
   static const std::vector<Mistake> m{Mistake::coupler_sign,     Mistake::coupler_scale, Mistake::crank_offset,
                                       Mistake::crank_direction,  Mistake::coupler_position, Mistake::swapped,
-                                      Mistake::rocker_sign,      Mistake::pulse_polarity};
+                                      Mistake::rocker_sign,      Mistake::pulse_polarity, Mistake::full_scale};
   return m;
 }
 inline const char* to_string(Mistake m) {
@@ -51,6 +52,7 @@ inline const char* to_string(Mistake m) {
     case Mistake::swapped: return "coupler/rocker swapped";
     case Mistake::rocker_sign: return "rocker axis_sign flipped";
     case Mistake::pulse_polarity: return "pulse polarity: other edge";
+    case Mistake::full_scale: return "full_scale_V x1.1";
   }
   return "?";
 }
@@ -66,6 +68,7 @@ inline const char* expected_item(Mistake m) {
     case Mistake::swapped: return "channels_swapped";
     case Mistake::rocker_sign: return "axis_sign";
     case Mistake::pulse_polarity: return "polarity";
+    case Mistake::full_scale: return "common_scale";
   }
   return "";
 }
@@ -150,6 +153,7 @@ inline std::filesystem::path manifest_with(const std::filesystem::path& recordin
     case Mistake::swapped: std::swap(channel("coupler_t").index, channel("rocker_t").index); break;
     case Mistake::rocker_sign: channel("rocker_t").axis_sign *= -1; break;
     case Mistake::pulse_polarity: channel("crank_pulse").polarity = PulsePolarity::falling; break;
+    case Mistake::full_scale: man.full_scale_V *= 1.1; break;
   }
   const auto out = recording.parent_path() / (recording.stem().string() + "." + std::to_string(static_cast<int>(m)) + ".toml");
   std::ofstream(out) << manifest_to_toml(man, recording.parent_path());
