@@ -110,6 +110,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     report.edges_debounced = edges.edges_debounced;
     report.edge_level_V = edges.edge_level_V;
     report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
+    report.pulse_width_deg = median_width_deg(edges.widths_s, report.pulses.typical_period_s);
     schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);
     if (options.excerpt_revolutions > 0)
       excerpt = excerpt_window(report.pulses, options.excerpt_revolutions, info.sample_rate_hz, info.start_time_s, info.frames);

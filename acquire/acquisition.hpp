@@ -23,6 +23,7 @@
 // then the warnings (acquisition_warnings.hpp).
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -60,6 +61,10 @@ struct AcquisitionReport {
   PulseThresholds thresholds;                ///< as used
   double edge_level_V = 0;                   ///< mid-level at which edge times are taken (refined)
   std::size_t edges_debounced = 0;
+  /// One pulse per turn: the median time from a configured edge to the
+  /// pulse's other edge, as crank angle (the mark's width when the polarity
+  /// picks the mark's leading edge); NaN when unknown.
+  double pulse_width_deg = NAN;
   PulseTrain pulses;                         ///< once per turn (a wheel or encoder: its turns)
   WheelReport wheel;                         ///< many edges per turn (positions_per_rev 0: one pulse per turn)
   int grid_points_per_rev = 0;               ///< N crank angles per revolution (0: the sink wanted no grid)

@@ -83,4 +83,15 @@ std::size_t revolutions_lost(const PulseGap& gap) {
   return static_cast<std::size_t>(std::max(1.0, std::round(gap.periods)));
 }
 
+double median_width_deg(std::span<const double> widths_s, double period_s) {
+  std::vector<double> finite;
+  finite.reserve(widths_s.size());
+  for (double w : widths_s)
+    if (std::isfinite(w) && w > 0) finite.push_back(w);
+  if (finite.empty() || !(period_s > 0)) return NAN;
+  auto mid = finite.begin() + static_cast<std::ptrdiff_t>(finite.size() / 2);
+  std::nth_element(finite.begin(), mid, finite.end());
+  return 360.0 * *mid / period_s;
+}
+
 }  // namespace fourbar

@@ -41,6 +41,12 @@ EdgePassResult edge_pass(const BlockStream& stream, const Manifest& manifest, co
 PulseTrain pulse_train_from_edges(const EdgePassResult& edges, const PulseTrainOptions& options,
                                   const Manifest& manifest, const std::filesystem::path& recording_file);
 
+/// The median of the finite `widths_s` as crank angle at `period_s` per
+/// turn (degrees); NaN when none is finite or the period is not positive.
+/// The set-up check uses it to recognise a polarity that picks the pulse's
+/// other edge (the crank angle is then off by this width).
+double median_width_deg(std::span<const double> widths_s, double period_s);
+
 /// Estimated whole revolutions lost in a gap of the pulse train (at least one).
 std::size_t revolutions_lost(const PulseGap& gap);
 

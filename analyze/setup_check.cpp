@@ -15,16 +15,12 @@
 #include "analyze/filter_design.hpp"
 #include "analyze/link_motion.hpp"
 #include "analyze/pipeline.hpp"
+#include "analyze/setup_finding.hpp"
 #include "common/format.hpp"
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
 
 namespace fourbar {
-
-std::string SetupCheck::status() const {
-  if (!checked) return "not checked";
-  return findings.empty() ? "ok" : "check set-up";
-}
 
 namespace {
 
@@ -217,19 +213,8 @@ double confidence(double unexplained_data, double unexplained_manifest) {
   return std::clamp(1.0 - u_data / u_manifest, 0.0, 1.0);
 }
 
-std::string percent(double x) { return std::to_string(static_cast<int>(std::lround(100 * x))) + " %"; }
-
-std::string channel_key(const std::string& name, const std::string& key) {
-  return "[[channel]] name=\"" + name + "\" " + key;
-}
-
-void add_finding(SetupCheck& out, std::string item, std::string channel, std::string key, std::string manifest,
-                 std::string data, double conf) {
-  SetupFinding f{std::move(item), std::move(channel), std::move(key), std::move(manifest), std::move(data), conf, {}};
-  f.message = (f.channel.empty() ? std::string() : "channel '" + f.channel + "': ") + f.item + ": the manifest says " +
-              f.manifest + ", the data say " + f.data + " (confidence " + percent(f.confidence) + "); change " + f.key;
-  out.findings.push_back(std::move(f));
-}
+/// An offset within this (or a tenth of the width) of the pulse's width is its other edge.
+constexpr double kWidthMatchDeg = 1.0;
 
 double wrap_deg(double d) {
   d = std::fmod(d, 360.0);
@@ -415,9 +400,24 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   const double conf_offset = offset_off ? confidence(u_best, 1 - best_offset_m.score / n_ch) : 0.0;
   if (tau != dir_m && conf_dir >= lim.min_confidence)
     add_finding(out, "crank_direction", "", "crank_direction", direction_name(dir_m), direction_name(tau), conf_dir);
+  // An offset by the pulse's own width: the polarity picks the mark's other
+  // edge, so every crank angle is late or early by the width.
+  const double width_deg = a.acquisition.pulse_width_deg, offset_m = units::rad_to_deg(pulse.crank_offset_rad);
+  const double mark_deg = std::min(width_deg, 360 - width_deg);  // the pulse's short part
+  const bool by_width = std::isfinite(width_deg) && mark_deg > lim.offset_tolerance_deg &&
+                        std::min(std::abs(wrap_deg(offset_diff - width_deg)), std::abs(wrap_deg(offset_diff + width_deg))) <=
+                            std::max(kWidthMatchDeg, 0.1 * mark_deg);
+  auto polarity = [](bool rising) { return std::string(rising ? "\"rising\"" : "\"falling\"") + " with crank_offset_deg = "; };
+  const bool rising = pulse.polarity == PulsePolarity::rising;
   if (offset_off && conf_offset >= lim.min_confidence)
-    add_finding(out, "crank_offset_deg", pulse.name, offset_key, format_number(units::rad_to_deg(pulse.crank_offset_rad), 4),
-                format_number(out.crank_offset_deg, 4), conf_offset);
+    add_finding(out, by_width ? "polarity" : "crank_offset_deg", pulse.name,
+                by_width ? channel_key(pulse.name, "polarity") + " or " + offset_key : offset_key,
+                (by_width ? polarity(rising) : "") + format_number(offset_m, 4),
+                by_width ? polarity(!rising) + format_number(offset_m, 4) + ", or " + polarity(rising) +
+                               format_number(out.crank_offset_deg, 4) + " (the angle is off by the pulse's width, " +
+                               format_number(std::abs(offset_diff), 3) + "°: the edge used is the pulse's other edge)"
+                         : format_number(out.crank_offset_deg, 4),
+                conf_offset);
   const bool ambiguous = (tau != dir_m && conf_dir < lim.min_confidence) || (offset_off && conf_offset < lim.min_confidence);
   if (ambiguous && out.findings.empty() && conf_crank >= lim.min_confidence)
     add_finding(out, tau != dir_m ? "crank_direction" : "crank_offset_deg", "", "crank_direction or " + offset_key,
@@ -439,6 +439,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
 
   // Per channel at the joint best: sign and scale (manifest position), position.
   double fit_manifest = 0;
+  std::vector<double> judged_scales;  // channels on their own link, within the scale tolerance
   for (const Channel& ch : channels) {
     ChannelSetupEstimate e;
     e.channel = ch.spec->name;
@@ -466,6 +467,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
         add_finding(out, "axis_sign", name, channel_key(name, "axis_sign"), ch.spec->axis_sign > 0 ? "+1" : "-1",
                     ch.spec->axis_sign > 0 ? "-1" : "+1", confidence(1 - one.r2, 1.0));
       const double ratio = std::abs(one.k);
+      if (!(ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance)) judged_scales.push_back(ratio);
       if (ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance) {
         const double sign = one.k < 0 ? -1.0 : 1.0;
         const double conf = confidence(1 - one.r2, 1 - one_term_r2(ch, f, best.ti, best.s, ch.r_m, sign));
@@ -483,6 +485,9 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     out.channels.push_back(std::move(e));
   }
   out.fit_manifest = fit_manifest;
+  if (!best.swapped)
+    add_common_scale_finding(out, judged_scales, lim.common_scale_tolerance, manifest.rig_file.string(),
+                             lim.min_confidence);
   return out;
 }
 

@@ -51,9 +51,10 @@ struct RecordingAnalysis;
 /// Tolerances: a value outside them, explained clearly better by the data, is a finding.
 struct SetupCheckLimits {
   double min_confidence = 0.5;       ///< share of the misfit the data's value must remove
-  double offset_tolerance_deg = 10;  ///< crank_offset_deg
+  double offset_tolerance_deg = 3;   ///< crank_offset_deg (the estimate is within ±0.5° on the matrix)
   double scale_tolerance = 1.5;      ///< volts_per_unit: ratio data/manifest outside [1/x, x]
   double position_tolerance_mm = 20; ///< position_mm
+  double common_scale_tolerance = 0.05; ///< every channel's scale beyond 1 ± this, same side (correct manifests: ≤ 0.002)
   double min_fit = 0.5;              ///< a channel's fit (share explained) below which its own keys are not judged
 };
 

@@ -155,12 +155,13 @@ nlohmann::json stats_json(const ChannelStats& s, const char* unit) {
 
 /// `fourbar acquire REC` without --out: the whole acquisition, nothing written,
 /// a summary on stdout and the warnings on stderr.
-int check_recording(Reader& reader, const Manifest& m, int samples_per_rev) {
+int check_recording(Reader& reader, const Manifest& m, int samples_per_rev, bool quiet) {
   struct Discard final : AcquisitionSink {
     bool wants_grid() const override { return false; }
   } discard;
   AcquireOptions options;
   options.grid_points_per_rev = samples_per_rev;
+  options.progress = !quiet;
   const AcquisitionReport rep = acquire(reader, m, options, discard);
   const RecordingInfo& ri = rep.recording;
   std::cout << ri.file.string() << ": " << ri.format << " " << ri.sample_format << ", " << ri.channels << " channels, "
@@ -193,7 +194,7 @@ int check_recording(Reader& reader, const Manifest& m, int samples_per_rev) {
 int run_acquire(const Invocation& inv) {
   std::string recording, manifest_file, out_dir;
   int samples_per_rev = 0;
-  bool no_samples = false, binary = false, csv_comments = false;
+  bool no_samples = false, binary = false, csv_comments = false, quiet = false;
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, CSV)")(
       "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
@@ -206,10 +207,11 @@ int run_acquire(const Invocation& inv) {
       "write samples.f64 and revolutions.f64 (float64 little-endian rows, columns as the CSV; listed in "
       "summary.json) instead of CSV");
   add_csv_comments_option(opts, csv_comments);
+  add_quiet_option(opts, quiet);
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--no-samples] [--binary] [--csv-comments]", kDetails, opts, pos,
+  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--no-samples] [--binary] [--csv-comments] [-q]", kDetails, opts, pos,
                        inv, vm))
     return 0;
   const bool write = vm.count("out") > 0;
@@ -221,13 +223,14 @@ int run_acquire(const Invocation& inv) {
   // Check every input before creating anything.
   OpenedRecording opened = open_with_manifest(recording, manifest_file);
   const Manifest& m = opened.manifest;
-  if (!write) return check_recording(*opened.reader, m, samples_per_rev);
+  if (!write) return check_recording(*opened.reader, m, samples_per_rev, quiet);
   ensure_output_dir(out_dir);
   const std::filesystem::path dir(out_dir);
   Provenance prov{inv.command_line, {recording, m.file, m.rig_file}, csv_comments};
 
   AcquireOptions options;
   options.grid_points_per_rev = samples_per_rev;
+  options.progress = !quiet;
   std::vector<AcquiredChannel> channels;
   for (const auto& c : m.channels)
     if (is_accelerometer(c.role)) channels.push_back({c.name, c.role, *c.index, c.position_m, c.offset_m, c.ac_coupled, c.highpass_hz});

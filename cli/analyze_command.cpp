@@ -186,7 +186,7 @@ int run_analyze(const Invocation& inv) {
   double low = 0, high = 0, mains = 0, mains_width = 1, transition = 0;
   std::size_t points = 0, guard = 0, spectrum_segment = 0, chunk = 0;
   int jobs = 0;
-  bool thesis = false, per_revolution = false, strict = false, csv_comments = false;
+  bool thesis = false, per_revolution = false, strict = false, csv_comments = false, quiet = false;
   namespace d = analysis_defaults;
   const std::string low_help =
       "lower corner in Hz (default: " + format_number(d::kLowCornerPerCrankHz) + " x the mean crank frequency)";
@@ -226,6 +226,7 @@ int run_analyze(const Invocation& inv) {
                                   "depend on it")(
       "thesis", po::bool_switch(&thesis), "the thesis's processing, for comparison (see below)");
   add_csv_comments_option(opts, csv_comments);
+  add_quiet_option(opts, quiet);
   const std::string details = kDetailsBeforeDefaults + details_defaults() + kDetailsAfterDefaults;
   po::positional_options_description pos;
   pos.add("recording", 1);
@@ -249,6 +250,7 @@ int run_analyze(const Invocation& inv) {
   if (jobs < 0) throw InputError("analyze: --jobs " + std::to_string(jobs) + " must be 1 or more (or 0 for every core)");
   o.threads = jobs > 0 ? static_cast<unsigned>(jobs) : std::max(1u, std::thread::hardware_concurrency());
   o.keep_revolutions = false;
+  o.progress = !quiet;
   validate_options(o);
 
   const std::filesystem::path dir(out_dir);

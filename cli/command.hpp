@@ -39,6 +39,9 @@ bool parse_arguments(std::string_view command, std::string_view usage, std::stri
 /// header row and data, and its provenance is in the JSON beside it).
 void add_csv_comments_option(boost::program_options::options_description& options, bool& flag);
 
+/// Adds -q/--quiet (no progress on stderr), the same in every command that shows progress.
+void add_quiet_option(boost::program_options::options_description& options, bool& flag);
+
 // Subcommands (one file each).
 int run_sim(const Invocation& inv);
 int run_rig(const Invocation& inv);

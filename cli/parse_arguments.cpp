@@ -36,6 +36,10 @@ void add_csv_comments_option(po::options_description& options, bool& flag) {
                         "JSON beside the CSV, so that pandas, Excel and LibreOffice open it without options)");
 }
 
+void add_quiet_option(po::options_description& options, bool& flag) {
+  options.add_options()("quiet,q", po::bool_switch(&flag), "no progress on stderr");
+}
+
 bool parse_arguments(std::string_view command, std::string_view usage, std::string_view details,
                      po::options_description& options, const po::positional_options_description& positionals,
                      const Invocation& inv, po::variables_map& vm) {

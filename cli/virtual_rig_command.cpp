@@ -47,16 +47,17 @@ The scene's [recording] table (docs/virtual-rig.md lists every key):
 
 int run_virtual_rig(const Invocation& inv) {
   std::string scene_file, out;
-  bool no_truth = false, csv_comments = false;
+  bool no_truth = false, csv_comments = false, quiet = false;
   po::options_description opts("options");
   opts.add_options()("scene", po::value(&scene_file)->required(), "scene file (TOML) with a [recording] table")(
       "out,o", po::value(&out)->required(), "recording to write (REC.wav, REC.flac, REC.csv, ...)")(
       "no-truth", po::bool_switch(&no_truth), "do not write REC.truth.csv (long recordings)");
   add_csv_comments_option(opts, csv_comments);
+  add_quiet_option(opts, quiet);
   po::positional_options_description pos;
   pos.add("scene", 1);
   po::variables_map vm;
-  if (!parse_arguments("virtual-rig", "SCENE.toml --out REC.wav [--no-truth]", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("virtual-rig", "SCENE.toml --out REC.wav [--no-truth] [-q]", kDetails, opts, pos, inv, vm)) return 0;
 
   const Scene scene = load_scene(scene_file);
   const RecordingSpec spec = read_recording_spec(scene);
@@ -79,6 +80,7 @@ int run_virtual_rig(const Invocation& inv) {
     motion = std::make_unique<NominalMotionSource>(scene.rig, drive);
   }
   VirtualRigOptions options;
+  options.progress = !quiet;
   options.write_truth = !no_truth;
   options.csv_comments = csv_comments;
   const VirtualRigResult r =

@@ -19,6 +19,7 @@
 #include "common/error.hpp"
 #include "common/json_text.hpp"
 #include "common/progress.hpp"
+#include "common/build_id.hpp"
 #include "common/version.hpp"
 #include "report/analysis_cache.hpp"
 #include "report/comparison_record.hpp"
@@ -124,7 +125,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     if (fit)
       if (const auto c = fit->for_recording(name)) fitted = with_fitted_contact(theory, *c);
     const json inputs = input_files(rec, o.session_dir);
-    const std::string key = sha256_text(std::string(kVersion) + "\n" + json_text(inputs) + "\n" +
+    const std::string key = sha256_text(std::string(kVersion) + " " + build_id() + "\n" + json_text(inputs) + "\n" +
                                         json_text(settings_json["analysis"]) + "\n" + json_text(theory_settings_json(theory)) +
                                         (fitted ? "\nfitted " + json_text(theory_settings_json(*fitted)) : std::string()));
     const std::filesystem::path cache_file = cache_dir / (key + ".json");

@@ -26,17 +26,19 @@ enum class Mistake {
   coupler_position,  ///< coupler_t position_mm 50 mm off (towards the link's middle)
   swapped,           ///< coupler_t and rocker_t channel indices exchanged
   rocker_sign,       ///< rocker_t axis_sign flipped
+  pulse_polarity,    ///< the pulse's other edge ("falling"; the mark starts rising, 10° wide)
+  full_scale,        ///< full_scale_V × 1.1 (every channel 10 % high)
 };
 /// The mistakes a manifest with only the coupler's tangential channel can make.
 inline const std::vector<Mistake>& coupler_only_mistakes() {
   static const std::vector<Mistake> m{Mistake::coupler_sign, Mistake::coupler_scale, Mistake::crank_offset,
-                                      Mistake::crank_direction, Mistake::coupler_position};
+                                      Mistake::crank_direction, Mistake::coupler_position, Mistake::pulse_polarity};
   return m;
 }
 inline const std::vector<Mistake>& all_mistakes() {
   static const std::vector<Mistake> m{Mistake::coupler_sign,     Mistake::coupler_scale, Mistake::crank_offset,
                                       Mistake::crank_direction,  Mistake::coupler_position, Mistake::swapped,
-                                      Mistake::rocker_sign};
+                                      Mistake::rocker_sign,      Mistake::pulse_polarity, Mistake::full_scale};
   return m;
 }
 inline const char* to_string(Mistake m) {
@@ -49,6 +51,8 @@ inline const char* to_string(Mistake m) {
     case Mistake::coupler_position: return "coupler position 50 mm off";
     case Mistake::swapped: return "coupler/rocker swapped";
     case Mistake::rocker_sign: return "rocker axis_sign flipped";
+    case Mistake::pulse_polarity: return "pulse polarity: other edge";
+    case Mistake::full_scale: return "full_scale_V x1.1";
   }
   return "?";
 }
@@ -63,6 +67,8 @@ inline const char* expected_item(Mistake m) {
     case Mistake::coupler_position: return "position_mm";
     case Mistake::swapped: return "channels_swapped";
     case Mistake::rocker_sign: return "axis_sign";
+    case Mistake::pulse_polarity: return "polarity";
+    case Mistake::full_scale: return "common_scale";
   }
   return "";
 }
@@ -146,6 +152,8 @@ inline std::filesystem::path manifest_with(const std::filesystem::path& recordin
     case Mistake::coupler_position: channel("coupler_t").position_m -= 0.050; break;
     case Mistake::swapped: std::swap(channel("coupler_t").index, channel("rocker_t").index); break;
     case Mistake::rocker_sign: channel("rocker_t").axis_sign *= -1; break;
+    case Mistake::pulse_polarity: channel("crank_pulse").polarity = PulsePolarity::falling; break;
+    case Mistake::full_scale: man.full_scale_V *= 1.1; break;
   }
   const auto out = recording.parent_path() / (recording.stem().string() + "." + std::to_string(static_cast<int>(m)) + ".toml");
   std::ofstream(out) << manifest_to_toml(man, recording.parent_path());

@@ -103,6 +103,28 @@ TEST(SetupCheck, FindingsCarryTheTrueValues) {
     EXPECT_GE(finding(k, "crank_offset_deg").confidence, 0.5);
   }
   {
+    // The falling edge of a 10°-wide mark that starts rising: every crank
+    // angle is 10° late. The finding names the polarity and the offset that
+    // would also fix it.
+    const SetupCheck k = analyse(rec, Mistake::pulse_polarity).check;
+    EXPECT_NEAR(k.crank_offset_deg, 10.0, 1.0) << describe(k);
+    const SetupFinding f = finding(k, "polarity");
+    EXPECT_EQ(f.manifest, "\"falling\" with crank_offset_deg = 0");
+    EXPECT_NE(f.data.find("\"rising\" with crank_offset_deg = 0"), std::string::npos) << f.data;
+    EXPECT_NE(f.key.find("[[channel]] name=\"crank_pulse\" polarity"), std::string::npos) << f.key;
+    EXPECT_GE(f.confidence, 0.5);
+  }
+  {
+    // A scale common to every channel: the rig or the recording's scale, not one sensor.
+    const SetupCheck k = analyse(rec, Mistake::full_scale).check;
+    for (const ChannelSetupEstimate& e : k.channels) EXPECT_NEAR(e.scale, 1.1, 0.03) << describe(k);
+    const SetupFinding f = finding(k, "common_scale");
+    EXPECT_NE(f.key.find("full_scale_V"), std::string::npos) << f.key;
+    EXPECT_NE(f.data.find("1.1"), std::string::npos) << f.data;
+    EXPECT_GE(f.confidence, 0.5);
+    for (const SetupFinding& g : k.findings) EXPECT_NE(g.item, "volts_per_unit") << g.message;
+  }
+  {
     const SetupCheck k = analyse(rec, Mistake::crank_direction).check;
     EXPECT_EQ(k.crank_direction, 1.0);
     EXPECT_EQ(finding(k, "crank_direction").data, "\"ccw\"");

@@ -1,0 +1,58 @@
+#include "analyze/setup_finding.hpp"
+
+#include "common/format.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace fourbar {
+
+std::string SetupCheck::status() const {
+  if (!checked) return "not checked";
+  return findings.empty() ? "ok" : "check set-up";
+}
+
+namespace {
+
+std::string percent(double x) { return std::to_string(static_cast<int>(std::lround(100 * x))) + " %"; }
+
+}  // namespace
+
+std::string channel_key(const std::string& name, const std::string& key) {
+  return "[[channel]] name=\"" + name + "\" " + key;
+}
+
+void add_finding(SetupCheck& out, std::string item, std::string channel, std::string key, std::string manifest,
+                 std::string data, double confidence) {
+  SetupFinding f{std::move(item), std::move(channel), std::move(key), std::move(manifest), std::move(data), confidence, {}};
+  f.message = (f.channel.empty() ? std::string() : "channel '" + f.channel + "': ") + f.item + ": the manifest says " +
+              f.manifest + ", the data say " + f.data + " (confidence " + percent(f.confidence) + "); change " + f.key;
+  out.findings.push_back(std::move(f));
+}
+
+void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales, double tolerance,
+                              const std::string& rig_file, double min_confidence) {
+  if (scales.size() < 2) return;
+  double mean = 0, nearest = 1e300;
+  bool above = true, below = true;
+  for (double k : scales) {
+    mean += (k - 1) / static_cast<double>(scales.size());
+    nearest = std::min(nearest, std::abs(k - 1));
+    above = above && k > 1, below = below && k < 1;
+  }
+  if (!(above || below) || nearest <= tolerance) return;
+  double var = 0;
+  for (double k : scales) var += (k - 1 - mean) * (k - 1 - mean) / static_cast<double>(scales.size());
+  const double confidence = std::clamp(1 - std::sqrt(var) / std::abs(mean), 0.0, 1.0);
+  if (confidence < min_confidence) return;
+  std::string each;
+  for (double k : scales) each += (each.empty() ? "" : ", ") + format_number(k, 3);
+  add_finding(out, "common_scale", "", "the link lengths in " + rig_file + ", or full_scale_V",
+              "the rig's nominal motion (factor 1)",
+              "every accelerometer reads " + format_number(1 + mean, 3) + " x it (" + each +
+                  "); a cause common to all sensors: a wrong rig file or recording scale",
+              confidence);
+}
+
+}  // namespace fourbar
