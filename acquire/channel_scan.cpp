@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <semaphore>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
 #include <thread>
 
 #include "common/error.hpp"
@@ -41,42 +43,54 @@ void check_finite(const RecordingInfo& info, const double* frame, std::uint64_t 
                        format_number(t0 + static_cast<double>(frame_index) / fs) + " s); the recording is damaged");
 }
 
-/// The pulse channel's part of the scan on a thread of its own, block by
-/// block in the file's order (so every sum and count is the one of one
-/// thread), while the calling thread does the accelerometers' part of the
-/// same block. The block stays valid until `wait` returns.
+/// The pulse channel's part of the scan on a thread of its own: the calling
+/// thread hands over each block's pulse values (checked finite) and goes on
+/// with the next block; the thread takes them in the file's order, so every
+/// sum and count is the one of one thread. At most kQueued blocks wait, so
+/// memory stays bounded when the thread falls behind.
 class PulseScanThread {
  public:
-  explicit PulseScanThread(std::function<void(std::span<const double>, std::size_t)> work)
+  explicit PulseScanThread(std::function<void(std::span<const double>)> work)
       : work_(std::move(work)), thread_([this] { run(); }) {}
-  ~PulseScanThread() {
-    wait();
-    finish_ = true;
-    go_.release();
+  ~PulseScanThread() { finish(); }
+  void post(std::vector<double> values) {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return queue_.size() < kQueued; });
+    queue_.push_back(std::move(values));
+    changed_.notify_all();
   }
-  void post(std::span<const double> block, std::size_t frames) {
-    block_ = block, frames_ = frames, busy_ = true;
-    go_.release();
-  }
-  void wait() {
-    if (busy_) done_.acquire(), busy_ = false;
+  /// Waits until every block posted is done.
+  void finish() {
+    {
+      const std::lock_guard lock(mutex_);
+      finishing_ = true;
+    }
+    changed_.notify_all();
+    if (thread_.joinable()) thread_.join();
   }
 
  private:
+  static constexpr std::size_t kQueued = 8;
   void run() {
     for (;;) {
-      go_.acquire();
-      if (finish_) return;
-      work_(block_, frames_);
-      done_.release();
+      std::vector<double> values;
+      {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return !queue_.empty() || finishing_; });
+        if (queue_.empty()) return;  // finishing, and nothing left
+        values = std::move(queue_.front());
+        queue_.pop_front();
+      }
+      changed_.notify_all();
+      work_(values);
     }
   }
-  std::function<void(std::span<const double>, std::size_t)> work_;
-  std::span<const double> block_;
-  std::size_t frames_ = 0;
-  bool busy_ = false, finish_ = false;
-  std::binary_semaphore go_{0}, done_{0};
-  std::jthread thread_;
+  std::function<void(std::span<const double>)> work_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::vector<double>> queue_;
+  bool finishing_ = false;
+  std::thread thread_;
 };
 
 }  // namespace
@@ -90,16 +104,19 @@ ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInp
   Accumulator pulse_acc;
   ScanResult result;
   result.pulse_local = LocalLevels(fs);
-  auto pulse_part = [&](std::span<const double> block, std::size_t frames) {
-    for (std::size_t f = 0; f < frames; ++f) {
-      const double raw = block[f * channels + pulse.index];
-      if (!std::isfinite(raw)) return;  // the accelerometers' part stops the scan at this frame (check_finite)
-      const double v = raw * pulse.volts_per_unit;
+  auto pulse_part = [&](std::span<const double> volts) {
+    for (double v : volts) {
       pulse_acc.add(v);
       result.pulse_histogram.add(v);
       result.pulse_local.add(v);
     }
   };
+  std::vector<double> volts;
+  auto pulse_values = [&](std::span<const double> block, std::size_t frames) {
+    volts.resize(frames);
+    for (std::size_t f = 0; f < frames; ++f) volts[f] = block[f * channels + pulse.index] * pulse.volts_per_unit;
+  };
+  // Checks every value of the block (check_finite) before the pulse part sees it.
   auto accelerometer_part = [&](std::span<const double> block, std::size_t frames, std::uint64_t first) {
     for (std::size_t f = 0; f < frames; ++f) {
       const double* frame = block.data() + f * channels;
@@ -115,15 +132,17 @@ ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInp
     PulseScanThread pulse_thread(pulse_part);
     for_each_block(stream, AcquirePass::scan, [&](std::span<const double> block, std::size_t frames,
                                                   std::uint64_t first) {
-      pulse_thread.post(block, frames);
       accelerometer_part(block, frames, first);
-      pulse_thread.wait();
+      pulse_values(block, frames);
+      pulse_thread.post(volts);  // a copy: the next block refills `volts`
     });
+    pulse_thread.finish();
   } else {
     for_each_block(stream, AcquirePass::scan, [&](std::span<const double> block, std::size_t frames,
                                                   std::uint64_t first) {
       accelerometer_part(block, frames, first);
-      pulse_part(block, frames);
+      pulse_values(block, frames);
+      pulse_part(volts);
     });
   }
   result.pulse_local.finish();
