@@ -74,7 +74,8 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   report.clipping_checked = clip.checked;
 
   Progress progress("acquire", kAcquirePasses * info.frames, options.progress);
-  const BlockStream stream{reader, std::max(options.block_frames, kMinBlockFrames), progress};
+  const bool threaded = options.threads > 1;
+  const BlockStream stream{reader, std::max(options.block_frames, kMinBlockFrames), progress, threaded, threaded};
   PassClock clock(report.pass_seconds);
 
   ScanResult scan = scan_pass(stream, accel.inputs, clip, pulse_input(manifest));

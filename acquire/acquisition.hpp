@@ -50,6 +50,10 @@ struct AcquireOptions {
   /// Revolutions of raw signal to keep (AcquisitionReport::excerpt, recorded
   /// in the third pass, signal_excerpt.hpp); 0: none.
   std::size_t excerpt_revolutions = 0;
+  /// Cores acquire may use. More than 1: the file is read on a thread of its
+  /// own ahead of each pass, and the scan pass does the pulse channel on a
+  /// second thread (the same numbers either way).
+  unsigned threads = 1;
 };
 
 struct AcquisitionReport {

@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
 
 #include "common/error.hpp"
 #include "common/format.hpp"
@@ -38,6 +43,56 @@ void check_finite(const RecordingInfo& info, const double* frame, std::uint64_t 
                        format_number(t0 + static_cast<double>(frame_index) / fs) + " s); the recording is damaged");
 }
 
+/// The pulse channel's part of the scan on a thread of its own: the calling
+/// thread hands over each block's pulse values (checked finite) and goes on
+/// with the next block; the thread takes them in the file's order, so every
+/// sum and count is the one of one thread. At most kQueued blocks wait, so
+/// memory stays bounded when the thread falls behind.
+class PulseScanThread {
+ public:
+  explicit PulseScanThread(std::function<void(std::span<const double>)> work)
+      : work_(std::move(work)), thread_([this] { run(); }) {}
+  ~PulseScanThread() { finish(); }
+  void post(std::vector<double> values) {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return queue_.size() < kQueued; });
+    queue_.push_back(std::move(values));
+    changed_.notify_all();
+  }
+  /// Waits until every block posted is done.
+  void finish() {
+    {
+      const std::lock_guard lock(mutex_);
+      finishing_ = true;
+    }
+    changed_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  static constexpr std::size_t kQueued = 8;
+  void run() {
+    for (;;) {
+      std::vector<double> values;
+      {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return !queue_.empty() || finishing_; });
+        if (queue_.empty()) return;  // finishing, and nothing left
+        values = std::move(queue_.front());
+        queue_.pop_front();
+      }
+      changed_.notify_all();
+      work_(values);
+    }
+  }
+  std::function<void(std::span<const double>)> work_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::vector<double>> queue_;
+  bool finishing_ = false;
+  std::thread thread_;
+};
+
 }  // namespace
 
 ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInput> accelerometers,
@@ -49,8 +104,20 @@ ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInp
   Accumulator pulse_acc;
   ScanResult result;
   result.pulse_local = LocalLevels(fs);
-  for_each_block(stream, AcquirePass::scan, [&](std::span<const double> block, std::size_t frames,
-                                                std::uint64_t first) {
+  auto pulse_part = [&](std::span<const double> volts) {
+    for (double v : volts) {
+      pulse_acc.add(v);
+      result.pulse_histogram.add(v);
+      result.pulse_local.add(v);
+    }
+  };
+  std::vector<double> volts;
+  auto pulse_values = [&](std::span<const double> block, std::size_t frames) {
+    volts.resize(frames);
+    for (std::size_t f = 0; f < frames; ++f) volts[f] = block[f * channels + pulse.index] * pulse.volts_per_unit;
+  };
+  // Checks every value of the block (check_finite) before the pulse part sees it.
+  auto accelerometer_part = [&](std::span<const double> block, std::size_t frames, std::uint64_t first) {
     for (std::size_t f = 0; f < frames; ++f) {
       const double* frame = block.data() + f * channels;
       check_finite(info, frame, first + f);
@@ -59,12 +126,25 @@ ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInp
         acc[a].add(raw * accelerometers[a].m_s2_per_unit);
         if (clip.clipped(raw) && acc[a].clipped++ == 0) acc[a].first_clip_s = t0 + static_cast<double>(first + f) / fs;
       }
-      const double v = frame[pulse.index] * pulse.volts_per_unit;
-      pulse_acc.add(v);
-      result.pulse_histogram.add(v);
-      result.pulse_local.add(v);
     }
-  });
+  };
+  if (stream.split_scan) {
+    PulseScanThread pulse_thread(pulse_part);
+    for_each_block(stream, AcquirePass::scan, [&](std::span<const double> block, std::size_t frames,
+                                                  std::uint64_t first) {
+      accelerometer_part(block, frames, first);
+      pulse_values(block, frames);
+      pulse_thread.post(volts);  // a copy: the next block refills `volts`
+    });
+    pulse_thread.finish();
+  } else {
+    for_each_block(stream, AcquirePass::scan, [&](std::span<const double> block, std::size_t frames,
+                                                  std::uint64_t first) {
+      accelerometer_part(block, frames, first);
+      pulse_values(block, frames);
+      pulse_part(volts);
+    });
+  }
   result.pulse_local.finish();
   for (const auto& a : acc) result.channel_stats.push_back(a.stats());
   result.pulse_stats = pulse_acc.stats();

@@ -1,5 +1,6 @@
 #include "cluster/case_queue.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -110,15 +111,37 @@ CaseQueueStats run_leader_rank(const MpiSession& mpi, std::span<const std::size_
   std::deque<std::pair<std::size_t, std::string>> local_results;
   std::atomic<bool> local_finished{false};
   std::size_t computed_here = 0;
+  using Clock = std::chrono::steady_clock;
+  auto ns_now = [] { return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count(); };
+  // The compute thread's cases so far: their time, and when the running one began.
+  std::atomic<std::int64_t> local_case_ns{0}, local_case_began_ns{ns_now()};
   std::jthread local([&] {
     while (const auto i = cursor.take()) {
+      local_case_began_ns = ns_now();
       std::string r = compute(*i);
+      local_case_ns += ns_now() - local_case_began_ns.load();
       const std::lock_guard lock(local_mutex);
       local_results.emplace_back(*i, std::move(r));
       ++computed_here;
     }
     local_finished = true;
   });
+  // Idle, the main thread naps between looks, from kShortestNap doubling up
+  // to a hundredth of the mean case (at most kLongestNap): a rank waits for
+  // its next case at most ~1 % of a case, and while long cases run the server
+  // wakes 20 times less often than with the shortest nap (each wake-up takes
+  // the compute thread's core for a moment: mpirun binds a rank to one core).
+  constexpr auto kShortestNap = std::chrono::microseconds(50), kLongestNap = std::chrono::microseconds(1000);
+  auto nap = kShortestNap;
+  auto longest_nap = [&] {  // the mean case, the running one counted with its time so far
+    std::int64_t done_here = 0;
+    {
+      const std::lock_guard lock(local_mutex);
+      done_here = static_cast<std::int64_t>(computed_here);
+    }
+    const std::int64_t mean_ns = (local_case_ns.load() + (ns_now() - local_case_began_ns.load())) / (done_here + 1);
+    return std::clamp(std::chrono::microseconds(mean_ns / 100000), kShortestNap, kLongestNap);
+  };
 
   int serving = mpi.size() - 1;
   std::vector<char> buffer;
@@ -165,9 +188,12 @@ CaseQueueStats run_leader_rank(const MpiSession& mpi, std::span<const std::size_
         drain_local();
         break;
       }
-      // Idle: a short nap instead of spinning, so the compute thread keeps its
-      // core (an answer waits at most this long: well below 1 ms per case).
-      if (!progressed) std::this_thread::sleep_for(std::chrono::microseconds(50));
+      if (progressed) {
+        nap = kShortestNap;
+      } else {
+        std::this_thread::sleep_for(nap);
+        nap = std::min(2 * nap, longest_nap());
+      }
     }
   } catch (const std::exception& e) {
     // `done` failed (an output that cannot be written); the other ranks and

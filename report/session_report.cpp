@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <mutex>
 #include <optional>
@@ -224,10 +225,14 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   }
 
   // Outputs: series first, the report last (each written whole or not at all).
+  // With more than one core the page is put together on a thread of its own
+  // while the series and the summary are written (the same text either way).
+  std::future<std::string> html;
+  if (cores > 1) html = std::async(std::launch::async, [&session] { return render_html_report(session); });
   write_series_files(session, out_dir, o.csv_comments);
   out.summary = out_dir / "summary.json";
   write_text_file(out.summary, json_text(summary_of(session), 2) + "\n");
-  write_text_file(o.out_html, render_html_report(session));
+  write_text_file(o.out_html, html.valid() ? html.get() : render_html_report(session));
   out.html = o.out_html;
   out.verdict_table = verdict_text_table(session["recordings"]);
   return out;
