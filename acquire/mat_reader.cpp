@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "acquire/csv_units.hpp"
@@ -79,10 +80,38 @@ bool is_rate_name(const std::string& name) {
   return std::any_of(std::begin(kNames), std::end(kNames), [&](const char* n) { return name == n; });
 }
 
+/// The sub-elements of the miMATRIX element whose data are bytes [at, end):
+/// empty when each lies within it (nested miMATRIX elements of cell and
+/// struct arrays too), else where one does not. libmatio trusts these
+/// sizes: a dimensions sub-element claiming 1.9 GB inside an 816-byte
+/// variable made it allocate 3.9 GB (fuzzing: tests/fuzz/regressions/mat/).
+std::string v5_matrix_damage(const std::function<std::uint32_t(std::size_t)>& u32, std::size_t at, std::size_t end,
+                             int depth) {
+  if (depth > 16) return "damaged: variables nested more than 16 deep at byte " + std::to_string(at);
+  while (at < end) {
+    if (end - at < 8) return "damaged: a variable's last part at byte " + std::to_string(at) + " is cut short";
+    const std::uint32_t type = u32(at);
+    if (type >> 16) {  // small data element: 2-byte size, 2-byte type, 4 bytes of data
+      if ((type >> 16) > 4) return "damaged: a small data element at byte " + std::to_string(at) + " claims more than 4 bytes";
+      at += 8;
+      continue;
+    }
+    const std::size_t count = u32(at + 4);
+    if (count > end - at - 8)
+      return "damaged: a part of a variable at byte " + std::to_string(at) + " claims " + std::to_string(count) +
+             " bytes, more than the variable holds";
+    if (type == 14)
+      if (std::string d = v5_matrix_damage(u32, at + 8, at + 8 + count, depth + 1); !d.empty()) return d;
+    at = std::min(end, at + 8 + (count + 7) / 8 * 8);
+  }
+  return {};
+}
+
 /// v5 files: checks the endian indicator and walks the top-level data
-/// elements (tag: type, byte count); empty when sound, else what is wrong.
-/// libmatio stops quietly at a truncated element, which would drop the
-/// variables after it.
+/// elements (tag: type, byte count) and, in uncompressed variables, their
+/// parts; empty when sound, else what is wrong. libmatio stops quietly at a
+/// truncated element, which would drop the variables after it. (The parts of
+/// a compressed variable are read by libmatio as it inflates them.)
 std::string v5_damage(const std::filesystem::path& file) {
   const std::string truncated = "truncated: a variable runs past the end of the file (an interrupted copy?)";
   std::ifstream in(file, std::ios::binary);
@@ -109,6 +138,8 @@ std::string v5_damage(const std::filesystem::path& file) {
              ", not a variable (miMATRIX or miCOMPRESSED)";
     const std::size_t end = at + 8 + static_cast<std::size_t>(count);
     if (end > bytes.size()) return truncated;
+    if (type == 14)
+      if (std::string d = v5_matrix_damage(u32, at + 8, end, 0); !d.empty()) return d;
     at = type == 15 ? end : (end + 7) / 8 * 8;  // miMATRIX is padded to 8 bytes, miCOMPRESSED is not
   }
   return {};
