@@ -2,12 +2,15 @@
 
 #include <hdf5.h>
 #include <matio.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
+#include <new>
 #include <sstream>
 
 #include "acquire/csv_units.hpp"
@@ -79,8 +82,94 @@ bool is_rate_name(const std::string& name) {
   return std::any_of(std::begin(kNames), std::end(kNames), [&](const char* n) { return name == n; });
 }
 
+/// The sub-elements of the miMATRIX element whose data are bytes [at, end):
+/// empty when each lies within it (nested miMATRIX elements of cell and
+/// struct arrays too), else where one does not. libmatio trusts these
+/// sizes: a dimensions sub-element claiming 1.9 GB inside an 816-byte
+/// variable made it allocate 3.9 GB (fuzzing: tests/fuzz/regressions/mat/).
+std::string v5_matrix_damage(const std::function<std::uint32_t(std::size_t)>& u32, std::size_t at, std::size_t end,
+                             int depth) {
+  if (depth > 16) return "damaged: variables nested more than 16 deep at byte " + std::to_string(at);
+  while (at < end) {
+    if (end - at < 8) return "damaged: a variable's last part at byte " + std::to_string(at) + " is cut short";
+    const std::uint32_t type = u32(at);
+    if (type >> 16) {  // small data element: 2-byte size, 2-byte type, 4 bytes of data
+      if ((type >> 16) > 4) return "damaged: a small data element at byte " + std::to_string(at) + " claims more than 4 bytes";
+      at += 8;
+      continue;
+    }
+    const std::size_t count = u32(at + 4);
+    if (count > end - at - 8)
+      return "damaged: a part of a variable at byte " + std::to_string(at) + " claims " + std::to_string(count) +
+             " bytes, more than the variable holds";
+    if (type == 14)
+      if (std::string d = v5_matrix_damage(u32, at + 8, at + 8 + count, depth + 1); !d.empty()) return d;
+    at = std::min(end, at + 8 + (count + 7) / 8 * 8);
+  }
+  return {};
+}
+
+/// Whether the file starts with the 128-byte header of MATLAB v5/v7 (version
+/// 0x0100) or v7.3 (0x0200, the HDF5 file's user block): version and
+/// byte-order mark "IM" or "MI" at bytes 124-127.
+bool has_mat_header(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char h[128];
+  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return false;
+  const bool im = h[126] == 'I' && h[127] == 'M', mi = h[126] == 'M' && h[127] == 'I';
+  // The version is written in the file's byte order, as the mark is ("IM" read on this machine).
+  const unsigned version = im ? h[124] | h[125] << 8 : h[124] << 8 | h[125];
+  return (im || mi) && (version == 0x0100 || version == 0x0200);
+}
+
+/// The largest dimensions or name part a variable's header may claim (a
+/// MATLAB name has at most 63 characters; 4096 bytes are 1024 dimensions).
+constexpr std::size_t kMaxHeaderPart = 4096;
+
+/// A compressed variable (miCOMPRESSED, data bytes [data, data + size)):
+/// libmatio inflates its header and trusts the sizes there as it does in an
+/// uncompressed one (a name claiming 1.9 GB in a 58-byte variable cost 9 s
+/// and gigabytes; fuzzing: tests/fuzz/regressions/mat/). Inflates only the
+/// header (array flags, dimensions, name tags); empty when they are sound.
+std::string v5_compressed_damage(const unsigned char* data, std::size_t size, bool swap, std::size_t at) {
+  const std::string where = "damaged: the compressed variable at byte " + std::to_string(at);
+  std::vector<unsigned char> head(8 + 3 * (8 + kMaxHeaderPart));
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK) throw std::bad_alloc();
+  z.next_in = const_cast<unsigned char*>(data);
+  z.avail_in = static_cast<uInt>(size);
+  z.next_out = head.data();
+  z.avail_out = static_cast<uInt>(head.size());
+  const int rc = inflate(&z, Z_SYNC_FLUSH);
+  head.resize(head.size() - z.avail_out);
+  inflateEnd(&z);
+  if (rc != Z_OK && rc != Z_STREAM_END && rc != Z_BUF_ERROR) return where + " does not inflate";
+  auto u32 = [&](std::size_t i) {
+    std::uint32_t v = 0;
+    std::memcpy(&v, &head[i], 4);
+    return swap ? __builtin_bswap32(v) : v;
+  };
+  if (head.size() < 8 || u32(0) != 14) return where + " holds no variable";
+  const std::size_t end = 8 + static_cast<std::size_t>(u32(4));
+  std::size_t i = 8;
+  for (int part = 0; part < 3; ++part) {  // array flags, dimensions, name
+    if (i + 8 > head.size() || i + 8 > end) return where + " ends within its header";
+    const std::uint32_t type = u32(i);
+    if (type >> 16) {
+      i += 8;
+      continue;
+    }
+    const std::size_t count = u32(i + 4);
+    if (count > kMaxHeaderPart || count > end - i - 8)
+      return where + " has a header part claiming " + std::to_string(count) + " bytes";
+    i += 8 + (count + 7) / 8 * 8;
+  }
+  return {};
+}
+
 /// v5 files: checks the endian indicator and walks the top-level data
-/// elements (tag: type, byte count); empty when sound, else what is wrong.
+/// elements (tag: type, byte count), the parts of uncompressed variables
+/// and the headers of compressed ones; empty when sound, else what is wrong.
 /// libmatio stops quietly at a truncated element, which would drop the
 /// variables after it.
 std::string v5_damage(const std::filesystem::path& file) {
@@ -109,6 +198,10 @@ std::string v5_damage(const std::filesystem::path& file) {
              ", not a variable (miMATRIX or miCOMPRESSED)";
     const std::size_t end = at + 8 + static_cast<std::size_t>(count);
     if (end > bytes.size()) return truncated;
+    if (type == 14)
+      if (std::string d = v5_matrix_damage(u32, at + 8, end, 0); !d.empty()) return d;
+    if (type == 15)
+      if (std::string d = v5_compressed_damage(&bytes[at + 8], count, swap, at); !d.empty()) return d;
     at = type == 15 ? end : (end + 7) / 8 * 8;  // miMATRIX is padded to 8 bytes, miCOMPRESSED is not
   }
   return {};
@@ -131,15 +224,19 @@ class MatReader final : public Reader {
     const std::string f = file.string();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // HDF5 (v7.3) prints no error stacks: the errors below say it
     Mat_LogInitFunc("fourbar", [](int, char*) {});  // nor libmatio its warnings
+    // v4 (MATLAB before 1996) has no header to check a file against, and
+    // libmatio spends seconds and gigabytes on a damaged one (fuzzing) —
+    // already in Mat_Open, which tries v4 when the v5/v7.3 header is missing
+    // (a 120-byte file whose "name length" read 690 MB: 7 s). So the header
+    // is checked first.
+    const std::string v4 = f + ": a MATLAB v4 file (or not a MATLAB file at all): not read; save it from MATLAB as "
+                               "v7 (save -v7) or v7.3";
+    if (!has_mat_header(file)) throw InputError(v4);
     MatFile m;
     m.mat = Mat_Open(f.c_str(), MAT_ACC_RDONLY);
     if (!m.mat) throw InputError(f + ": not a readable MATLAB file (damaged or not a .mat); re-export it from MATLAB");
     const mat_ft version = Mat_GetVersion(m.mat);
-    // v4 (MATLAB before 1996) has no header to check a file against, and
-    // libmatio spends seconds and gigabytes on a damaged one (fuzzing).
-    if (version == MAT_FT_MAT4)
-      throw InputError(f + ": a MATLAB v4 file (or not a MATLAB file at all): not read; save it from MATLAB as "
-                       "v7 (save -v7) or v7.3");
+    if (version == MAT_FT_MAT4) throw InputError(v4);
     info_.format = version == MAT_FT_MAT73 ? "MAT v7.3" : "MAT v5";
     std::error_code ec;
     const auto file_bytes = std::filesystem::file_size(file, ec);

@@ -126,6 +126,9 @@ void read_bearing_bodies(TomlSection& c, Rig& rig) {
     if (!c.has(key)) return std::nullopt;
     const double v = c.number(key);
     if (!(v > 0) || !std::isfinite(v)) c.fail(key, "must be a positive number");
+    // 1e300 GPa is finite but not in Pa: an infinite modulus would give the
+    // compliant contact an infinite stiffness (fuzzing: tests/fuzz/regressions/rig/).
+    if (!std::isfinite(v * scale)) c.fail(key, "= " + format_number(v) + " is too large to be a bearing's value");
     return v * scale;
   };
   auto poisson = [&](const char* key) -> std::optional<double> {

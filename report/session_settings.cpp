@@ -54,7 +54,7 @@ TheorySettings read_theory(TomlSection& t, TheorySettings s, const std::string& 
     if (t.has("friction_coefficient")) {
       if (s.contact != ContactLaw::stick_slip)
         t.fail("friction_coefficient", "is used only with contact = \"stick-slip\"; set contact or remove it");
-      s.friction_coefficient = t.non_negative("friction_coefficient");
+      s.friction_coefficient = t.in_range("friction_coefficient", 0.0, 100.0);  // the scene's bounds for μ
     }
   }
   s.warmup_revolutions = static_cast<int>(t.integer("warmup_revolutions", 0, 10000, s.warmup_revolutions));
@@ -66,6 +66,9 @@ TheorySettings read_theory(TomlSection& t, TheorySettings s, const std::string& 
 
 void read_analysis(TomlSection& a, AnalyzeOptions& o) {
   o.grid_points_per_rev = static_cast<std::size_t>(a.integer("points_per_rev", 0, 1 << 20, 0));
+  if (o.grid_points_per_rev != 0 && o.grid_points_per_rev < 4)
+    a.fail("points_per_rev", "= " + std::to_string(o.grid_points_per_rev) +
+                                 " must be at least 4 crank angles per revolution (or 0: automatic)");
   if (a.has("low_hz")) o.filter.low_hz = a.positive("low_hz");
   if (a.has("high_hz")) o.filter.high_hz = a.positive("high_hz");
   o.filter.mains_hz = a.in_range("mains_hz", 0, 1e5, 0.0);
@@ -78,7 +81,12 @@ void read_analysis(TomlSection& a, AnalyzeOptions& o) {
       a.fail("window", e.what());
     }
   }
-  if (a.has("transition_hz")) o.filter.transition_hz = a.non_negative("transition_hz");
+  if (a.has("transition_hz")) {
+    o.filter.transition_hz = a.non_negative("transition_hz");
+    if (*o.filter.transition_hz == 0 && o.filter.window.type != WindowType::rectangular)
+      a.fail("transition_hz", "= 0 (the ideal bin-wise filter) takes window = \"rectangular\", not \"" +
+                                  to_string(o.filter.window) + "\"; set the window or a transition width > 0");
+  }
   o.guard_revolutions = static_cast<std::size_t>(a.integer("guard_revolutions", 0, 1000, 0));
   if (a.has("integration")) {
     const std::string m = a.choice("integration", {"spectral", "closed_trapezoid", "trapezoid"});
@@ -136,10 +144,13 @@ SessionSettings load_session_settings(const std::filesystem::path& dir) {
     s.theory = read_theory(*t, s.theory, std::string(kSessionFile) + " [theory]");
     t->finish();
   }
+  std::set<std::string> recordings;  // what a [[recording]] may name: the folder's recordings, nothing else
+  for (const auto& p : find_session_files(dir).recordings) recordings.insert(p.filename().string());
   for (TomlSection& r : root.sections("recording")) {
     const std::string name = r.string("file");
-    if (name.find('/') != std::string::npos || !std::filesystem::exists(dir / name))
-      r.fail("file", "'" + name + "' is not a file in the session folder " + dir.string());
+    if (!recordings.count(name))
+      r.fail("file", "'" + name + "' is not a recording in the session folder " + dir.string() +
+                         " (a file name with its extension, e.g. \"run1.flac\", as fourbar report lists it)");
     if (s.theory_by_recording.count(name)) r.fail("file", "'" + name + "' has two [[recording]] tables; merge them");
     s.theory_by_recording[name] = read_theory(r, s.theory, std::string(kSessionFile) + " [[recording]] " + name);
     r.finish();

@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev           # small dense linear algebra (sim, analyze)
   libsndfile1-dev         # WAV/W64/RF64/FLAC/CAF/AIFF recordings (acquire)
   libmatio-dev            # MATLAB .mat v5 and v7.3 (HDF5) recordings (acquire)
+  zlib1g-dev              # acquire: the headers of compressed .mat variables, checked before libmatio
   libboost-dev            # Boost.Odeint integrators (header-only)
   libboost-program-options-dev  # the fourbar command line
   libtomlplusplus-dev     # rig, scene and manifest files

@@ -140,6 +140,9 @@ TEST(Compliant, StiffnessFromTheRigBearingAndBadInput) {
   has(error_of(with(swap(bearing, "pin_poisson_ratio = 0.3", "pin_poisson_ratio = 0.5")), scene), "pin_poisson_ratio");
   has(error_of(with(swap(bearing, "bushing_youngs_modulus_GPa = 210", "bushing_youngs_modulus_GPa = 0")), scene),
       "bushing_youngs_modulus_GPa");
+  // Finite in GPa, infinite in Pa: refused, not an infinite stiffness.
+  has(error_of(with(swap(bearing, "pin_youngs_modulus_GPa = 210", "pin_youngs_modulus_GPa = 1e300")), scene),
+      "pin_youngs_modulus_GPa");
   has(error_of(with(swap(bearing, "pin_radius_mm = 10", "pin_radius_mm = 10.1")), scene), "does not fit the bushing");
   has(error_of(with(bearing), scene + "radial_mm = 0.1\n"), "does not fit");
   has(error_of(rig, scene), "contact_stiffness_N_per_m_n");  // nothing to compute K from

@@ -1,0 +1,60 @@
+// session.toml values the analysis or the simulators would refuse later are
+// refused when the session is read, naming the session.toml key (found by
+// the session fuzz target's invariants, tests/fuzz/fuzz_session.cpp).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "common/error.hpp"
+#include "report/session_settings.hpp"
+#include "support/temp_dir.hpp"
+
+namespace fourbar {
+namespace {
+
+/// The InputError text of reading a session holding run1.flac and this
+/// session.toml ("" when it loads).
+std::string error_of(const std::string& session_toml) {
+  testing::TempDir d;
+  d.write("run1.flac", "");
+  d.write("rig.toml", "");
+  d.write("session.toml", session_toml);
+  try {
+    (void)load_session_settings(d.path());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_refused(const std::string& session_toml, const std::string& key) {
+  const std::string err = error_of(session_toml);
+  EXPECT_NE(err.find("session.toml"), std::string::npos) << session_toml << "\n" << err;
+  EXPECT_NE(err.find(key), std::string::npos) << session_toml << "\n" << err;
+}
+
+TEST(SessionSettings, RecordingTableNamesOnlyARecordingOfTheFolder) {
+  EXPECT_EQ(error_of("[[recording]]\nfile = \"run1.flac\"\nrestitution = 0.2\n"), "");
+  for (const char* name : {"session.toml", "rig.toml", ".", "", "..", "run2.flac", "run1.FLAC"}) {
+    const std::string err = error_of(std::string("[[recording]]\nfile = \"") + name + "\"\nrestitution = 0.2\n");
+    EXPECT_NE(err.find("is not a recording in the session folder"), std::string::npos) << name << ": " << err;
+  }
+}
+
+TEST(SessionSettings, ThreeModeFrictionHasTheScenesBounds) {
+  EXPECT_EQ(error_of("[theory]\ncontact = \"stick-slip\"\nfriction_coefficient = 100\n"), "");
+  expect_refused("[theory]\ncontact = \"stick-slip\"\nfriction_coefficient = 1e6\n", "friction_coefficient");
+  expect_refused("[[recording]]\nfile = \"run1.flac\"\ncontact = \"stick-slip\"\nfriction_coefficient = 101\n",
+                 "friction_coefficient");
+}
+
+TEST(SessionSettings, AnalysisValuesTheAnalysisRefusesAreRefusedByKey) {
+  EXPECT_EQ(error_of("[analysis]\npoints_per_rev = 4\n"), "");
+  EXPECT_EQ(error_of("[analysis]\npoints_per_rev = 0\n"), "");
+  expect_refused("[analysis]\npoints_per_rev = 3\n", "points_per_rev");
+  EXPECT_EQ(error_of("[analysis]\nwindow = \"rectangular\"\ntransition_hz = 0\n"), "");
+  expect_refused("[analysis]\nwindow = \"kaiser:8\"\ntransition_hz = 0\n", "transition_hz");
+}
+
+}  // namespace
+}  // namespace fourbar
