@@ -56,6 +56,11 @@ TheorySettings read_theory(TomlSection& t, TheorySettings s, const std::string& 
         t.fail("friction_coefficient", "is used only with contact = \"stick-slip\"; set contact or remove it");
       s.friction_coefficient = t.in_range("friction_coefficient", 0.0, 100.0);  // the scene's bounds for μ
     }
+    // As in a scene: stick-slip without μ would silently be smooth contact.
+    if (t.has("contact") && s.contact == ContactLaw::stick_slip && !t.has("friction_coefficient") &&
+        s.friction_coefficient == 0)
+      t.fail("contact", "= \"stick-slip\" needs friction_coefficient (Coulomb's mu of the bearing); add it, or use "
+                        "contact = \"smooth\"");
   }
   s.warmup_revolutions = static_cast<int>(t.integer("warmup_revolutions", 0, 10000, s.warmup_revolutions));
   s.averaged_revolutions = static_cast<int>(t.integer("averaged_revolutions", 1, 10000, s.averaged_revolutions));

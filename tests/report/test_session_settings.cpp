@@ -48,6 +48,16 @@ TEST(SessionSettings, ThreeModeFrictionHasTheScenesBounds) {
                  "friction_coefficient");
 }
 
+TEST(SessionSettings, StickSlipWithoutFrictionIsRefusedNotSmooth) {
+  // Before: μ = 0, which is smooth contact under another name.
+  expect_refused("[theory]\ncontact = \"stick-slip\"\n", "contact");
+  expect_refused("[[recording]]\nfile = \"run1.flac\"\ncontact = \"stick-slip\"\n", "contact");
+  // μ from the session's [theory] carries over to a recording's override.
+  EXPECT_EQ(error_of("[theory]\ncontact = \"stick-slip\"\nfriction_coefficient = 0.2\n[[recording]]\nfile = "
+                     "\"run1.flac\"\ncontact = \"stick-slip\"\n"),
+            "");
+}
+
 TEST(SessionSettings, AnalysisValuesTheAnalysisRefusesAreRefusedByKey) {
   EXPECT_EQ(error_of("[analysis]\npoints_per_rev = 4\n"), "");
   EXPECT_EQ(error_of("[analysis]\npoints_per_rev = 0\n"), "");
