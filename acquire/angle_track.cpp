@@ -121,6 +121,7 @@ AngleTrack::AngleTrack(std::span<const double> times_s, std::span<const double> 
       std::max(1.0, std::floor(span / (static_cast<double>(knot_spacing) * edge_spacing))));
   const double delta = span / static_cast<double>(intervals), inv_delta = 1 / delta;
   const std::size_t m = intervals + 3;
+  coefficients_ = m;
   std::vector<std::array<double, 4>> band(m, std::array<double, 4>{});
   std::vector<double> rhs(m, 0.0);
   auto locate = [&](double phi, std::size_t& i, double& u) {
