@@ -12,7 +12,7 @@
 //  • least squares with uniform knots rather than a penalised (Reinsch)
 //    smoothing spline: the knot spacing alone sets what is kept — a speed
 //    change with a period of three knot spacings or more is followed
-//    (test_crank_smoothing: 99 % of its amplitude at smoothing_period_turns),
+//    (test_crank_smoothing: 99.2 % of its amplitude or more at smoothing_period_turns),
 //    whatever the jitter or the number of edges, where a penalty weight has
 //    to be chosen or estimated per recording; the number of coefficients is
 //    known, so the residual the jitter alone leaves is known too (below);
