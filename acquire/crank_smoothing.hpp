@@ -55,7 +55,8 @@ inline constexpr double kDefaultSmoothingPeriodTurns = 10;
 inline constexpr double kSmoothingMisfitRatio = 3;
 /// … when it is also more than this much crank angle (below it nothing downstream can tell).
 inline constexpr double kSmoothingMisfitFloorDeg = 1e-3;
-/// Guard blocks hold at least this many edges.
+/// Guard blocks hold at least this many edges; a shorter run of edges (a
+/// piece between gaps) is not smoothed: its motion goes through every edge.
 inline constexpr std::size_t kSmoothingMinBlockEdges = 16;
 
 /// Edges between the smoothing spline's knots for a period of `period_turns`

@@ -59,7 +59,10 @@ RevolutionSchedule plan_revolutions(const PulseTrain& train, double sample_rate_
     const std::size_t knots = smoothing_knot_spacing(smoothing_period_turns, 1);
     schedule.smoothing.period_turns = smoothing_period_turns;
     schedule.smoothing.knot_spacing_turns = static_cast<double>(knots);
-    for (std::size_t s = 0; s < train.segments.size(); ++s) plan_smoothed_segment(train, s, knots, schedule);
+    // A run of pulses too short to show its jitter (a piece between gaps) goes through every pulse.
+    for (std::size_t s = 0; s < train.segments.size(); ++s)
+      if (train.segments[s].size() >= kSmoothingMinBlockEdges) plan_smoothed_segment(train, s, knots, schedule);
+      else plan_segment(train, s, schedule);
   } else {
     for (std::size_t s = 0; s < train.segments.size(); ++s) plan_segment(train, s, schedule);
   }

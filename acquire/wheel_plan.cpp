@@ -87,7 +87,7 @@ WheelSchedule plan_wheel_revolutions(const NumberedEdges& edges, const Manifest&
     }
     r.edges += phase.size();
     std::shared_ptr<const AngleTrack> track;
-    if (smoothing) {
+    if (smoothing && phase.size() >= kSmoothingMinBlockEdges) {  // a shorter run cannot show its jitter
       SmoothedSegment smooth = smooth_segment(seg.time_s, phase, knot_spacing, angle_knot_spacing(P));
       w.schedule.smoothing.add(smooth.fit);
       track = std::move(smooth.track);

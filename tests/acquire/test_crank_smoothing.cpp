@@ -126,6 +126,29 @@ TEST(CrankSmoothing, GuardFindsASpeedStepButNotASteadyRunOrASmoothRunUp) {
   EXPECT_NEAR(c.jitter_s, jitter, 0.2 * jitter);  // the step does not fool the jitter estimate
 }
 
+// A piece of pulse train between gaps too short to show its jitter (here 6
+// pulses of a run-up) is left unsmoothed rather than refused or forced
+// straight; the long piece is smoothed.
+TEST(CrankSmoothing, ShortPieceBetweenGapsGoesThroughEveryPulse) {
+  PulseTrain train;
+  const std::vector<double> steady = with_jitter(pulses_of(SpeedLaw{{0, 8}, {10, 10}}), 20e-6, 5);
+  const std::vector<double> runup = pulses_of(SpeedLaw{{0, 0.6}, {5, 15}});
+  train.segments.emplace_back();
+  for (double t : steady) train.segments.back().push_back({t, false});
+  train.segments.emplace_back();
+  for (double t : runup) train.segments.back().push_back({t + 10, false});
+  train.typical_period_s = 0.1;
+  ASSERT_LT(train.segments[1].size(), kSmoothingMinBlockEdges);
+  const RevolutionSchedule s = plan_revolutions(train, 1000, 0, 10);
+  EXPECT_FALSE(s.smoothing.fit.misfit());
+  ASSERT_EQ(s.plan.size(), steady.size() - 1 + runup.size() - 1);
+  std::size_t k = 0;
+  for (const RevolutionPlan& r : s.plan) {
+    EXPECT_EQ(r.track != nullptr, r.segment == 0);
+    if (r.segment == 1) EXPECT_EQ(r.t_start, runup[k++] + 10);  // through the pulse itself
+  }
+}
+
 /// Keeps the crank motion per sample.
 struct Crank : AcquisitionSink {
   std::vector<double> time, crank, omega, alpha;
