@@ -112,7 +112,8 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     report.edge_level_V = edges.edge_level_V;
     report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
     report.pulse_width_deg = median_width_deg(edges.widths_s, report.pulses.typical_period_s);
-    schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev);
+    schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev,
+                                manifest.pulse_channel().smoothing_period_turns);
     if (options.excerpt_revolutions > 0)
       excerpt = excerpt_window(report.pulses, options.excerpt_revolutions, info.sample_rate_hz, info.start_time_s, info.frames);
   }
@@ -121,6 +122,9 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     throw InputError(info.file.string() + ": " + std::to_string(report.revolutions) +
                      " complete turns in the crank-angle channels; need at least 2: record longer or check them");
 
+  require_smoothing_fits(schedule.smoothing, manifest, info.file);
+  report.smoothing = schedule.smoothing;
+  if (std::string w = smoothing_warning(report.smoothing); !w.empty()) report.warnings.push_back(std::move(w));
   report.revolutions_repaired = schedule.revolutions_repaired;
   report.frames_per_rev = schedule.frames_per_rev;
   report.grid_points_per_rev = sink.wants_grid() ? schedule.grid_points_per_rev : 0;

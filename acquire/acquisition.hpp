@@ -71,6 +71,7 @@ struct AcquisitionReport {
   double pulse_width_deg = NAN;
   PulseTrain pulses;                         ///< once per turn (a wheel or encoder: its turns)
   WheelReport wheel;                         ///< many edges per turn (positions_per_rev 0: one pulse per turn)
+  CrankSmoothingReport smoothing;            ///< crank_smoothing = "spline" (period_turns 0: off)
   int grid_points_per_rev = 0;               ///< N crank angles per revolution (0: the sink wanted no grid)
   double frames_per_rev = 0;                 ///< recording frames in a typical revolution
   std::size_t revolutions = 0;               ///< kept

@@ -5,6 +5,8 @@
 #include <cassert>
 #include <cmath>
 
+#include <Eigen/Sparse>
+
 namespace fourbar {
 
 namespace {
@@ -70,37 +72,6 @@ void bspline(double u, double* b, double* d1, double* d2) {
   d2[0] = v, d2[1] = 3 * u - 2, d2[2] = -3 * u + 1, d2[3] = u;
 }
 
-/// Solves the symmetric positive banded system (half-bandwidth 3, `band[i][k]`
-/// = A(i, i−k)) in place by Cholesky; `rhs` becomes the solution.
-void banded_cholesky_solve(std::vector<std::array<double, 4>>& band, std::vector<double>& rhs) {
-  const std::size_t n = rhs.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t k = 3; k >= 1; --k) {
-      if (k > i) continue;
-      const std::size_t j = i - k;  // L(i, j)
-      double s = band[i][k];
-      for (std::size_t m = k + 1; m <= 3 && m <= i; ++m) {
-        const std::size_t c = i - m;  // L(i, c)·L(j, c), needs j − c ≤ 3
-        if (j - c <= 3) s -= band[i][m] * band[j][j - c];
-      }
-      band[i][k] = s / band[j][0];
-    }
-    double d = band[i][0];
-    for (std::size_t m = 1; m <= 3 && m <= i; ++m) d -= band[i][m] * band[i][m];
-    band[i][0] = std::sqrt(std::max(d, 1e-300));
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    double s = rhs[i];
-    for (std::size_t m = 1; m <= 3 && m <= i; ++m) s -= band[i][m] * rhs[i - m];
-    rhs[i] = s / band[i][0];
-  }
-  for (std::size_t i = n; i-- > 0;) {
-    double s = rhs[i];
-    for (std::size_t m = 1; m <= 3 && i + m < n; ++m) s -= band[i + m][m] * rhs[i + m];
-    rhs[i] = s / band[i][0];
-  }
-}
-
 }  // namespace
 
 AngleTrack::AngleTrack(std::span<const double> times_s, std::span<const double> phases_rad, std::size_t knot_spacing) {
@@ -121,8 +92,12 @@ AngleTrack::AngleTrack(std::span<const double> times_s, std::span<const double> 
       std::max(1.0, std::floor(span / (static_cast<double>(knot_spacing) * edge_spacing))));
   const double delta = span / static_cast<double>(intervals), inv_delta = 1 / delta;
   const std::size_t m = intervals + 3;
-  std::vector<std::array<double, 4>> band(m, std::array<double, 4>{});
-  std::vector<double> rhs(m, 0.0);
+  coefficients_ = m;
+  // Normal equations: banded (a B-spline coefficient meets only its three
+  // neighbours on either side), kept as the lower band and solved by Eigen's
+  // sparse LDLᵀ in natural order (no fill outside the band): O(edges).
+  std::vector<std::array<double, 4>> band(m, std::array<double, 4>{});  // band[i][k] = A(i, i − k)
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m));
   auto locate = [&](double phi, std::size_t& i, double& u) {
     const double x = (phi - phi0) * inv_delta;
     i = std::min(intervals - 1, static_cast<std::size_t>(std::max(0.0, std::floor(x))));
@@ -136,22 +111,33 @@ AngleTrack::AngleTrack(std::span<const double> times_s, std::span<const double> 
     bspline(u, b, d1, d2);
     const double y = times_s[k] - times_s[0] - slope * (phases_rad[k] - phi0);
     for (int r = 0; r < 4; ++r) {
-      rhs[i + r] += b[r] * y;
+      rhs[static_cast<Eigen::Index>(i) + r] += b[r] * y;
       for (int c = 0; c <= r; ++c) band[i + r][r - c] += b[r] * b[c];
     }
   }
   // A whisper of ridge keeps an interval without edges (a wide gap) solvable.
   double diag = 0;
   for (const auto& row : band) diag = std::max(diag, row[0]);
-  for (auto& row : band) row[0] += 1e-12 * diag;
-  banded_cholesky_solve(band, rhs);
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(4 * m);
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t k = 0; k <= 3 && k <= i; ++k)
+      entries.emplace_back(static_cast<int>(i), static_cast<int>(i - k), band[i][k] + (k == 0 ? 1e-12 * diag : 0.0));
+  Eigen::SparseMatrix<double> normal(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
+  normal.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(normal);
+  assert(ldlt.info() == Eigen::Success);
+  const Eigen::VectorXd coef = ldlt.solve(rhs);
   for (std::size_t k = 0; k < n; ++k) {
     std::size_t i;
     double u;
     locate(phases_rad[k], i, u);
     bspline(u, b, d1, d2);
     double t = 0, dt = 0, ddt = 0;
-    for (int r = 0; r < 4; ++r) t += rhs[i + r] * b[r], dt += rhs[i + r] * d1[r], ddt += rhs[i + r] * d2[r];
+    for (int r = 0; r < 4; ++r) {
+      const double c = coef[static_cast<Eigen::Index>(i) + r];
+      t += c * b[r], dt += c * d1[r], ddt += c * d2[r];
+    }
     dt = dt * inv_delta + slope, ddt *= inv_delta * inv_delta;
     knots_[k] = {times_s[0] + slope * (phases_rad[k] - phi0) + t, phases_rad[k], 1.0 / dt, -ddt / (dt * dt * dt)};
   }

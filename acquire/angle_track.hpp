@@ -38,6 +38,8 @@ class AngleTrack {
   AngleTrack(std::span<const double> times_s, std::span<const double> phases_rad, std::size_t knot_spacing);
 
   std::size_t size() const { return knots_.size(); }
+  /// Free parameters of the fit (B-spline coefficients; 2 below four edges).
+  std::size_t coefficients() const { return coefficients_; }
   const Knot& knot(std::size_t k) const { return knots_[k]; }
 
   /// Evaluation in increasing time: keeps the interval (and its quintic)
@@ -63,6 +65,7 @@ class AngleTrack {
 
  private:
   std::vector<Knot> knots_;
+  std::size_t coefficients_ = 2;
 };
 
 }  // namespace fourbar

@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <sstream>
 
+#include "acquire/crank_smoothing.hpp"
 #include "acquire/csv_units.hpp"
 #include "acquire/manifest_placeholders.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/toml_section.hpp"
 #include "common/toml_writer.hpp"
 #include "common/units.hpp"
@@ -155,6 +157,22 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
     c.lines_per_rev = static_cast<int>(s.integer("lines_per_rev", 1, 1 << 22));
   if ((c.role == ChannelRole::crank_pulse && c.pulses_per_rev > 1) || c.role == ChannelRole::encoder_a)
     c.correct_tooth_spacing = s.boolean("correct_tooth_spacing", false);
+  if (c.role == ChannelRole::crank_pulse || c.role == ChannelRole::encoder_a) {
+    const bool spline = s.choice("crank_smoothing", {"none", "spline"}, "none") == "spline";
+    if (spline) {
+      // Knots every period/3 turns need at least two edges between them.
+      const int edges_per_turn = c.role == ChannelRole::encoder_a ? 4 * c.lines_per_rev : c.pulses_per_rev;
+      const double shortest = kSmoothingKnotsPerPeriod * 2.0 / edges_per_turn;
+      c.smoothing_period_turns = s.in_range("smoothing_period_turns", 1e-6, 1e6, std::max(shortest, kDefaultSmoothingPeriodTurns));
+      if (c.smoothing_period_turns < shortest)
+        s.fail("smoothing_period_turns", "= " + format_number(c.smoothing_period_turns, 6) + " is shorter than " +
+                                             format_number(shortest, 6) + " turns, the least that smooths " +
+                                             std::to_string(edges_per_turn) + " edge" + (edges_per_turn == 1 ? "" : "s") +
+                                             " per turn (knots every period/3 turns, two edges between knots)");
+    } else if (s.has("smoothing_period_turns")) {
+      s.fail("smoothing_period_turns", "is given but crank_smoothing is not \"spline\"; set crank_smoothing = \"spline\" or remove it");
+    }
+  }
   if (auto n = s.optional_string("notes")) c.notes = *n;
   s.finish();
   return c;
@@ -339,6 +357,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
       if (c.missing_teeth > 0) os << "missing_teeth = " << c.missing_teeth << "\n";
       if (c.lines_per_rev > 0) os << "lines_per_rev = " << c.lines_per_rev << "\n";
       if (c.correct_tooth_spacing) os << "correct_tooth_spacing = true\n";
+      if (c.smoothing_period_turns > 0)
+        os << "crank_smoothing = \"spline\"\nsmoothing_period_turns = " << num(c.smoothing_period_turns) << "\n";
     }
     if (!c.notes.empty()) os << "notes = " << quoted(c.notes) << "\n";
   }

@@ -80,6 +80,10 @@ struct ChannelSpec {
   int missing_teeth = 0;               ///< crank_pulse: teeth left out of the wheel (a 60−2 wheel: 2)
   int lines_per_rev = 0;               ///< encoder_a: encoder lines per turn (4 edges each)
   bool correct_tooth_spacing = false;  ///< estimate each tooth's angle over the turns and use it
+  /// On crank_pulse or encoder_a (crank_smoothing = "spline", crank_smoothing.hpp): the shortest
+  /// period of a speed change, in turns, that the crank motion keeps; 0 (crank_smoothing = "none",
+  /// the default): the motion through every edge.
+  double smoothing_period_turns = 0;
 
   std::string notes;
 };

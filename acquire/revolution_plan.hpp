@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "acquire/crank_smoothing.hpp"
 #include "acquire/pulse_train.hpp"
 #include "acquire/revolution_builder.hpp"
 
@@ -25,11 +26,19 @@ struct RevolutionSchedule {
   double frames_per_rev = 0;              ///< recording frames in a typical revolution
   int grid_points_per_rev = 0;            ///< N
   SpeedStats speed;
+  CrankSmoothingReport smoothing;         ///< crank_smoothing = "spline": how the fit meets the edges
 };
 
 /// `grid_points_per_rev` 0: the smallest multiple of kGridPointsStep not
-/// below frames_per_rev.
-RevolutionSchedule plan_revolutions(const PulseTrain& train, double sample_rate_hz, int grid_points_per_rev);
+/// below frames_per_rev. `smoothing_period_turns` > 0: each segment's crank
+/// motion smoothed across turns (crank_smoothing.hpp) instead of through
+/// every pulse; check schedule.smoothing with require_smoothing_fits.
+RevolutionSchedule plan_revolutions(const PulseTrain& train, double sample_rate_hz, int grid_points_per_rev,
+                                    double smoothing_period_turns = 0);
+
+/// frames_per_rev, N and the speed statistics once the plan is made.
+void finish_schedule(RevolutionSchedule& schedule, double typical_period_s, double sample_rate_hz,
+                     int grid_points_per_rev);
 
 /// Mean, standard deviation, min and max of the revolutions' speeds (rpm).
 SpeedStats speed_stats(const std::vector<RevolutionPlan>& plan);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "acquire/angle_track.hpp"
+#include "acquire/crank_smoothing.hpp"
 #include "acquire/tooth_spacing.hpp"
 #include "common/format.hpp"
 #include "common/units.hpp"
@@ -69,7 +70,13 @@ WheelSchedule plan_wheel_revolutions(const NumberedEdges& edges, const Manifest&
   r.turns_averaged = ts.turns;
   tooth_warnings(r, w.warnings);
 
-  const std::size_t knot_spacing = angle_knot_spacing(P);
+  const bool smoothing = main.smoothing_period_turns > 0;
+  const std::size_t knot_spacing =
+      smoothing ? smoothing_knot_spacing(main.smoothing_period_turns, P) : angle_knot_spacing(P);
+  if (smoothing) {
+    w.schedule.smoothing.period_turns = main.smoothing_period_turns;
+    w.schedule.smoothing.knot_spacing_turns = static_cast<double>(knot_spacing) / P;
+  }
   std::vector<double> periods;
   for (std::size_t s = 0; s < edges.segments.size(); ++s) {
     const NumberedSegment& seg = edges.segments[s];
@@ -79,7 +86,14 @@ WheelSchedule plan_wheel_revolutions(const NumberedEdges& edges, const Manifest&
       phase[i] = pitch * static_cast<double>(seg.position[i]) + (r.corrected && !std::isnan(ts.error_rad[tooth]) ? ts.error_rad[tooth] : 0.0);
     }
     r.edges += phase.size();
-    auto track = std::make_shared<const AngleTrack>(seg.time_s, phase, knot_spacing);
+    std::shared_ptr<const AngleTrack> track;
+    if (smoothing && phase.size() >= kSmoothingMinBlockEdges) {  // a shorter run cannot show its jitter
+      SmoothedSegment smooth = smooth_segment(seg.time_s, phase, knot_spacing, angle_knot_spacing(P));
+      w.schedule.smoothing.add(smooth.fit);
+      track = std::move(smooth.track);
+    } else {
+      track = std::make_shared<const AngleTrack>(seg.time_s, phase, knot_spacing);
+    }
     std::vector<Pulse> pulses;
     for (std::size_t i = 0; i < phase.size(); ++i)
       if (seg.position[i] % P == 0) pulses.push_back({track->knot(i).time_s, false});
@@ -104,13 +118,7 @@ WheelSchedule plan_wheel_revolutions(const NumberedEdges& edges, const Manifest&
   w.turns.typical_period_s = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
   for (auto& g : w.turns.gaps) g.periods = (g.to_s - g.from_s) / w.turns.typical_period_s;
   w.turns.edges = r.edges;
-  RevolutionSchedule& sch = w.schedule;
-  sch.frames_per_rev = w.turns.typical_period_s * sample_rate_hz;
-  sch.grid_points_per_rev =
-      grid_points_per_rev > 0
-          ? grid_points_per_rev
-          : kGridPointsStep * static_cast<int>(std::ceil(std::max(1.0, sch.frames_per_rev) / kGridPointsStep));
-  sch.speed = speed_stats(sch.plan);
+  finish_schedule(w.schedule, w.turns.typical_period_s, sample_rate_hz, grid_points_per_rev);
   return w;
 }
 

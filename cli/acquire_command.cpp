@@ -55,7 +55,8 @@ rocker), offset_mm, ac_coupled + highpass_hz; crank_pulse: polarity
 (rising|falling), threshold_low_V + threshold_high_V, crank_offset_deg,
 debounce_ms, pulses_per_rev + (a crank_index channel | missing_teeth) for a
 tooth wheel; encoder_a: lines_per_rev (with an encoder_b channel, optional
-crank_index = Z); correct_tooth_spacing; notes.
+crank_index = Z); correct_tooth_spacing; crank_smoothing (none|spline) +
+smoothing_period_turns; notes.
 Meanings and the sensor frame: docs/acquire.md.
 Warnings (repaired pulses, gaps, clipping) go to stderr and summary.json.
 )";
@@ -311,6 +312,21 @@ int run_acquire(const Invocation& inv) {
                   {"turns_averaged", w.turns_averaged},
                   {"once_per_turn_deg", w.once_per_turn_deg},
                   {"twice_per_turn_deg", w.twice_per_turn_deg}};
+  }
+  if (rep.smoothing.period_turns > 0) {
+    const CrankSmoothingReport& sm = rep.smoothing;
+    j["crank_smoothing"] = {{"method", "spline"},
+                            {"period_turns", sm.period_turns},
+                            {"knot_spacing_turns", sm.knot_spacing_turns},
+                            {"edge_jitter_s", sm.fit.jitter_s},
+                            {"residual_rms_s", sm.residual_rms_s},
+                            {"shift_rms_s", sm.shift_rms_s},
+                            {"shift_ratio_to_jitter", sm.shift_ratio},
+                            {"worst_block", {{"from_s", sm.fit.worst_from_s},
+                                             {"to_s", sm.fit.worst_to_s},
+                                             {"residual_rms_s", sm.fit.worst_rms_s},
+                                             {"residual_rms_deg", sm.fit.worst_rms_deg},
+                                             {"ratio_to_jitter", sm.fit.worst_ratio}}}};
   }
   const double first_pulse = tr.segments.front().front().time_s, last_pulse = tr.segments.back().back().time_s;
   j["revolutions"] = {{"kept", rep.revolutions},

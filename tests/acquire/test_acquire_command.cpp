@@ -259,6 +259,28 @@ TEST_F(TachoCommand, AmbiguousPeriodHalvingIsRefused) {
   EXPECT_NE(r.err.find("set debounce_ms = "), std::string::npos) << r.err;
 }
 
+// crank_smoothing on a 0/1 tachometer at 1 kHz (edges quantised to the
+// sample: ±0.5 ms). A steady run (600 → 606 rpm in 30 s) is smoothed and
+// summary.json says how; a 30 % speed step at 15 s is refused with exit
+// status 2, naming the key and the fix, and nothing is written.
+TEST_F(TachoCommand, CrankSmoothingSteadyRunAndSpeedStep) {
+  const std::string keys = "crank_smoothing = \"spline\"\nsmoothing_period_turns = 10\n";
+  const auto steady = tacho_csv(dir, "steady", testing::tacho_signal({{0, 30}, {10, 10.1}}, 1000, 0.1, 0.3));
+  std::ofstream(std::filesystem::path(steady).replace_extension(".toml"), std::ios::app) << keys;
+  const auto ok = acquire(steady, "--no-samples");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  const std::string summary = read_file(out() / "summary.json");
+  EXPECT_NE(summary.find("\"crank_smoothing\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"period_turns\": 10"), std::string::npos) << summary;
+  std::filesystem::remove_all(out());
+
+  const auto step = tacho_csv(dir, "step", testing::tacho_signal({{0, 15, 15.02, 30}, {10, 10, 13, 13}}, 1000, 0.1, 0.3));
+  std::ofstream(std::filesystem::path(step).replace_extension(".toml"), std::ios::app) << keys;
+  const auto r = acquire(step);
+  expect_clean_failure(r, "crank_smoothing = \"spline\" with smoothing_period_turns = 10");
+  EXPECT_NE(r.err.find("Lower smoothing_period_turns"), std::string::npos) << r.err;
+}
+
 TEST_F(BadInput, VirtualRigUnknownExtension) {
   const auto r = run_fourbar("virtual-rig " + kExample + " --out " + (out() / "R.mp3").string());
   EXPECT_EQ(r.status, 2) << r.err;

@@ -115,6 +115,7 @@ Manifest generate(Generator& g, const std::filesystem::path& rig_file, bool as_r
       if (std::abs(units::rad_to_deg(c.crank_offset_rad)) > 360) c.crank_offset_rad = 0;
       if (g.below(2)) c.debounce_s = as_read ? g.in(0, 1e6) * 1e-3 : g.in(0, 1e3);
       if (c.debounce_s * 1e3 > 1e6) c.debounce_s = 1e3;
+      if (g.below(3) == 0) c.smoothing_period_turns = g.in(6, 1e6);  // crank_smoothing = "spline"
     }
     if (g.below(2)) c.notes = g.text(false);
     m.channels.push_back(c);
@@ -157,6 +158,7 @@ void expect_same(const Manifest& a, const Manifest& b, double ulps, const std::s
     EXPECT_EQ(x.threshold_high_V, y.threshold_high_V) << text;
     EXPECT_LE(ulps_apart(x.crank_offset_rad, y.crank_offset_rad), ulps) << text;
     EXPECT_LE(ulps_apart(x.debounce_s, y.debounce_s), ulps) << text;
+    EXPECT_EQ(x.smoothing_period_turns, y.smoothing_period_turns) << text;
     EXPECT_EQ(x.notes, y.notes) << text;
   }
 }

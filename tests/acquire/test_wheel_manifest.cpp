@@ -100,5 +100,35 @@ TEST_F(WheelManifest, InconsistentSourcesNameTheKey) {
             std::string::npos);
 }
 
+// crank_smoothing on the main crank channel: off by default, a period of
+// 10 turns when asked without one, written back; what cannot smooth refused.
+TEST_F(WheelManifest, CrankSmoothingKeys) {
+  const std::string pulse = "[[channel]]\nindex = 1\nrole = \"crank_pulse\"\n";
+  EXPECT_EQ(load(pulse).pulse_channel().smoothing_period_turns, 0.0);
+  EXPECT_EQ(load(pulse + "crank_smoothing = \"none\"\n").pulse_channel().smoothing_period_turns, 0.0);
+  EXPECT_EQ(load(pulse + "crank_smoothing = \"spline\"\n").pulse_channel().smoothing_period_turns, 10.0);
+  const Manifest m = load(pulse + "crank_smoothing = \"spline\"\nsmoothing_period_turns = 25\n");
+  EXPECT_EQ(m.pulse_channel().smoothing_period_turns, 25.0);
+  const Manifest back = load_manifest(dir.write("back.toml", manifest_to_toml(m, dir.path())));
+  EXPECT_EQ(back.pulse_channel().smoothing_period_turns, 25.0);
+  // A 60-tooth wheel smooths down to 0.1 turn; one pulse per turn from 6 turns.
+  EXPECT_EQ(load("[[channel]]\nindex = 1\nrole = \"crank_pulse\"\npulses_per_rev = 60\nmissing_teeth = 2\n"
+                 "crank_smoothing = \"spline\"\nsmoothing_period_turns = 0.5\n")
+                .pulse_channel()
+                .smoothing_period_turns,
+            0.5);
+  EXPECT_NE(error_of(pulse + "crank_smoothing = \"spline\"\nsmoothing_period_turns = 4\n")
+                .find("smoothing_period_turns' = 4 is shorter than 6 turns"),
+            std::string::npos)
+      << error_of(pulse + "crank_smoothing = \"spline\"\nsmoothing_period_turns = 4\n");
+  EXPECT_NE(error_of(pulse + "smoothing_period_turns = 20\n").find("crank_smoothing is not \"spline\""),
+            std::string::npos);
+  EXPECT_NE(error_of(pulse + "crank_smoothing = \"loess\"\n").find("crank_smoothing"), std::string::npos);
+  EXPECT_NE(error_of(pulse + "[[channel]]\nindex = 2\nrole = \"coupler_normal\"\nvolts_per_unit = 0.01\n"
+                             "position_mm = 1\ncrank_smoothing = \"spline\"\n")
+                .find("crank_smoothing"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace fourbar
