@@ -3,7 +3,13 @@
 // a SYNTHETIC session made by bench/make_fit_session.sh with known
 // parameters.
 //
-//   fit_identifiability SESSION_DIR TRUE_E TRUE_CONTACT TRUE_MU [SIM_TURNS] [THREADS]
+//   fit_identifiability SESSION_DIR TRUE_E TRUE_CONTACT TRUE_MU [SIM_TURNS] [THREADS] [mu-scan]
+//
+// With `mu-scan` step 2 is instead μ = 0, 0.1 … 0.5 at the true e (stick-slip)
+// and three replicates of the truth (e nudged by 0.001, 0.002, 0.003: the
+// chaotic motion's point-to-point noise), and step 3 prints, per statistic
+// and μ, (model(μ) − model(truth)) / measured standard error: where the
+// statistics stop changing with μ, μ cannot be told apart from the data.
 //
 // 1. Every recording through acquire + analyze (the session's defaults, every
 //    turn kept) → the measured statistics with their jackknife standard error.
@@ -53,6 +59,7 @@ int main(int argc, char** argv) {
   truth.friction_coefficient = std::stod(argv[4]);
   const int sim_turns = argc > 5 ? std::stoi(argv[5]) : 100;
   const unsigned threads = argc > 6 ? static_cast<unsigned>(std::stoi(argv[6])) : 2;
+  const bool mu_scan = argc > 7 && std::string(argv[7]) == "mu-scan";
 
   SessionSettings settings = load_session_settings(dir);
   AnalyzeOptions options = settings.analysis;
@@ -76,6 +83,16 @@ int main(int argc, char** argv) {
                              {"e=0.5 mu=0.1", {0.5, ContactLaw::stick_slip, 0.1}},
                              {"e=0.5 mu=0.3", {0.5, ContactLaw::stick_slip, 0.3}},
                              {"truth", truth}};
+  if (mu_scan) {
+    cases.clear();
+    for (double mu : {0.0, 0.1, 0.2, 0.3, 0.4, 0.5})
+      cases.push_back({"mu=" + std::to_string(mu).substr(0, 3),
+                       {truth.restitution, mu > 0 ? ContactLaw::stick_slip : ContactLaw::smooth, mu}});
+    for (double d : {0.001, 0.002, 0.003})
+      cases.push_back({"truth+" + std::to_string(d).substr(0, 5),
+                       {truth.restitution + d, truth.contact, truth.friction_coefficient}});
+    cases.push_back({"truth", truth});
+  }
   // One simulation per (case, recording).
   std::vector<std::size_t> jobs(cases.size() * targets.size());
   for (std::size_t i = 0; i < jobs.size(); ++i) jobs[i] = i;
@@ -101,6 +118,41 @@ int main(int argc, char** argv) {
               truth.restitution, to_string(truth.contact), truth.friction_coefficient, targets.size(), analyse_s);
   std::printf("# %zu simulations of 20 + %d turns: %.1f s wall on %u threads, %.2f ms per simulated turn\n", jobs.size(),
               sim_turns, sim_wall_s, threads, 1e3 * sim_cpu_s / (static_cast<double>(jobs.size()) * (20 + sim_turns)));
+  if (mu_scan) {
+    // Per statistic: (model(case) − model(truth)) in measured standard errors.
+    std::printf("# (model(case) - model(truth)) / measured SE (log for magnitudes); the last three columns are\n"
+                "# replicates of the truth (e nudged by 0.001-0.003): the objective's own noise\n");
+    std::printf("%-24s %-6s %-14s", "recording", "link", "statistic");
+    for (std::size_t c = 0; c + 1 < cases.size(); ++c) std::printf(" %12s", cases[c].label.c_str());
+    std::printf("\n");
+    const std::size_t tc = cases.size() - 1;
+    for (std::size_t r = 0; r < targets.size(); ++r) {
+      const RecordingTarget& t = targets[r];
+      for (FitLink l : kFitLinks) {
+        const auto li = static_cast<std::size_t>(l);
+        if (!t.measured[li]) continue;
+        for (ResponseStatistic s : {ResponseStatistic::spread, ResponseStatistic::mean_deviation,
+                                    ResponseStatistic::peak_p90}) {
+          const auto si = index_of(s);
+          const double mv = t.measured[li]->value[si];
+          const double se_t = transformed_se(s, mv, t.measured[li]->standard_error[si]);
+          std::printf("%-24s %-6s %-14s", t.name.c_str(), std::string(name_of(l)).c_str(), std::string(name_of(s)).c_str());
+          for (std::size_t c = 0; c < tc; ++c)
+            std::printf(" %12.2f", (transformed(s, sims[c * targets.size() + r].link[li]->value[si]) -
+                                    transformed(s, sims[tc * targets.size() + r].link[li]->value[si])) / se_t);
+          std::printf("\n");
+        }
+        if (!t.measured_band[li]) continue;
+        const double se_t = t.measured_band[li]->standard_error / t.measured_band[li]->excess;
+        std::printf("%-24s %-6s %-14s", t.name.c_str(), std::string(name_of(l)).c_str(), "band_excess");
+        for (std::size_t c = 0; c < tc; ++c)
+          std::printf(" %12.2f", (std::log(sims[c * targets.size() + r].band[li]->excess) -
+                                  std::log(sims[tc * targets.size() + r].band[li]->excess)) / se_t);
+        std::printf("\n");
+      }
+    }
+    return 0;
+  }
   std::printf("# sens_e: change of the statistic (log for magnitudes) per +0.1 in e (0.2→0.8 smooth), in measured SEs;\n");
   std::printf("# sens_mu: per +0.1 in mu (stick-slip 0.1→0.3 at e = 0.5); z: (measured − model at truth)/combined SE\n");
   std::printf("%-28s %-6s %-16s %11s %9s %9s %9s %9s %9s %8s %8s %8s\n", "recording", "link", "statistic", "measured",

@@ -187,12 +187,12 @@ int run_fit(const Invocation& inv) {
     std::cout << label << ": ";
     for (const ParameterEstimate& p : f.parameters)
       std::cout << p.name << " = " << format_number(p.value, 3) << " [" << format_number(p.low, 3) << ", "
-                << format_number(p.high, 3) << "]" << (p.identifiable ? "" : " (not identifiable)") << "  ";
+                << format_number(p.high, 3) << "]" << (p.lower_bound_only ? " (not identifiable: only the lower bound)" : p.identifiable ? "" : " (not identifiable)") << "  ";
     std::cout << "chi2/term " << format_number(f.chi2 / std::max(1, f.terms), 3) << " (prior "
               << format_number(f.chi2_prior / std::max(1, f.terms), 3) << "), " << f.simulations << " simulations, "
               << format_number(f.seconds, 3) << " s\n";
     for (const ParameterEstimate& p : f.parameters)
-      if (!p.identifiable) std::cout << "  " << not_identifiable_advice(p.name) << "\n";
+      if (!p.identifiable) std::cout << "  " << parameter_advice(p) << "\n";
     for (const std::string& n : f.notes) std::cout << "  note: " << n << "\n";
   };
   if (per_recording) {

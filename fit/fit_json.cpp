@@ -1,5 +1,7 @@
 #include "fit/fit_json.hpp"
 
+#include "common/format.hpp"
+
 namespace fourbar {
 
 using nlohmann::json;
@@ -10,6 +12,25 @@ std::string not_identifiable_advice(const std::string& parameter) {
                      "at a sample rate of at least 8x the averaging filter's corner (e shows in the band above it), "
                      "with the rocker channel as well as the coupler, and at the larger clearance and higher speed, "
                      "where impacts are strongest";
+}
+
+std::string parameter_advice(const ParameterEstimate& p) {
+  if (p.identifiable) return {};
+  if (p.name != "friction_coefficient") return not_identifiable_advice(p.name);
+  // μ: measured on the recovery sessions (docs/fit.md, "μ above 0.2"): from
+  // μ ≈ 0.2 up, nearly every impact sticks and the statistics change by less
+  // than their noise, so more of the same recording does not pin μ down.
+  std::string s = p.name + ": not identifiable from these recordings";
+  if (p.lower_bound_only)
+    s += " above " + format_number(p.low, 2) + " (only " + p.name + " >= " + format_number(p.low, 2) +
+         " is measured: the objective stays within its noise from there to the top of the box, " +
+         format_number(p.high, 2) + ")";
+  else
+    s += " (the objective stays within its noise from " + format_number(p.low, 2) + " to " + format_number(p.high, 2) + ")";
+  return s + ". With friction of about 0.2 or more nearly every impact sticks, and a larger coefficient changes the "
+             "statistics by less than their noise at 25 turns; record at a higher crank speed (the statistics' "
+             "response to friction above 0.2 was larger at 350 than at 250 rpm) with several times more turns, "
+             "or measure the bushing pair's friction coefficient directly (tribometer or inclined-plane test)";
 }
 
 namespace {
@@ -30,7 +51,8 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
     json prof = json::array();
     for (std::size_t i = 0; i < p.profile_at.size(); ++i) prof.push_back({p.profile_at[i], p.profile_chi2[i]});
     pj["profile"] = prof;
-    if (!p.identifiable) pj["advice"] = not_identifiable_advice(p.name);
+    if (!p.identifiable) pj["advice"] = parameter_advice(p);
+    if (p.lower_bound_only) pj["only_lower_bound"] = true;
     params[p.name] = pj;
   }
   json contact = {{"value", to_string(f.best.contact)}};
@@ -85,6 +107,12 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
             {"recordings", recs},
             {"statistics", stats},
             {"interval_delta_chi2", f.interval_delta},
+            {"interval_level", f.noise.level},
+            {"objective_noise",
+             {{"bottom_chi2", f.noise.bottom},
+              {"noise_sd_chi2", f.noise.noise_sd},
+              {"replicates", f.noise.replicates},
+              {"dispersion", f.noise.dispersion}}},
             {"smooth_model", {{"fitted", f.surrogate_ok}, {"residual_rms", f.surrogate_residual_rms}}},
             {"evaluations", f.evaluations},
             {"simulations", f.simulations},

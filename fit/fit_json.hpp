@@ -18,5 +18,8 @@ nlohmann::json fit_to_json(const FitResult& fit, const std::vector<RecordingTarg
 
 /// What to record instead when a parameter is not identifiable.
 std::string not_identifiable_advice(const std::string& parameter);
+/// The advice for `p`: empty when identifiable; for a parameter bounded from
+/// below only (μ: the impacts stick), what that means and what to do instead.
+std::string parameter_advice(const ParameterEstimate& p);
 
 }  // namespace fourbar

@@ -15,7 +15,7 @@ constexpr int kProfileSteps = 201;  // resolution of the interval search over ea
 }  // namespace
 
 SurrogateFit fit_surrogate(const std::vector<EvaluatedPoint>& all, double e_lo, double e_hi, double mu_lo,
-                           double mu_hi, bool two, double noise_delta) {
+                           double mu_hi, bool two, double noise_delta, double interval_delta) {
   SurrogateFit out;
   const int features = two ? 6 : 3;
   if (all.empty()) return out;
@@ -48,7 +48,7 @@ SurrogateFit fit_surrogate(const std::vector<EvaluatedPoint>& all, double e_lo, 
   const Eigen::VectorXd r = A * c - b;
   out.residual_rms = std::sqrt(r.squaredNorm() / static_cast<double>(used.size()));
   out.points_used = static_cast<int>(used.size());
-  out.delta = std::max(noise_delta, out.residual_rms);
+  out.delta = std::max(interval_delta > 0 ? interval_delta : noise_delta, out.residual_rms);
   // Curvature: positive definite?
   if (two) {
     const double hxx = 2 * c(3), hyy = 2 * c(5), hxy = c(4);

@@ -30,8 +30,9 @@ struct SurrogateFit {
 };
 
 /// `two_parameters`: e and μ, else e only (friction ignored). `noise_delta`:
-/// the objective's expected noise; Δ = max(noise_delta, residual_rms).
+/// the objective's expected noise (the points within 6× of the lowest are
+/// fitted); Δ = max(interval_delta, residual_rms), interval_delta = noise_delta when 0.
 SurrogateFit fit_surrogate(const std::vector<EvaluatedPoint>& points, double e_low, double e_high, double mu_low,
-                           double mu_high, bool two_parameters, double noise_delta);
+                           double mu_high, bool two_parameters, double noise_delta, double interval_delta = 0);
 
 }  // namespace fourbar

@@ -19,11 +19,15 @@
 // points of the profile grid, are spread over the threads (or MPI ranks) by
 // cluster/case_queue.
 //
-// Uncertainty (objective_surrogate.hpp): χ² is noisy (chaos: ≈ √(2ν) from
-// point to point), so a quadratic fitted to the evaluated points near the
-// bottom gives the estimate (its minimum) and the interval: the range where
-// its profile stays within Δ = max(√(2ν), the points' scatter about it) of
-// the minimum — the objective's own noise plus the measurement's. An
+// Uncertainty: χ² is noisy (chaos: nearby points come from different
+// trajectories). Its noise is measured by replicates at the lowest point
+// (objective_noise.hpp: e nudged by 0.001 …), and the interval is where the
+// profile stays within Δ of the bottom: the `interval_level` quantile of
+// the one-parameter profile ratio (χ²₁, scaled by the dispersion when the
+// statistics scatter more than their errors) plus the objective's own noise.
+// The profile is that of a quadratic fitted to the evaluated points near the
+// bottom when one is curved upwards there (objective_surrogate.hpp), else
+// the raw profile of the grid over the box. An
 // interval wider than `identifiable_width` of its box is reported as not
 // identifiable. The raw profiles (grid of the box) are kept for the charts.
 
@@ -31,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "fit/objective_noise.hpp"
 #include "fit/recording_target.hpp"
 
 namespace fourbar {
@@ -52,6 +57,8 @@ struct FitOptions {
   int profile_points_e = 8;        ///< grid of the profile along e
   int profile_points_mu = 5;       ///< … along μ
   double identifiable_width = 0.5; ///< an interval wider than this share of its box: not identifiable
+  int replicates = 4;              ///< extra χ² evaluations at the lowest point (e nudged) that measure the objective's noise
+  double interval_level = 0.95;    ///< confidence level of each parameter's interval
   bool use_band = true;            ///< the band energy above the averaging filter, where recorded
   /// The statistics compared besides the band energy: those that carry e or
   /// μ above their noise (docs/fit.md: sensitivity per statistic). Each extra
@@ -67,8 +74,19 @@ struct ParameterEstimate {
   std::string name;          ///< "restitution", "friction_coefficient"
   double value = 0, low = 0, high = 0;
   bool identifiable = true;
+  /// The interval runs to the top of a box whose top is no physical bound
+  /// (μ): the data bound the parameter from below only (not identifiable;
+  /// for μ: above `low` the impacts stick and the statistics no longer change).
+  bool lower_bound_only = false;
   std::vector<double> profile_at, profile_chi2;  ///< the profile (parameter value, min χ² there)
 };
+
+/// Sets `identifiable` and `lower_bound_only` of an estimate from its
+/// interval: wider than `identifiable_width` of the box → not identifiable;
+/// reaching the box's top but not its bottom when the top is no physical
+/// bound (μ; e ≤ 1 is one) → bounded from below only, not identifiable.
+void judge_identifiability(ParameterEstimate& p, double box_low, double box_high, bool top_is_physical,
+                           double identifiable_width);
 
 struct RecordingFitTerm {
   std::string name;
@@ -83,7 +101,8 @@ struct FitResult {
   double chi2 = 0;           ///< at the optimum
   int terms = 0;             ///< ν: statistics compared
   double chi2_prior = 0;     ///< at the prior
-  double interval_delta = 0; ///< Δχ² that bounded the intervals: max(√(2ν), scatter about the smooth model)
+  double interval_delta = 0; ///< Δχ² above the bottom that bounded the intervals (objective_noise.hpp)
+  ObjectiveNoise noise;      ///< the objective's noise from the replicates, the dispersion, the level
   bool surrogate_ok = false; ///< the smooth model of χ² had a minimum (else: raw grid profile)
   double surrogate_residual_rms = 0;
   std::optional<double> correlation;  ///< of e and μ over the profile region (weights e^(−Δχ²/2))

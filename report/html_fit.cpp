@@ -47,7 +47,11 @@ void fit_summary(std::ostringstream& h, const json& f, const std::string& id_pre
     h << "<tr><td class=\"l\">" << html_escape(name) << "</td><td>" << fmt(p["value"], "%.3g") << "</td><td>["
       << fmt(p["low"], "%.3g") << ", " << fmt(p["high"], "%.3g") << "]</td><td class=\"l\">"
       << (p.value("identifiable", false) ? std::string("yes")
-                                         : "<span class=\"failed\">" + std::string(kNotIdentifiable) + "</span>")
+                                         : "<span class=\"failed\">" +
+                                               (p.contains("advice") && p["advice"].is_string()
+                                                    ? html_escape(p["advice"].get<std::string>())
+                                                    : std::string(kNotIdentifiable)) +
+                                               "</span>")
       << "</td><td>" << fmt(prior_value, "%.3g") << "</td></tr>";
   }
   h << "</table>";
