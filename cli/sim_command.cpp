@@ -238,6 +238,7 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
   if (c.model == ClearanceKind::compliant) {
     j["energy"]["contact_damping_loss_J"] = d.impact_loss_J;
     j["energy"]["elastic_energy_end_J"] = d.elastic_energy_end_J;
+    if (c.compliant.film.viscosity_Pa_s > 0) j["energy"]["film_loss_J"] = d.film_loss_J;
   }
   return j;
 }

@@ -17,7 +17,7 @@
 
 namespace fourbar {
 
-inline constexpr std::size_t kStiffSize = 9;
+inline constexpr std::size_t kStiffSize = 10;
 using StiffState = std::array<double, kStiffSize>;
 
 class StiffSystem {
