@@ -9,9 +9,12 @@
 // crank work − damping − friction losses) stays below 1e-8 of the energy
 // scale (no drift). The deepest penetration (relative to ξ) is reported:
 // with a soft contact at speed the pin goes deeper than ξ, which is what
-// that stiffness means, not a failure.
+// that stiffness means, not a failure. --lubricated adds a lubricant axis:
+// dry and the cavitated short-bearing film (R = L = 10 mm) at 0.01 and
+// 0.1 Pa s (docs/compliant.md "Lubricated bearing"), the film's work in the
+// energy balance.
 //
-//   stress_compliant [--quick] [--turns N] [--tolerance TOL] [--csv FILE]
+//   stress_compliant [--quick] [--lubricated] [--turns N] [--tolerance TOL] [--csv FILE]
 
 #include <algorithm>
 #include <cmath>
@@ -34,7 +37,7 @@ constexpr double kEnergyBound = 1e-8;
 constexpr double kMaxStepsPerTurn = 2e6;
 
 struct Case {
-  double stiffness, e, mu, rpm;
+  double stiffness, e, mu, rpm, viscosity;
   int turns;
   double tolerance;
 };
@@ -75,6 +78,7 @@ Result run(const Case& c) {
     s.friction_coefficient = c.mu;
     s.compliant.stiffness_N_per_m_n = c.stiffness;
     s.tolerance = c.tolerance;
+    s.compliant.film = {c.viscosity, 10e-3, 10e-3, 0.254e-3, FilmExtent::cavitated, 0.95};
     const ClearanceModel model(thesis_rig(), 0.254e-3);
     const double w = units::rpm_to_rad_s(c.rpm), period = units::kTwoPi / w;
     const ConstantSpeedCrank crank(0.0, w);
@@ -100,7 +104,8 @@ Result run(const Case& c) {
         fail("NaN/Inf in a sample");
         break;
       }
-    for (double x : {d.max_energy_residual_J, d.crank_work_J, d.impact_loss_J, d.friction_loss_J, d.max_penetration})
+    for (double x : {d.max_energy_residual_J, d.crank_work_J, d.impact_loss_J, d.friction_loss_J, d.film_loss_J,
+                     d.max_penetration})
       if (!std::isfinite(x)) fail("NaN/Inf in the diagnostics");
     r.energy = d.max_energy_residual_J / d.energy_scale_J;
     r.penetration = d.max_penetration;
@@ -120,17 +125,18 @@ Result run(const Case& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, lubricated = false;
   int turns = 3;
   double tolerance = 1e-10;
   std::string csv_path;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--lubricated")) lubricated = true;
     else if (!std::strcmp(argv[i], "--turns") && i + 1 < argc) turns = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--tolerance") && i + 1 < argc) tolerance = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv_path = argv[++i];
     else {
-      std::fprintf(stderr, "usage: stress_compliant [--quick] [--turns N] [--tolerance TOL] [--csv FILE]\n");
+      std::fprintf(stderr, "usage: stress_compliant [--quick] [--lubricated] [--turns N] [--tolerance TOL] [--csv FILE]\n");
       return 2;
     }
   }
@@ -138,21 +144,23 @@ int main(int argc, char** argv) {
   const std::vector<double> es = quick ? std::vector<double>{0.5} : std::vector<double>{0.1, 0.5, 0.9, 1.0};
   const std::vector<double> mus{0.0, 0.3};
   const std::vector<double> rpms = quick ? std::vector<double>{350} : std::vector<double>{100, 350, 1000};
+  const std::vector<double> viscosities = lubricated ? std::vector<double>{0.0, 0.01, 0.1} : std::vector<double>{0.0};
   std::vector<Case> cases;
   for (double k : ks)
     for (double e : es)
       for (double mu : mus)
-        for (double rpm : rpms) cases.push_back({k, e, mu, rpm, turns, tolerance});
+        for (double rpm : rpms)
+          for (double v : viscosities) cases.push_back({k, e, mu, rpm, v, turns, tolerance});
   std::ofstream csv;
   if (!csv_path.empty()) {
     csv.open(csv_path);
-    csv << "stiffness_N_per_m_n,restitution,friction_coefficient,crank_speed_rpm,turns,ok,failure,"
+    csv << "stiffness_N_per_m_n,restitution,friction_coefficient,crank_speed_rpm,viscosity_Pa_s,turns,ok,failure,"
            "energy_residual_rel,max_penetration_rel,impacts,max_steps_per_turn,cpu_seconds\n";
   }
   std::size_t failures = 0;
   double worst_energy = 0, worst_pen = 0, slowest = 0, total = 0, most_steps = 0;
-  std::printf("%-8s %-4s %-4s %-5s | %-4s | %10s | %10s | %7s | %10s | %7s\n", "K", "e", "mu", "rpm", "ok", "energy",
-              "pen/xi", "impacts", "steps/turn", "cpu s");
+  std::printf("%-8s %-4s %-4s %-5s %-5s | %-4s | %10s | %10s | %7s | %10s | %7s\n", "K", "e", "mu", "rpm", "Pa_s", "ok",
+              "energy", "pen/xi", "impacts", "steps/turn", "cpu s");
   for (const Case& c : cases) {
     const Result r = run(c);
     failures += !r.ok;
@@ -161,11 +169,11 @@ int main(int argc, char** argv) {
     slowest = std::max(slowest, r.seconds);
     most_steps = std::max(most_steps, r.steps_per_turn);
     total += r.seconds;
-    std::printf("%-8.0e %-4.1f %-4.1f %-5.0f | %-4s | %10.2e | %10.3e | %7zu | %10.0f | %7.2f %s\n", c.stiffness, c.e,
-                c.mu, c.rpm, r.ok ? "ok" : "FAIL", r.energy, r.penetration, r.impacts, r.steps_per_turn, r.seconds,
+    std::printf("%-8.0e %-4.1f %-4.1f %-5.0f %-5.2g | %-4s | %10.2e | %10.3e | %7zu | %10.0f | %7.2f %s\n", c.stiffness,
+                c.e, c.mu, c.rpm, c.viscosity, r.ok ? "ok" : "FAIL", r.energy, r.penetration, r.impacts, r.steps_per_turn, r.seconds,
                 r.failure.c_str());
     if (csv.is_open())
-      csv << c.stiffness << ',' << c.e << ',' << c.mu << ',' << c.rpm << ',' << c.turns << ',' << r.ok << ",\""
+      csv << c.stiffness << ',' << c.e << ',' << c.mu << ',' << c.rpm << ',' << c.viscosity << ',' << c.turns << ',' << r.ok << ",\""
           << r.failure << "\"," << r.energy << ',' << r.penetration << ',' << r.impacts << ',' << r.steps_per_turn
           << ',' << r.seconds << '\n';
   }

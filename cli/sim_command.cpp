@@ -62,6 +62,11 @@ std::string outputs_help() {
   s += help_line("friction_stick_speed_mm_s", "v0: no friction below this slip speed (default 0.1)");
   s += help_line("friction_slip_speed_mm_s", "v1: full mu*F_n above (default 1; cubic ramp between)");
   s += help_line("damping_floor_speed_mm_s", "least approach speed in the damping c(e)/v (default 0.01)");
+  s += help_line("lubricant_viscosity_Pa_s", "lubricated bearing: viscosity > 0 (default: the rig's, else dry;\n"
+                 "                      needs the rig's bearing_length_mm and pin_radius_mm)");
+  s += help_line("film", "\"cavitated\" (default), \"pinkus-sternlicht\" or \"full\": the film's extent");
+  s += help_line("film_break_eccentricity", "eps_t in [0.5, 0.999] (default 0.95): the film gives way to dry contact\n"
+                 "                      between eps_t and the wall");
   s += "impacts.csv (compliant): one row per contact: crank_deg, time_s, revolution, normal_impulse_Ns (first\n"
        "compression-restitution cycle), contact_impulse_Ns (whole contact), tangential_impulse_Ns, eta_deg,\n"
        "approach_speed_m_s, rebound_speed_m_s, peak_force_N, contact_duration_s, max_penetration_mm,\n"
@@ -180,6 +185,13 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
     j["settings"]["friction_slip_speed_mm_s"] = k.friction_slip_speed_m_s * 1e3;
     j["settings"]["damping_floor_speed_mm_s"] = k.damping_floor_speed_m_s * 1e3;
     j["settings"]["settle_speed_mm_s"] = c.settle_speed_m_s * 1e3;
+    if (k.film.viscosity_Pa_s > 0) {
+      j["settings"]["lubricant_viscosity_Pa_s"] = k.film.viscosity_Pa_s;
+      j["settings"]["film"] = to_string(k.film.extent);
+      j["settings"]["film_break_eccentricity"] = k.film.break_eccentricity;
+      j["settings"]["journal_radius_mm"] = k.film.radius_m * 1e3;
+      j["settings"]["bearing_length_mm"] = k.film.length_m * 1e3;
+    }
   }
   // Which criterion fired: "periodic with period k", "statistically steady
   // after N turns", or none within max_revolutions.
@@ -238,6 +250,7 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
   if (c.model == ClearanceKind::compliant) {
     j["energy"]["contact_damping_loss_J"] = d.impact_loss_J;
     j["energy"]["elastic_energy_end_J"] = d.elastic_energy_end_J;
+    if (c.compliant.film.viscosity_Pa_s > 0) j["energy"]["film_loss_J"] = d.film_loss_J;
   }
   return j;
 }

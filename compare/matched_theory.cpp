@@ -35,12 +35,16 @@ ClearanceSettings clearance_settings(const Rig& rig, double clearance_m, const T
   cs.contact = settings.contact;
   cs.friction_coefficient = settings.friction_coefficient;
   cs.tolerance = settings.tolerance;
+  const std::string source = settings.source.empty() ? std::string("[theory]") : settings.source;
   if (settings.model == ClearanceKind::compliant) {
     cs.compliant = settings.compliant;
-    const std::string source = settings.source.empty() ? std::string("[theory]") : settings.source;
     resolve_contact_stiffness(rig, clearance_m, cs, [&](const char* key, const std::string& what) {
       throw InputError("theory setting '" + std::string(key) + "' (" + source + ") " + what);
     });
+  } else if (rig.bearing.lubricant_viscosity_Pa_s) {
+    throw InputError("theory setting 'model' (" + source + ") is the three-mode model, which has no lubricant film, "
+                     "but " + (rig.source.empty() ? std::string("the rig") : rig.source.string()) +
+                     "'s bearing is lubricated (lubricant_viscosity_Pa_s); use model = \"compliant\"");
   }
   return cs;
 }

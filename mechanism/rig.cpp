@@ -145,6 +145,19 @@ void read_bearing_bodies(TomlSection& c, Rig& rig) {
   b.pin_poisson_ratio = poisson("pin_poisson_ratio");
   b.bushing_youngs_modulus_Pa = positive("bushing_youngs_modulus_GPa", 1e9);
   b.bushing_poisson_ratio = poisson("bushing_poisson_ratio");
+  if (c.has("lubricant_viscosity_Pa_s")) {
+    const double v = c.number("lubricant_viscosity_Pa_s");
+    if (!(v > 0) || !(v < 1e6))
+      c.fail("lubricant_viscosity_Pa_s", "must be a positive dynamic viscosity in Pa s (e.g. 0.05 for an SAE 20 oil "
+                                         "near 40 °C); remove it for a dry bearing");
+    if (!b.length_m)
+      c.fail("lubricant_viscosity_Pa_s", "needs bearing_length_mm in the same table (the film force grows with the "
+                                         "length cubed); add bearing_length_mm");
+    if (!b.pin_radius_m && !b.bushing_radius_m)
+      c.fail("lubricant_viscosity_Pa_s", "needs pin_radius_mm (or bushing_radius_mm) in the same table (the film "
+                                         "force grows with the journal radius); add pin_radius_mm");
+    b.lubricant_viscosity_Pa_s = v;
+  }
   if (b.pin_radius_m && b.bushing_radius_m) {
     const double fit = *b.bushing_radius_m - *b.pin_radius_m;
     if (!(std::abs(fit - rig.radial_clearance_m) <= 1e-9 * std::max(1e-3, *b.bushing_radius_m)))

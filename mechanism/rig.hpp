@@ -40,11 +40,14 @@ const char* to_string(GrashofClass c);
 /// The coupler–rocker bearing's pin and bushing as elastic bodies, for the
 /// compliant contact model's stiffness (rig file `[clearance]`, all optional;
 /// validated at load: radii, length and moduli > 0, Poisson ratios in
-/// (−1, 0.5), bushing radius = pin radius + radial clearance).
+/// (−1, 0.5), bushing radius = pin radius + radial clearance), and the
+/// lubricant's dynamic viscosity when the bearing is lubricated (> 0; needs
+/// the length and a radius: the hydrodynamic film force depends on both).
 struct BearingBodies {
   std::optional<double> pin_radius_m, bushing_radius_m, length_m;
   std::optional<double> pin_youngs_modulus_Pa, pin_poisson_ratio;
   std::optional<double> bushing_youngs_modulus_Pa, bushing_poisson_ratio;
+  std::optional<double> lubricant_viscosity_Pa_s;
 };
 
 struct Rig {

@@ -76,6 +76,11 @@ json theory_settings_json(const TheorySettings& t) {
     j["friction_stick_speed_mm_s"] = k.friction_stick_speed_m_s * 1e3;
     j["friction_slip_speed_mm_s"] = k.friction_slip_speed_m_s * 1e3;
     j["damping_floor_speed_mm_s"] = k.damping_floor_speed_m_s * 1e3;
+    if (k.film.viscosity_Pa_s > 0) {  // (a dry bearing's record as before)
+      j["lubricant_viscosity_Pa_s"] = k.film.viscosity_Pa_s;
+      j["film"] = to_string(k.film.extent);
+      j["film_break_eccentricity"] = k.film.break_eccentricity;
+    }
   }
   return j;
 }

@@ -73,6 +73,10 @@ Scene load_scene(const std::filesystem::path& file) {
                                  "below that");
     if (scene.clearance.model == ClearanceKind::compliant)
       resolve_contact_stiffness(*sec, *scene.rig, scene.clearance_m(), scene.clearance);
+    else if (scene.rig->bearing.lubricant_viscosity_Pa_s)
+      sec->fail("model", "is the three-mode model, which has no lubricant film, but the rig's bearing is lubricated "
+                         "(its [clearance] lubricant_viscosity_Pa_s); use model = \"compliant\" or remove the "
+                         "viscosity from the rig for a dry bearing");
     sec->finish();
   } else if (clearance) {
     root.fail("clearance", "is missing: model = \"clearance\" needs a [clearance] table (at least restitution)");

@@ -195,7 +195,7 @@ void CompliantSimulator::Impl::release(double time, const StiffState& y) {
 void CompliantSimulator::Impl::check_energy(double time, const StiffState& y) {
   const ContactState k = evaluate(time, y);
   const double r = total_energy_J(k, time) - books.diag.energy_start_J -
-                   (y[kWork] - y[kContactLoss] - y[kFrictionLoss]) * scale.energy_J;
+                   (y[kWork] - y[kContactLoss] - y[kFrictionLoss] - y[kFilmLoss]) * scale.energy_J;
   books.diag.max_energy_residual_J = std::max(books.diag.max_energy_residual_J, std::abs(r));
 }
 

@@ -36,7 +36,15 @@ ContactState CompliantSimulator::Impl::evaluate(double time, const StiffState& y
     k.normal_force_N = normal_force_N(law, k.penetration_m, k.bearing.normal_speed_m_s, chi);
     k.friction_force_N = friction_force_N(friction, k.normal_force_N, k.bearing.tangential_speed_m_s);
   }
-  k.pin_force_N = -k.normal_force_N * k.bearing.normal + k.friction_force_N * k.bearing.normal.perp();
+  if (film.viscosity_Pa_s > 0) {
+    // ε, ε̇ and ε·ω̄ = ε·(ω3 + ω4) − 2·ε·φ̇ with |e|·φ̇ = v_t + ω4·|e| (film_force.hpp).
+    const double xi = model.clearance_m();
+    const double eps = (xi - k.bearing.gap_m) / xi;
+    const double whirl = eps * (k.links.omega3_rad_s - k.links.omega4_rad_s) - 2.0 * k.bearing.tangential_speed_m_s / xi;
+    k.film = film_force(film, eps, k.bearing.normal_speed_m_s / xi, whirl);
+  }
+  k.pin_force_N = (k.film.radial_N - k.normal_force_N) * k.bearing.normal +
+                  (k.friction_force_N + k.film.tangential_N) * k.bearing.normal.perp();
   model.forced_accelerations(c, u2, k.links, k.pin_force_N, k.alpha3_rad_s2, k.alpha4_rad_s2);
   k.crank_torque_Nm = model.crank_torque_Nm(c, u2, k.links, k.alpha3_rad_s2, k.pin_force_N);
   return k;
@@ -59,6 +67,8 @@ void CompliantSimulator::Impl::rhs(double time, const StiffState& y, StiffState&
   dy[kFrictionLoss] = -k.friction_force_N * k.bearing.tangential_speed_m_s / scale.energy_J;
   dy[kImpulseN] = k.normal_force_N * w / scale.force_N;
   dy[kImpulseT] = k.friction_force_N * w / scale.force_N;
+  dy[kFilmLoss] = -(k.film.radial_N * k.bearing.normal_speed_m_s + k.film.tangential_N * k.bearing.tangential_speed_m_s) /
+                  scale.energy_J;
 }
 
 double CompliantSimulator::Impl::witness(double time, const StiffState& y) {

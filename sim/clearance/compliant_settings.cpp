@@ -43,6 +43,19 @@ void read_compliant_settings(TomlSection& s, ClearanceSettings& c) {
   k.friction_slip_speed_m_s = s.in_range("friction_slip_speed_mm_s", 1e-6, 1e4, k.friction_slip_speed_m_s * 1e3) * 1e-3;
   k.damping_floor_speed_m_s =
       s.in_range("damping_floor_speed_mm_s", 1e-9, 1e3, k.damping_floor_speed_m_s * 1e3) * 1e-3;
+  if (s.has("lubricant_viscosity_Pa_s")) {
+    k.film.viscosity_Pa_s = s.number("lubricant_viscosity_Pa_s");
+    if (!(k.film.viscosity_Pa_s > 0) || !(k.film.viscosity_Pa_s < 1e6))
+      s.fail("lubricant_viscosity_Pa_s", "must be a positive dynamic viscosity in Pa s (e.g. 0.05); remove it to use "
+                                         "the rig's (or a dry bearing)");
+    k.viscosity_given = true;
+  }
+  if (s.has("film") || s.has("film_break_eccentricity")) k.film_keys_given = true;
+  const std::string film = s.choice("film", {"cavitated", "pinkus-sternlicht", "full"}, to_string(k.film.extent));
+  k.film.extent = film == "cavitated"           ? FilmExtent::cavitated
+                  : film == "pinkus-sternlicht" ? FilmExtent::pinkus_sternlicht
+                                                : FilmExtent::full;
+  k.film.break_eccentricity = s.in_range("film_break_eccentricity", 0.5, 0.999, k.film.break_eccentricity);
   if (!(k.friction_slip_speed_m_s > k.friction_stick_speed_m_s))
     s.fail("friction_slip_speed_mm_s", "must be above friction_stick_speed_mm_s (v1 > v0 of the friction ramp)");
 }

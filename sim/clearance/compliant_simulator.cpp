@@ -18,13 +18,21 @@
 namespace fourbar {
 
 CompliantSimulator::Impl::Impl(const ClearanceModel& m, const CrankMotion& c, const ClearanceSettings& s)
-    : model(m), crank(c), settings(s), integ(s.tolerance, kCoupled) {
+    : model(m),
+      crank(c),
+      settings(s),
+      // A dry bearing leaves the film's quadrature out (the error norm, so the steps, as without it).
+      integ(s.tolerance, kCoupled, s.compliant.film.viscosity_Pa_s > 0 ? kStiffSize : std::size_t{kFilmLoss}) {
   const CompliantSettings& k = s.compliant;
   if (!(k.stiffness_N_per_m_n > 0))
     throw RunError("compliant clearance model: no contact stiffness (the scene resolves it; see docs/clearance-model.md)");
   law = {k.stiffness_N_per_m_n, k.exponent, k.damping, s.restitution};
   friction = {s.friction_coefficient, k.friction_stick_speed_m_s, k.friction_slip_speed_m_s};
   hysteresis = hysteresis_factor(k.damping, s.restitution, k.exponent);
+  film = k.film;
+  if (film.viscosity_Pa_s > 0 && !(film.radius_m > 0 && film.length_m > 0 && film.clearance_m > 0))
+    throw RunError("compliant clearance model: a lubricant without the bearing's radius, length or clearance (the "
+                   "scene resolves them from the rig)");
 }
 
 double CompliantSimulator::Impl::rebase(double time) {
@@ -169,9 +177,11 @@ ClearanceDiagnostics CompliantSimulator::diagnostics() {
   d.crank_work_J = y[kWork] * s.scale.energy_J;
   d.impact_loss_J = y[kContactLoss] * s.scale.energy_J;
   d.friction_loss_J = y[kFrictionLoss] * s.scale.energy_J;
+  d.film_loss_J = y[kFilmLoss] * s.scale.energy_J;
   d.elastic_energy_end_J = elastic_energy_J(s.law, k.penetration_m);
   d.energy_end_J = s.total_energy_J(k, s.t);
-  d.energy_residual_J = d.energy_end_J - d.energy_start_J - d.crank_work_J + d.impact_loss_J + d.friction_loss_J;
+  d.energy_residual_J = d.energy_end_J - d.energy_start_J - d.crank_work_J + d.impact_loss_J + d.friction_loss_J +
+                       d.film_loss_J;
   d.steps = s.integ.steps();
   return d;
 }

@@ -26,7 +26,8 @@ enum StiffComponent : std::size_t {
   kContactLoss = 5,   ///< contact damping dissipation D_c/E
   kFrictionLoss = 6,  ///< friction dissipation D_f/E
   kImpulseN = 7,      ///< ∫F_n dt·|ω2|/F_s since the contact's onset
-  kImpulseT = 8       ///< ∫F_t dt·|ω2|/F_s since the contact's onset
+  kImpulseT = 8,      ///< ∫F_t dt·|ω2|/F_s since the contact's onset
+  kFilmLoss = 9       ///< work of the lubricant film's force, W_f/E (0 dry)
 };
 /// State components the right-hand side depends on (differenced in the Jacobian).
 inline constexpr std::size_t kCoupled = 4;
@@ -40,7 +41,8 @@ struct ContactState {
   BearingState bearing;
   double penetration_m = 0;  ///< |e| − ξ (< 0: a gap)
   double normal_force_N = 0, friction_force_N = 0;
-  Vec2 pin_force_N;          ///< −F_n·n + F_t·t
+  FilmForce film;            ///< the lubricant film's force on the pin along n and t (film_force.hpp)
+  Vec2 pin_force_N;          ///< (F_film,r − F_n)·n + (F_t + F_film,t)·t
   double alpha3_rad_s2 = 0, alpha4_rad_s2 = 0, crank_torque_Nm = 0;
 };
 
@@ -52,6 +54,7 @@ struct CompliantSimulator::Impl final : StiffSystem {
   ClearanceSettings settings;
   NormalForceLaw law;
   FrictionLaw friction;
+  JournalFilm film;  ///< viscosity 0: a dry bearing
   double hysteresis = 0;  ///< c(e)
   StiffIntegrator integ;
 

@@ -17,6 +17,36 @@ double conformal_cylinder_stiffness(double e_star, double length_m, double clear
   return units::kPi * e_star * length_m / (2.0 * std::sqrt(2.0 * clearance_m));
 }
 
+namespace {
+
+/// The lubricated bearing's film from the scene's or the rig's viscosity and
+/// the rig's bearing (see CompliantSettings::film).
+template <class Fail>
+void resolve_film(const Rig& rig, double clearance_m, CompliantSettings& k, const Fail& fail) {
+  const BearingBodies& b = rig.bearing;
+  const std::string rig_file = rig.source.empty() ? std::string("the rig") : rig.source.string();
+  JournalFilm& f = k.film;
+  if (!k.viscosity_given) f.viscosity_Pa_s = b.lubricant_viscosity_Pa_s.value_or(0.0);
+  if (!(f.viscosity_Pa_s > 0)) {
+    if (k.film_keys_given)
+      fail("film", "and film_break_eccentricity describe a lubricant film, but the bearing is dry (no "
+                   "lubricant_viscosity_Pa_s here or in " + rig_file + "'s [clearance]); give the viscosity or remove them");
+    return;
+  }
+  if (!b.length_m)
+    fail("lubricant_viscosity_Pa_s", "needs the bearing's length, and " + rig_file + " has no [clearance] "
+                                     "bearing_length_mm (the film force grows with the length cubed); add "
+                                     "bearing_length_mm to the rig");
+  if (!b.pin_radius_m && !b.bushing_radius_m)
+    fail("lubricant_viscosity_Pa_s", "needs the journal radius, and " + rig_file + " has no [clearance] "
+                                     "pin_radius_mm or bushing_radius_mm; add pin_radius_mm to the rig");
+  f.length_m = *b.length_m;
+  f.radius_m = b.pin_radius_m ? *b.pin_radius_m : *b.bushing_radius_m - clearance_m;
+  f.clearance_m = clearance_m;
+}
+
+}  // namespace
+
 void resolve_contact_stiffness(TomlSection& s, const Rig& rig, double clearance_m, ClearanceSettings& settings) {
   resolve_contact_stiffness(rig, clearance_m, settings,
                             [&s](const char* key, const std::string& what) { s.fail(key, what); });
@@ -39,6 +69,7 @@ void resolve_contact_stiffness(const Rig& rig, double clearance_m, ClearanceSett
                               " mm; remove radial_mm here or change the rig's radii");
   }
   CompliantSettings& k = settings.compliant;
+  resolve_film(rig, clearance_m, k, fail);
   if (k.stiffness_given) return;
   const std::pair<const char*, bool> needed[] = {
       {"bearing_length_mm", b.length_m.has_value()},

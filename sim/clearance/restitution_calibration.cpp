@@ -34,7 +34,7 @@ double effective_restitution(double c, double n) {
   ScaledCollision sys;
   sys.c = c;
   sys.n = n;
-  StiffIntegrator integ(1e-12, 2);
+  StiffIntegrator integ(1e-12, 2, 9);  // 9 components as always: the error norm, so c(e), depends on the count
   StiffState y{};
   y[1] = 1.0;
   integ.reset(sys, 0.0, y);

@@ -78,6 +78,7 @@ struct ClearanceDiagnostics {
   double motor_impulse_work_J = 0;      ///< Σ ω2·τ̂ at impacts
   double impact_loss_J = 0;             ///< Σ energy dissipated at impacts and settles (compliant: contact damping)
   double friction_loss_J = 0;           ///< dissipated by wall friction in the following mode
+  double film_loss_J = 0;               ///< compliant, lubricated: −∫F_film·(v_pin − v_bushing) dt (the film's net dissipation)
   double energy_start_J = 0, energy_end_J = 0;
   double elastic_energy_end_J = 0;      ///< compliant: K·δⁿ⁺¹/(n + 1) stored in the contact at the end
   double energy_residual_J = 0;         ///< ΔE − work + losses (impact and friction) at the end

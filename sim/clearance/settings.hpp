@@ -7,6 +7,7 @@
 
 #include "common/toml_section.hpp"
 #include "sim/clearance/contact_force.hpp"
+#include "sim/clearance/film_force.hpp"
 
 namespace fourbar {
 
@@ -44,6 +45,14 @@ struct CompliantSettings {
   /// Approach speeds below this use it in χ = c(e)/v⁻ (a contact that begins
   /// at rest, e.g. the start on the wall, would otherwise get infinite damping).
   double damping_floor_speed_m_s = 1e-5;
+  /// The lubricated bearing (docs/compliant.md "Lubricated bearing"): the
+  /// short-bearing film force while ε < ε_t, the dry contact at the wall.
+  /// viscosity_Pa_s from the scene (viscosity_given) or the rig's
+  /// lubricant_viscosity_Pa_s; radius, length and clearance resolved from the
+  /// rig when the scene is loaded. viscosity_Pa_s = 0: a dry bearing.
+  JournalFilm film;
+  bool viscosity_given = false;
+  bool film_keys_given = false;  ///< film or film_break_eccentricity given (need a lubricant)
 };
 
 struct ClearanceSettings {

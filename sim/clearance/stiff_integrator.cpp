@@ -7,6 +7,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <string>
 
@@ -22,12 +23,18 @@ void check(int flag, const char* what) {
 
 void silent_handler(int, const char*, const char*, char*, void*) {}
 
+/// The first N_VGetLength(v) components (the rest of `a` zero).
 void copy_in(N_Vector v, StiffState& a) {
   const double* p = N_VGetArrayPointer(v);
-  std::copy(p, p + kStiffSize, a.begin());
+  const auto n = static_cast<std::size_t>(N_VGetLength(v));
+  std::copy(p, p + n, a.begin());
+  std::fill(a.begin() + static_cast<std::ptrdiff_t>(n), a.end(), 0.0);
 }
 
-void copy_out(const StiffState& a, N_Vector v) { std::copy(a.begin(), a.end(), N_VGetArrayPointer(v)); }
+void copy_out(const StiffState& a, N_Vector v) {
+  const auto n = static_cast<std::ptrdiff_t>(N_VGetLength(v));
+  std::copy(a.begin(), a.begin() + n, N_VGetArrayPointer(v));
+}
 
 }  // namespace
 
@@ -77,23 +84,26 @@ int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector,
     self->system().rhs(t, yy, f1);
     yy[j] = yj;
     double* col = SUNDenseMatrix_Column(J, static_cast<sunindextype>(j));
-    for (std::size_t i = 0; i < kStiffSize; ++i) col[i] = (f1[i] - f0[i]) / inc;
+    for (std::size_t i = 0; i < self->size(); ++i) col[i] = (f1[i] - f0[i]) / inc;
   }
   return 0;
 }
 
 }  // namespace
 
-StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled) : cv_(std::make_unique<Cvode>()), coupled_(coupled) {
+StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size)
+    : cv_(std::make_unique<Cvode>()), coupled_(coupled), size_(size) {
+  if (!(coupled <= size && size <= kStiffSize)) throw std::logic_error("StiffIntegrator: size out of range");
   Cvode& c = *cv_;
   c.tol = tolerance;
   check(SUNContext_Create(nullptr, &c.ctx), "context");
-  c.y = N_VNew_Serial(kStiffSize, c.ctx);
-  c.dky = N_VNew_Serial(kStiffSize, c.ctx);
+  const auto n = static_cast<sunindextype>(size);
+  c.y = N_VNew_Serial(n, c.ctx);
+  c.dky = N_VNew_Serial(n, c.ctx);
   N_VConst(0.0, c.y);
   c.mem = CVodeCreate(CV_BDF, c.ctx);
   if (!c.mem) throw RunError("CVODE (BDF): cannot create the integrator");
-  c.jac = SUNDenseMatrix(kStiffSize, kStiffSize, c.ctx);
+  c.jac = SUNDenseMatrix(n, n, c.ctx);
   c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
 }
 

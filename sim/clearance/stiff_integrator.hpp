@@ -9,7 +9,7 @@
 // The Jacobian is a difference quotient over the first `coupled` state
 // components only: the rest are quadratures (work, dissipation, impulse)
 // that no right-hand side depends on, so their columns are zero and are not
-// differenced (4 right-hand-side calls per Jacobian instead of 9).
+// differenced (4 right-hand-side calls per Jacobian instead of 10).
 
 #include <array>
 #include <cstddef>
@@ -17,7 +17,7 @@
 
 namespace fourbar {
 
-inline constexpr std::size_t kStiffSize = 9;
+inline constexpr std::size_t kStiffSize = 10;
 using StiffState = std::array<double, kStiffSize>;
 
 class StiffSystem {
@@ -32,7 +32,8 @@ class StiffIntegrator {
  public:
   /// `tolerance` relative and absolute on the scaled state; the Jacobian
   /// differences the first `coupled` components.
-  StiffIntegrator(double tolerance, std::size_t coupled);
+  /// `size` ≤ kStiffSize: the components integrated (the rest read as 0).
+  StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size = kStiffSize);
   ~StiffIntegrator();
   StiffIntegrator(const StiffIntegrator&) = delete;
   StiffIntegrator& operator=(const StiffIntegrator&) = delete;
@@ -63,12 +64,14 @@ class StiffIntegrator {
  public:
   StiffSystem& system() { return *system_; }
   std::size_t coupled() const { return coupled_; }
+  std::size_t size() const { return size_; }
 
  private:
   struct Cvode;
   std::unique_ptr<Cvode> cv_;
   StiffSystem* system_ = nullptr;
   std::size_t coupled_;
+  std::size_t size_;
   std::size_t steps_ = 0;
   double t_ = 0;
   bool stepped_ = false;

@@ -103,5 +103,34 @@ TEST(MatchedTheoryCompliant, StiffnessFromTheRigBearingOrNamedWhenMissing) {
   EXPECT_GT(t.max_penetration_rel, 0.0);
 }
 
+TEST(MatchedTheoryCompliant, LubricatedRigNeedsTheCompliantTheoryAndItsBearing) {
+  Rig rig = thesis_rig();
+  rig.bearing.lubricant_viscosity_Pa_s = 0.05;
+  const double w = units::rpm_to_rad_s(350);
+  const CrankGrid grid{90, 0.0, 1.0};
+  TheorySettings three;
+  three.restitution = 0.5, three.warmup_revolutions = 0, three.averaged_revolutions = 1;
+  auto error_of = [&](const TheorySettings& s) {
+    try {
+      simulate_matched_theory(rig, kXi, w, grid, s);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "accepted";
+    return std::string();
+  };
+  const std::string a = error_of(three);
+  EXPECT_NE(a.find("no lubricant film"), std::string::npos) << a;
+  TheorySettings s = compliant_theory(1e9);
+  s.warmup_revolutions = 0, s.averaged_revolutions = 1;
+  const std::string b = error_of(s);  // no bearing length for the film
+  EXPECT_NE(b.find("lubricant_viscosity_Pa_s"), std::string::npos) << b;
+  EXPECT_NE(b.find("bearing_length_mm"), std::string::npos) << b;
+  rig.bearing.length_m = 0.01, rig.bearing.pin_radius_m = 0.01;
+  const MatchedTheory t = simulate_matched_theory(rig, kXi, w, grid, s);
+  EXPECT_EQ(t.settings.compliant.film.viscosity_Pa_s, 0.05);
+  EXPECT_EQ(t.settings.compliant.film.length_m, 0.01);
+}
+
 }  // namespace
 }  // namespace fourbar
