@@ -26,6 +26,7 @@ namespace fourbar {
 namespace {
 
 using testing::SpeedLaw;
+using testing::Crank;
 using testing::VirtualSetup;
 
 std::vector<double> turn_phases(std::size_t n) {
@@ -148,17 +149,6 @@ TEST(CrankSmoothing, ShortPieceBetweenGapsGoesThroughEveryPulse) {
     if (r.segment == 1) EXPECT_EQ(r.t_start, runup[k++] + 10);  // through the pulse itself
   }
 }
-
-/// Keeps the crank motion per sample.
-struct Crank : AcquisitionSink {
-  std::vector<double> time, crank, omega, alpha;
-  void on_samples(const SampleBlock& b) override {
-    time.insert(time.end(), b.time_s.begin(), b.time_s.end());
-    crank.insert(crank.end(), b.crank_rad.begin(), b.crank_rad.end());
-    omega.insert(omega.end(), b.omega2_rad_s.begin(), b.omega2_rad_s.end());
-    alpha.insert(alpha.end(), b.alpha2_rad_s2.begin(), b.alpha2_rad_s2.end());
-  }
-};
 
 struct CrankErrors {
   AcquisitionReport report;

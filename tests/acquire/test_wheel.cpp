@@ -22,18 +22,9 @@
 namespace fourbar {
 namespace {
 
+using testing::Crank;
 using testing::VirtualSetup;
 using testing::WheelKind;
-
-struct Crank : AcquisitionSink {
-  std::vector<double> time, crank, omega, alpha;
-  void on_samples(const SampleBlock& b) override {
-    time.insert(time.end(), b.time_s.begin(), b.time_s.end());
-    crank.insert(crank.end(), b.crank_rad.begin(), b.crank_rad.end());
-    omega.insert(omega.end(), b.omega2_rad_s.begin(), b.omega2_rad_s.end());
-    alpha.insert(alpha.end(), b.alpha2_rad_s2.begin(), b.alpha2_rad_s2.end());
-  }
-};
 
 struct WheelRun {
   AcquisitionReport report;

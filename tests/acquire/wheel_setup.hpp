@@ -5,7 +5,9 @@
 // and 0.3 % twice-per-turn speed change, 30 dB SNR on every channel.
 
 #include <string>
+#include <vector>
 
+#include "acquire/revolution.hpp"
 #include "acquire/virtual_recording.hpp"
 
 namespace fourbar::testing {
@@ -34,6 +36,17 @@ inline void fit_wheel(VirtualSetup& v, WheelKind kind) {
       break;
   }
 }
+
+/// Keeps the crank motion of every sample acquire delivers.
+struct Crank : AcquisitionSink {
+  std::vector<double> time, crank, omega, alpha;
+  void on_samples(const SampleBlock& b) override {
+    time.insert(time.end(), b.time_s.begin(), b.time_s.end());
+    crank.insert(crank.end(), b.crank_rad.begin(), b.crank_rad.end());
+    omega.insert(omega.end(), b.omega2_rad_s.begin(), b.omega2_rad_s.end());
+    alpha.insert(alpha.end(), b.alpha2_rad_s2.begin(), b.alpha2_rad_s2.end());
+  }
+};
 
 inline const char* wheel_name(WheelKind kind) {
   switch (kind) {
