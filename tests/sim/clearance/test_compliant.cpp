@@ -14,6 +14,7 @@
 #include "sim/clearance/simulator.hpp"
 #include "sim/scene.hpp"
 #include "support/temp_dir.hpp"
+#include "scene_error.hpp"
 
 namespace fourbar {
 namespace {
@@ -126,16 +127,9 @@ TEST(Compliant, StiffnessFromTheRigBearingAndBadInput) {
   EXPECT_DOUBLE_EQ(s.clearance.compliant.stiffness_N_per_m_n, conformal_cylinder_stiffness(e_star, 0.01, 0.254e-3));
 
   auto error_of = [&](const std::string& rig_text, const std::string& scene_text) {
-    dir.write("r.toml", rig_text);
-    try {
-      load_scene(dir.write("s.toml", scene_text));
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    ADD_FAILURE() << "accepted";
-    return std::string();
+    return testing::scene_error(dir, rig_text, scene_text);
   };
-  auto has = [](const std::string& msg, const std::string& what) { EXPECT_NE(msg.find(what), std::string::npos) << msg; };
+  const auto has = testing::expect_names;
   auto swap = [](std::string t, const std::string& a, const std::string& b) { return t.replace(t.find(a), a.size(), b); };
   has(error_of(with(swap(bearing, "pin_poisson_ratio = 0.3", "pin_poisson_ratio = 0.5")), scene), "pin_poisson_ratio");
   has(error_of(with(swap(bearing, "bushing_youngs_modulus_GPa = 210", "bushing_youngs_modulus_GPa = 0")), scene),
