@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/statistics.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
@@ -38,10 +39,7 @@ double edge_timing_jitter(std::span<const double> t, std::span<const double> phi
   // differences within 4 of it: as efficient as the plain RMS for Gaussian
   // jitter (the median alone needs 2.7 times the edges for the same
   // spread), yet a step or an outlier edge, a few large differences, is left out.
-  std::vector<double> sorted = d;
-  const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-  std::nth_element(sorted.begin(), mid, sorted.end());
-  const double start = *mid / 0.6744897501960817;
+  const double start = median(d) / 0.6744897501960817;
   double sq = 0;
   std::size_t kept = 0;
   for (double x : d)

@@ -7,6 +7,7 @@
 #include "acquire/edge_detector.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/statistics.hpp"
 
 namespace fourbar {
 
@@ -89,9 +90,7 @@ double median_width_deg(std::span<const double> widths_s, double period_s) {
   for (double w : widths_s)
     if (std::isfinite(w) && w > 0) finite.push_back(w);
   if (finite.empty() || !(period_s > 0)) return NAN;
-  auto mid = finite.begin() + static_cast<std::ptrdiff_t>(finite.size() / 2);
-  std::nth_element(finite.begin(), mid, finite.end());
-  return 360.0 * *mid / period_s;
+  return 360.0 * median(std::move(finite)) / period_s;
 }
 
 }  // namespace fourbar
