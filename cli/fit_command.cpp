@@ -97,8 +97,8 @@ int run_fit(const Invocation& inv) {
       "friction", po::value(&friction_box), "box for mu, LOW:HIGH (default 0:0.5)")(
       "turns", po::value(&turns), "simulated turns per simulation kept (default: 2x the measured turns, at least 40)")(
       "warmup", po::value(&warmup), "simulated turns discarded before them (default 20)")(
-      "jobs,j", po::value(&jobs), "simulations (and analysis chunks) at once (default: every core; under MPI one per rank)")(
-      "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
+      "jobs,j", po::value(&jobs), "simulations (and analysis chunks) at once (default: every core; under MPI one per rank)");
+  add_quiet_option(opts, quiet);
   po::positional_options_description pos;
   pos.add("session", 1);
   po::variables_map vm;

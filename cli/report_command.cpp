@@ -75,11 +75,11 @@ int run_report(const Invocation& inv) {
       "no-cache", po::bool_switch(&no_cache), "recompute everything; read and write no cache")(
       "jobs,j", po::value(&jobs), "cores to use (default: every core): that many recordings at once, or fewer "
                                   "recordings each on its share of the cores; the outputs do not depend on it")(
-      "quiet,q", po::bool_switch(&quiet), "no progress on stderr")(
       "fit", po::value(&fit), "fit.json of `fourbar fit` (default SESSION_DIR/fit/fit.json when it exists)")(
       "no-fit", po::bool_switch(&no_fit), "no fitted theory, even when SESSION_DIR/fit/fit.json exists")(
       "strict", po::bool_switch(&strict), "a likely set-up mistake in a recording is an error (exit 2; the report is written)");
   add_csv_comments_option(opts, csv_comments);
+  add_quiet_option(opts, quiet);
   po::positional_options_description pos;
   pos.add("session", 1);
   po::variables_map vm;

@@ -121,9 +121,9 @@ int run_sweep(const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()("sweep", po::value(&sweep_file)->required(), "sweep file (TOML)")(
       "out,o", po::value(&out_file), "output table (default: out/<sweep name>.csv)")(
-      "jobs,j", po::value(&jobs), "threads (default: all cores; under MPI each rank runs one point at a time)")(
-      "quiet,q", po::bool_switch(&quiet), "no progress on stderr");
+      "jobs,j", po::value(&jobs), "threads (default: all cores; under MPI each rank runs one point at a time)");
   add_csv_comments_option(opts, csv_comments);
+  add_quiet_option(opts, quiet);
   po::positional_options_description pos;
   pos.add("sweep", 1);
   po::variables_map vm;
