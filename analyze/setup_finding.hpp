@@ -17,6 +17,11 @@ std::string channel_key(const std::string& name, const std::string& key);
 void add_finding(SetupCheck& out, std::string item, std::string channel, std::string key, std::string manifest,
                  std::string data, double confidence);
 
+/// The channel's high-pass corner (sensor_corner.hpp): the manifest's
+/// `ac_coupled`/`highpass_hz` against the data's corner (0: DC-coupled).
+void add_corner_finding(SetupCheck& out, const ChannelSpec& channel, double data_corner_hz, double crank_hz,
+                        double confidence);
+
 /// Every judged accelerometer (at least two) reads the rig's nominal motion
 /// at a common factor beyond `tolerance` (same side, e.g. 0.05: 5 %): one
 /// sensor's calibration rarely errs like all the others', so the cause is

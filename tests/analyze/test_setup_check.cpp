@@ -148,6 +148,18 @@ TEST(SetupCheck, FindingsCarryTheTrueValues) {
     EXPECT_EQ(finding(k, "position_mm").manifest, "239");
   }
   {
+    // A 5 Hz corner in the manifest on a 0.5 Hz piezo over-corrects the
+    // lowest orders: the finding names the corner (about 0.5 Hz), not the
+    // position that a two-term fit would otherwise blame.
+    const SetupCheck k = analyse(rec, Mistake::coupler_highpass).check;
+    const SetupFinding f = finding(k, "highpass_hz");
+    EXPECT_EQ(f.channel, "coupler_t");
+    EXPECT_EQ(f.manifest, "ac_coupled = true, highpass_hz = 5");
+    EXPECT_NE(f.data.find("highpass_hz about 0."), std::string::npos) << f.data;
+    EXPECT_NE(f.key.find("[[channel]] name=\"coupler_t\" ac_coupled"), std::string::npos) << f.key;
+    for (const SetupFinding& g : k.findings) EXPECT_NE(g.item, "position_mm") << g.message;
+  }
+  {
     const SetupCheck k = analyse(rec, Mistake::swapped).check;
     EXPECT_TRUE(k.swapped);
     EXPECT_EQ(channel(k, "coupler_t").fitted_as, "rocker_tangential");
