@@ -398,6 +398,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   // Per channel at the joint best: sign and scale (manifest position), position.
   double fit_manifest = 0;
   std::vector<double> judged_scales;  // channels on their own link, within the scale tolerance
+  std::vector<std::pair<const ChannelSpec*, double>> channel_scales;  // the same, by channel
   for (std::size_t i = 0; i < channels.size(); ++i) {
     const Channel& ch = channels[i];
     ChannelSetupEstimate e;
@@ -426,7 +427,8 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
         add_finding(out, "axis_sign", name, channel_key(name, "axis_sign"), ch.spec->axis_sign > 0 ? "+1" : "-1",
                     ch.spec->axis_sign > 0 ? "-1" : "+1", confidence(1 - one.r2, 1.0));
       const double ratio = std::abs(one.k);
-      if (!(ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance)) judged_scales.push_back(ratio);
+      if (!(ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance))
+        judged_scales.push_back(ratio), channel_scales.emplace_back(ch.spec, ratio);
       if (ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance) {
         const double sign = one.k < 0 ? -1.0 : 1.0;
         const double conf = confidence(1 - one.r2, 1 - one_term_r2(ch, f, best.ti, best.s, ch.r_m, sign));
@@ -454,6 +456,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   if (!best.swapped)
     add_common_scale_finding(out, judged_scales, lim.common_scale_tolerance, manifest.rig_file.string(),
                              lim.min_confidence);
+  if (!best.swapped) add_channel_scale_findings(out, channel_scales, lim.channel_scale_tolerance);
   return out;
 }
 

@@ -46,6 +46,20 @@ void add_corner_finding(SetupCheck& out, const ChannelSpec& channel, double data
               manifest, data, confidence);
 }
 
+void add_channel_scale_findings(SetupCheck& out, const std::vector<std::pair<const ChannelSpec*, double>>& scales,
+                                double tolerance) {
+  for (const SetupFinding& f : out.findings)
+    if (f.item == "common_scale") return;
+  for (const auto& [spec, k] : scales) {
+    const double deviation = std::abs(k - 1);
+    if (deviation <= tolerance) continue;
+    add_finding(out, "volts_per_unit", spec->name, channel_key(spec->name, "volts_per_unit"),
+                format_number(spec->volts_per_m_s2, 4),
+                format_number(spec->volts_per_m_s2 * k, 3) + " (" + format_number(k, 3) + " x)",
+                std::clamp(1 - kChannelScaleSpread / deviation, 0.0, 1.0));
+  }
+}
+
 void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales, double tolerance,
                               const std::string& rig_file, double min_confidence) {
   if (scales.size() < 2) return;
