@@ -104,6 +104,8 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
       os << "polarity = \"" << (ch.pulse->short_state_high ? "rising" : "falling") << "\"  # from the data: the short state is "
          << (ch.pulse->short_state_high ? "high, its rising" : "low, its falling") << " edge leads; check which edge marks the crank\n";
       os << fill_in("crank_offset_deg", "crank angle from the ground line at the marking edge, in degrees");
+      os << "# crank_smoothing = \"spline\"  # a steady run: smooth the pulse times across turns (docs/acquire.md)\n"
+            "# smoothing_period_turns = 10  # with spline: the shortest speed change kept, in crank turns\n";
       continue;
     }
     if (!ch.role.empty() && ch.role != "ignore")

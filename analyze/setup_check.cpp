@@ -11,10 +11,12 @@
 #include <limits>
 
 #include "analyze/analysis_channels.hpp"
+#include "analyze/crank_orders.hpp"
 #include "analyze/fftw_plan.hpp"
 #include "analyze/filter_design.hpp"
 #include "analyze/link_motion.hpp"
 #include "analyze/pipeline.hpp"
+#include "analyze/sensor_corner.hpp"
 #include "analyze/setup_finding.hpp"
 #include "common/format.hpp"
 #include "common/units.hpp"
@@ -33,6 +35,7 @@ struct Channel {
   double r_m = 0, h_m = 0;
   std::vector<double> m;                  // recovered reading (calibrated, on the grid)
   std::vector<double> f0;                 // the part of it the manifest's model added back (not filtered)
+  std::vector<std::complex<double>> m_hat;  // G·m over the fitted orders (FFT bins 0 … N/2)
   double energy = 0;                      // ‖G·m‖² over the fitted orders
   struct Fit {
     std::array<std::vector<double>, 2> t;       // f0, f1 on φj = θ0 + 2πj/N
@@ -89,82 +92,6 @@ std::array<std::vector<double>, 2> templates(const Rig& rig, SensedLink link, Se
   return t;
 }
 
-/// The spectrum of `x` (FFT bins 0 … N/2) with bin q weighted by
-/// weight[q] (bins past the end cleared): the fitted orders only, each with
-/// the analysis filter's gain where that is what the data went through.
-std::vector<std::complex<double>> band_spectrum(const std::vector<double>& x, const std::vector<double>& weight,
-                                                RealFft& fft) {
-  std::copy(x.begin(), x.end(), fft.time().begin());
-  fft.forward();
-  std::vector<std::complex<double>> X(fft.spectrum().begin(), fft.spectrum().end());
-  for (std::size_t q = 0; q < X.size(); ++q) X[q] *= q < weight.size() ? weight[q] : 0.0;
-  return X;
-}
-
-/// The zero-phase gain of an analysis filter at crank orders 0 … K (order 0
-/// set to 0: the mean is not fitted). `response` (optional): the filter's
-/// response at the bins k·fs/n of an n-point transform (the analysis keeps
-/// the α filter's, RecordingAnalysis::spectra), read by linear
-/// interpolation; without it the ideal response of `spec`.
-std::vector<double> order_gains(const FilterSpec& spec, std::span<const double> response, std::size_t n, double fs,
-                                double crank_hz, std::size_t K) {
-  std::vector<double> g(K + 1, 0.0);
-  const bool sampled = n > 0 && response.size() == n / 2 + 1;
-  const std::vector<Band> bands = pass_bands(spec, fs);
-  for (std::size_t q = 1; q <= K; ++q) {
-    const double f = static_cast<double>(q) * crank_hz;
-    if (!sampled) {
-      g[q] = passes(bands, f) ? 1.0 : 0.0;
-      continue;
-    }
-    const double x = f * static_cast<double>(n) / fs;
-    const auto i = std::min(static_cast<std::size_t>(x), response.size() - 2);
-    const double t = x - static_cast<double>(i);
-    g[q] = (1 - t) * response[i] + t * response[i + 1];
-  }
-  return g;
-}
-
-/// Σk a[k]·b[k] of two real signals from their spectra (Parseval).
-double inner(const std::vector<std::complex<double>>& A, const std::vector<std::complex<double>>& B, std::size_t N) {
-  double s = 0;
-  for (std::size_t q = 0; q < A.size(); ++q) {
-    const double w = (q == 0 || 2 * q == N) ? 1.0 : 2.0;
-    s += w * std::real(std::conj(A[q]) * B[q]);
-  }
-  return s / static_cast<double>(N);
-}
-
-/// Smallest order K holding all but `share` of the energy of `x` (mean removed).
-std::size_t band_order(const std::vector<double>& x, double share, RealFft& fft) {
-  std::copy(x.begin(), x.end(), fft.time().begin());
-  fft.forward();
-  const auto X = fft.spectrum();
-  double total = 0;
-  for (std::size_t q = 1; q < X.size(); ++q) total += std::norm(X[q]);
-  double tail = total;
-  for (std::size_t q = 1; q < X.size(); ++q) {
-    tail -= std::norm(X[q]);
-    if (tail <= share * total) return q;
-  }
-  return X.size() - 1;
-}
-
-/// c[τ][s] = Σk m[k]·t[(s + τk) mod N] for τ = +1, −1, by FFT (band-limited spectra).
-std::array<std::vector<double>, 2> correlations(const std::vector<std::complex<double>>& m_hat,
-                                               const std::vector<std::complex<double>>& t_hat, RealFft& fft) {
-  const std::size_t N = fft.size();
-  std::array<std::vector<double>, 2> c;
-  for (std::size_t ti = 0; ti < 2; ++ti) {
-    auto spec = fft.spectrum();
-    for (std::size_t q = 0; q < spec.size(); ++q) spec[q] = (ti == 0 ? std::conj(m_hat[q]) : m_hat[q]) * t_hat[q];
-    fft.inverse();
-    c[ti].assign(fft.time().begin(), fft.time().end());
-    for (double& v : c[ti]) v /= static_cast<double>(N);
-  }
-  return c;
-}
-
 /// Share of ‖m‖² the two-term fit explains, and its coefficients.
 struct TwoTerm {
   double r2 = 0, a = 0, b = 0;
@@ -201,6 +128,23 @@ OneTerm one_term(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::
   o.k = tt > 0 ? c / tt : 0.0;
   o.r2 = one_term_r2(ch, f, ti, s, r, o.k);
   return o;
+}
+
+/// The data's high-pass corner of a channel on its own link, at the joint
+/// best pulse angle and direction, the manifest's position.
+CornerFit corner_fit(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s,
+                     const std::vector<double>& gain, double crank_hz, double fs, RealFft& fft) {
+  const std::size_t N = ch.m.size(), K = gain.size() - 1;
+  std::vector<double> shifted(N);
+  for (std::size_t k = 0; k < N; ++k) {
+    const std::size_t j = ti == 0 ? (s + k) % N : (s + N - k % N) % N;
+    shifted[k] = f.t[0][j] + ch.r_m * f.t[1][j];
+  }
+  const auto T = band_spectrum(shifted, gain, fft);
+  std::vector<double> order_hz(K + 1);
+  for (std::size_t q = 0; q <= K; ++q) order_hz[q] = static_cast<double>(q) * crank_hz;
+  return fit_high_pass_corner(std::span(ch.m_hat).first(K + 1), std::span(T).first(K + 1), order_hz,
+                              ch.spec->ac_coupled ? ch.spec->highpass_hz : 0.0, fs);
 }
 
 /// The share of the misfit with the manifest's value that the data's value
@@ -332,11 +276,12 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     auto m_hat = band_spectrum(ch.m, ones, fft);
     const auto f0_hat = band_spectrum(ch.f0, rest, fft);
     for (std::size_t q = 0; q < m_hat.size(); ++q) m_hat[q] -= f0_hat[q];
-    ch.energy = inner(m_hat, m_hat, N);
+    ch.energy = parseval_inner(m_hat, m_hat, N);
+    ch.m_hat = m_hat;
     for (auto& f : ch.fit) {
       if (!f) continue;
       const auto t0 = band_spectrum(f->t[0], gain, fft), t1 = band_spectrum(f->t[1], gain, fft);
-      f->g00 = inner(t0, t0, N), f->g01 = inner(t0, t1, N), f->g11 = inner(t1, t1, N);
+      f->g00 = parseval_inner(t0, t0, N), f->g01 = parseval_inner(t0, t1, N), f->g11 = parseval_inner(t1, t1, N);
       for (std::size_t p = 0; p < 2; ++p) {
         const auto c = correlations(m_hat, p == 0 ? t0 : t1, fft);
         f->c[0][p] = c[0];
@@ -375,6 +320,19 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
       }
   }
   const double u_best = 1 - best.score / n_ch;
+  // Each sensor's high-pass corner at the manifest's crank. A wrong corner
+  // shifts the first orders' phase, which one channel's best pulse angle can
+  // partly absorb: when the corners explain the readings at the manifest's
+  // crank as well as the data's crank does, the crank is not judged.
+  std::vector<CornerFit> corners;
+  double corner_score = 0;
+  for (const Channel& ch : channels) {
+    const Channel::Fit& fm = *ch.fit[link_index(ch.link)];
+    const auto& gain = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
+    corners.push_back(corner_fit(ch, fm, tau_index(dir_m), 0, gain, crank_hz, fs, fft));
+    corner_score += std::max(two_term(ch, fm, tau_index(dir_m), 0).r2, 1 - corners.back().unexplained);
+  }
+  const bool crank_judged = corner_score < best.score;
   const double tau = best.ti == 0 ? 1.0 : -1.0;
   out.checked = true;
   out.crank_direction = tau;
@@ -398,7 +356,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   const double conf_crank = confidence(u_best, 1 - best_crank_m.score / n_ch);
   const double conf_dir = tau != dir_m ? confidence(u_best, 1 - best_dir_m.score / n_ch) : 0.0;
   const double conf_offset = offset_off ? confidence(u_best, 1 - best_offset_m.score / n_ch) : 0.0;
-  if (tau != dir_m && conf_dir >= lim.min_confidence)
+  if (crank_judged && tau != dir_m && conf_dir >= lim.min_confidence)
     add_finding(out, "crank_direction", "", "crank_direction", direction_name(dir_m), direction_name(tau), conf_dir);
   // An offset by the pulse's own width: the polarity picks the mark's other
   // edge, so every crank angle is late or early by the width.
@@ -409,7 +367,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
                             std::max(kWidthMatchDeg, 0.1 * mark_deg);
   auto polarity = [](bool rising) { return std::string(rising ? "\"rising\"" : "\"falling\"") + " with crank_offset_deg = "; };
   const bool rising = pulse.polarity == PulsePolarity::rising;
-  if (offset_off && conf_offset >= lim.min_confidence)
+  if (crank_judged && offset_off && conf_offset >= lim.min_confidence)
     add_finding(out, by_width ? "polarity" : "crank_offset_deg", pulse.name,
                 by_width ? channel_key(pulse.name, "polarity") + " or " + offset_key : offset_key,
                 (by_width ? polarity(rising) : "") + format_number(offset_m, 4),
@@ -419,7 +377,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
                          : format_number(out.crank_offset_deg, 4),
                 conf_offset);
   const bool ambiguous = (tau != dir_m && conf_dir < lim.min_confidence) || (offset_off && conf_offset < lim.min_confidence);
-  if (ambiguous && out.findings.empty() && conf_crank >= lim.min_confidence)
+  if (crank_judged && ambiguous && out.findings.empty() && conf_crank >= lim.min_confidence)
     add_finding(out, tau != dir_m ? "crank_direction" : "crank_offset_deg", "", "crank_direction or " + offset_key,
                 direction_name(dir_m) + " with crank_offset_deg = " + format_number(units::rad_to_deg(pulse.crank_offset_rad), 4),
                 direction_name(tau) + " with crank_offset_deg = " + format_number(pulse_deg(best), 4) + ", or " +
@@ -440,7 +398,9 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   // Per channel at the joint best: sign and scale (manifest position), position.
   double fit_manifest = 0;
   std::vector<double> judged_scales;  // channels on their own link, within the scale tolerance
-  for (const Channel& ch : channels) {
+  std::vector<std::pair<const ChannelSpec*, double>> channel_scales;  // the same, by channel
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const Channel& ch = channels[i];
     ChannelSetupEstimate e;
     e.channel = ch.spec->name;
     e.role = ch.spec->role;
@@ -467,7 +427,8 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
         add_finding(out, "axis_sign", name, channel_key(name, "axis_sign"), ch.spec->axis_sign > 0 ? "+1" : "-1",
                     ch.spec->axis_sign > 0 ? "-1" : "+1", confidence(1 - one.r2, 1.0));
       const double ratio = std::abs(one.k);
-      if (!(ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance)) judged_scales.push_back(ratio);
+      if (!(ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance))
+        judged_scales.push_back(ratio), channel_scales.emplace_back(ch.spec, ratio);
       if (ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance) {
         const double sign = one.k < 0 ? -1.0 : 1.0;
         const double conf = confidence(1 - one.r2, 1 - one_term_r2(ch, f, best.ti, best.s, ch.r_m, sign));
@@ -477,7 +438,14 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
                       " (" + format_number(ratio, 3) + " x)", conf);
       }
     }
-    if (l == ch.link && two.r2 >= lim.min_fit && std::isfinite(e.position_mm) &&
+    // The sensor's high-pass corner: when another corner explains the reading
+    // better than the data's position does, the corner is the mistake.
+    const CornerFit& corner = corners[i];
+    const double corner_conf = confidence(corner.unexplained, corner.unexplained_manifest);
+    const bool corner_off = l == ch.link && corner_conf >= lim.min_confidence && 1 - corner.unexplained >= lim.min_fit &&
+                            corner.unexplained < 1 - two.r2;
+    if (corner_off) add_corner_finding(out, *ch.spec, corner.corner_hz, crank_hz, corner_conf);
+    if (!corner_off && l == ch.link && two.r2 >= lim.min_fit && std::isfinite(e.position_mm) &&
         std::abs(e.position_mm - units::m_to_mm(ch.r_m)) > lim.position_tolerance_mm &&
         e.position_confidence >= lim.min_confidence)
       add_finding(out, "position_mm", name, channel_key(name, "position_mm"), format_number(units::m_to_mm(ch.r_m), 4),
@@ -488,6 +456,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   if (!best.swapped)
     add_common_scale_finding(out, judged_scales, lim.common_scale_tolerance, manifest.rig_file.string(),
                              lim.min_confidence);
+  if (!best.swapped) add_channel_scale_findings(out, channel_scales, lim.channel_scale_tolerance);
   return out;
 }
 

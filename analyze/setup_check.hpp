@@ -55,12 +55,13 @@ struct SetupCheckLimits {
   double scale_tolerance = 1.5;      ///< volts_per_unit: ratio data/manifest outside [1/x, x]
   double position_tolerance_mm = 20; ///< position_mm
   double common_scale_tolerance = 0.05; ///< every channel's scale beyond 1 ± this, same side (correct manifests: ≤ 0.002)
+  double channel_scale_tolerance = 0.10; ///< one channel's scale beyond 1 ± this (correct manifests: ≤ 0.0243, setup_check_matrix)
   double min_fit = 0.5;              ///< a channel's fit (share explained) below which its own keys are not judged
 };
 
 /// One likely mistake in the manifest.
 struct SetupFinding {
-  std::string item;        ///< "axis_sign", "volts_per_unit", "position_mm", "crank_offset_deg", "crank_direction", "channels_swapped"
+  std::string item;        ///< "axis_sign", "volts_per_unit", "position_mm", "highpass_hz", "crank_offset_deg", "polarity", "crank_direction", "channels_swapped", "common_scale"
   std::string channel;     ///< the channel concerned (empty for the crank)
   std::string key;         ///< where to change it, e.g. [[channel]] name="coupler_t" axis_sign
   std::string manifest;    ///< what the manifest says

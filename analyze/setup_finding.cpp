@@ -31,6 +31,35 @@ void add_finding(SetupCheck& out, std::string item, std::string channel, std::st
   out.findings.push_back(std::move(f));
 }
 
+void add_corner_finding(SetupCheck& out, const ChannelSpec& channel, double data_corner_hz, double crank_hz,
+                        double confidence) {
+  const std::string manifest = channel.ac_coupled ? "ac_coupled = true, highpass_hz = " + format_number(channel.highpass_hz, 3)
+                                                  : "ac_coupled = false (no high-pass)";
+  // Below 2 % of the crank frequency a corner moves the first order by < 1.2°: DC and such a corner look alike.
+  const double resolvable_hz = 0.02 * crank_hz;
+  const std::string data =
+      data_corner_hz < resolvable_hz
+          ? "ac_coupled = false, or a high-pass corner below " + format_number(resolvable_hz, 2) + " Hz"
+          : "ac_coupled = true, highpass_hz about " + format_number(data_corner_hz, 2) +
+                " (the lowest crank orders come out scaled and shifted as that corner does)";
+  add_finding(out, "highpass_hz", channel.name, channel_key(channel.name, "ac_coupled") + " and highpass_hz",
+              manifest, data, confidence);
+}
+
+void add_channel_scale_findings(SetupCheck& out, const std::vector<std::pair<const ChannelSpec*, double>>& scales,
+                                double tolerance) {
+  for (const SetupFinding& f : out.findings)
+    if (f.item == "common_scale") return;
+  for (const auto& [spec, k] : scales) {
+    const double deviation = std::abs(k - 1);
+    if (deviation <= tolerance) continue;
+    add_finding(out, "volts_per_unit", spec->name, channel_key(spec->name, "volts_per_unit"),
+                format_number(spec->volts_per_m_s2, 4),
+                format_number(spec->volts_per_m_s2 * k, 3) + " (" + format_number(k, 3) + " x)",
+                std::clamp(1 - kChannelScaleSpread / deviation, 0.0, 1.0));
+  }
+}
+
 void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales, double tolerance,
                               const std::string& rig_file, double min_confidence) {
   if (scales.size() < 2) return;

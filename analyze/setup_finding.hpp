@@ -3,6 +3,7 @@
 // manifest's value, the data's value, how sure, and the key to change.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analyze/setup_check.hpp"
@@ -17,6 +18,11 @@ std::string channel_key(const std::string& name, const std::string& key);
 void add_finding(SetupCheck& out, std::string item, std::string channel, std::string key, std::string manifest,
                  std::string data, double confidence);
 
+/// The channel's high-pass corner (sensor_corner.hpp): the manifest's
+/// `ac_coupled`/`highpass_hz` against the data's corner (0: DC-coupled).
+void add_corner_finding(SetupCheck& out, const ChannelSpec& channel, double data_corner_hz, double crank_hz,
+                        double confidence);
+
 /// Every judged accelerometer (at least two) reads the rig's nominal motion
 /// at a common factor beyond `tolerance` (same side, e.g. 0.05: 5 %): one
 /// sensor's calibration rarely errs like all the others', so the cause is
@@ -26,5 +32,20 @@ void add_finding(SetupCheck& out, std::string item, std::string channel, std::st
 /// `scales`: |A| of each judged channel (1: as the manifest says).
 void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales, double tolerance,
                               const std::string& rig_file, double min_confidence);
+
+/// A channel whose scale (|A| with the manifest's position, 1: as the
+/// manifest says) lies beyond 1 ± `tolerance` while the scale factor 1.5
+/// that the misfit test judges is not reached: a calibration 10–50 % off
+/// (a sensitivity from another sensor's sheet, a gain misread). Not when a
+/// common_scale finding already names a cause common to every channel. The
+/// confidence is 1 − kChannelScaleSpread / |scale − 1|: the spread of the
+/// scale on correct manifests against the deviation.
+void add_channel_scale_findings(SetupCheck& out, const std::vector<std::pair<const ChannelSpec*, double>>& scales,
+                                double tolerance);
+
+/// The largest |scale − 1| of a channel on a correct manifest in the
+/// set-up check matrix (bench/setup_check_matrix: 0.0225 with three channels,
+/// 0.0243 with the coupler's alone), rounded up.
+inline constexpr double kChannelScaleSpread = 0.025;
 
 }  // namespace fourbar

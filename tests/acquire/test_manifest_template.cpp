@@ -81,6 +81,13 @@ TEST(ManifestTemplate, RefusedUntilFilledInThenAcceptedAsInspected) {
   EXPECT_DOUBLE_EQ(m.channels[2].volts_per_m_s2, 0.01);
   EXPECT_DOUBLE_EQ(m.full_scale_V, 10);
   EXPECT_NE(text.find("CLIPPED"), std::string::npos) << "the clipped channel is flagged in its comment";
+
+  // The smoothing keys offered as comments on the pulse channel load as written once uncommented.
+  std::string smoothed = fill_in(text);
+  smoothed = std::regex_replace(smoothed, std::regex("# (crank_smoothing = |smoothing_period_turns = )"), "$1");
+  dir.write("r.toml", smoothed);
+  const Manifest ms = load_manifest(manifest);
+  EXPECT_DOUBLE_EQ(ms.channels[1].smoothing_period_turns, 10) << smoothed;
 }
 
 TEST(ManifestTemplate, NamedChannelsByColumnRateVariableAndVoltUnits) {

@@ -28,17 +28,21 @@ enum class Mistake {
   rocker_sign,       ///< rocker_t axis_sign flipped
   pulse_polarity,    ///< the pulse's other edge ("falling"; the mark starts rising, 10° wide)
   full_scale,        ///< full_scale_V × 1.1 (every channel 10 % high)
+  coupler_highpass,  ///< coupler_t ac_coupled with highpass_hz = 5 (the truth: 0.5 Hz, or DC)
+  coupler_gain,      ///< coupler_t volts_per_unit × 1.2 (a calibration 20 % off)
 };
 /// The mistakes a manifest with only the coupler's tangential channel can make.
 inline const std::vector<Mistake>& coupler_only_mistakes() {
   static const std::vector<Mistake> m{Mistake::coupler_sign, Mistake::coupler_scale, Mistake::crank_offset,
-                                      Mistake::crank_direction, Mistake::coupler_position, Mistake::pulse_polarity};
+                                      Mistake::crank_direction, Mistake::coupler_position, Mistake::pulse_polarity,
+                                      Mistake::coupler_highpass, Mistake::coupler_gain};
   return m;
 }
 inline const std::vector<Mistake>& all_mistakes() {
   static const std::vector<Mistake> m{Mistake::coupler_sign,     Mistake::coupler_scale, Mistake::crank_offset,
                                       Mistake::crank_direction,  Mistake::coupler_position, Mistake::swapped,
-                                      Mistake::rocker_sign,      Mistake::pulse_polarity, Mistake::full_scale};
+                                      Mistake::rocker_sign,      Mistake::pulse_polarity, Mistake::full_scale,
+                                      Mistake::coupler_highpass, Mistake::coupler_gain};
   return m;
 }
 inline const char* to_string(Mistake m) {
@@ -53,6 +57,8 @@ inline const char* to_string(Mistake m) {
     case Mistake::rocker_sign: return "rocker axis_sign flipped";
     case Mistake::pulse_polarity: return "pulse polarity: other edge";
     case Mistake::full_scale: return "full_scale_V x1.1";
+    case Mistake::coupler_highpass: return "coupler highpass_hz 5";
+    case Mistake::coupler_gain: return "coupler volts_per_unit x1.2";
   }
   return "?";
 }
@@ -69,6 +75,8 @@ inline const char* expected_item(Mistake m) {
     case Mistake::rocker_sign: return "axis_sign";
     case Mistake::pulse_polarity: return "polarity";
     case Mistake::full_scale: return "common_scale";
+    case Mistake::coupler_highpass: return "highpass_hz";
+    case Mistake::coupler_gain: return "volts_per_unit";
   }
   return "";
 }
@@ -154,6 +162,8 @@ inline std::filesystem::path manifest_with(const std::filesystem::path& recordin
     case Mistake::rocker_sign: channel("rocker_t").axis_sign *= -1; break;
     case Mistake::pulse_polarity: channel("crank_pulse").polarity = PulsePolarity::falling; break;
     case Mistake::full_scale: man.full_scale_V *= 1.1; break;
+    case Mistake::coupler_highpass: channel("coupler_t").ac_coupled = true, channel("coupler_t").highpass_hz = 5; break;
+    case Mistake::coupler_gain: channel("coupler_t").volts_per_m_s2 *= 1.2; break;
   }
   const auto out = recording.parent_path() / (recording.stem().string() + "." + std::to_string(static_cast<int>(m)) + ".toml");
   std::ofstream(out) << manifest_to_toml(man, recording.parent_path());
@@ -165,7 +175,8 @@ inline bool flags(const SetupCheck& check, Mistake m) {
   if (m == Mistake::none) return !check.findings.empty();
   for (const SetupFinding& f : check.findings)
     if (f.item == expected_item(m)) {
-      if (m == Mistake::coupler_sign || m == Mistake::coupler_scale || m == Mistake::coupler_position)
+      if (m == Mistake::coupler_sign || m == Mistake::coupler_scale || m == Mistake::coupler_position ||
+          m == Mistake::coupler_highpass || m == Mistake::coupler_gain)
         return f.channel == "coupler_t";
       if (m == Mistake::rocker_sign) return f.channel == "rocker_t";
       return true;

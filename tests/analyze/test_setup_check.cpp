@@ -136,6 +136,17 @@ TEST(SetupCheck, FindingsCarryTheTrueValues) {
     EXPECT_EQ(finding(k, "volts_per_unit").key, "[[channel]] name=\"coupler_t\" volts_per_unit");
   }
   {
+    // A calibration 20 % off on one channel: within the factor 1.5 the misfit
+    // test needs, but far outside the scale's spread on correct manifests.
+    const SetupCheck k = analyse(rec, Mistake::coupler_gain).check;
+    EXPECT_NEAR(channel(k, "coupler_t").scale, 1 / 1.2, 0.02) << describe(k);
+    const SetupFinding f = finding(k, "volts_per_unit");
+    EXPECT_EQ(f.channel, "coupler_t");
+    EXPECT_EQ(f.manifest, "0.0024");
+    EXPECT_GE(f.confidence, 0.8);
+    for (const SetupFinding& g : k.findings) EXPECT_NE(g.item, "common_scale") << g.message;
+  }
+  {
     const SetupCheck k = analyse(rec, Mistake::coupler_sign).check;
     EXPECT_NEAR(channel(k, "coupler_t").scale, -1.0, 0.05) << describe(k);
     EXPECT_EQ(finding(k, "axis_sign").manifest, "-1");  // the truth: +1
@@ -146,6 +157,18 @@ TEST(SetupCheck, FindingsCarryTheTrueValues) {
     const SetupCheck k = analyse(rec, Mistake::coupler_position).check;
     EXPECT_NEAR(channel(k, "coupler_t").position_mm, 289.0, 5.0) << describe(k);  // the manifest says 239
     EXPECT_EQ(finding(k, "position_mm").manifest, "239");
+  }
+  {
+    // A 5 Hz corner in the manifest on a 0.5 Hz piezo over-corrects the
+    // lowest orders: the finding names the corner (about 0.5 Hz), not the
+    // position that a two-term fit would otherwise blame.
+    const SetupCheck k = analyse(rec, Mistake::coupler_highpass).check;
+    const SetupFinding f = finding(k, "highpass_hz");
+    EXPECT_EQ(f.channel, "coupler_t");
+    EXPECT_EQ(f.manifest, "ac_coupled = true, highpass_hz = 5");
+    EXPECT_NE(f.data.find("highpass_hz about 0."), std::string::npos) << f.data;
+    EXPECT_NE(f.key.find("[[channel]] name=\"coupler_t\" ac_coupled"), std::string::npos) << f.key;
+    for (const SetupFinding& g : k.findings) EXPECT_NE(g.item, "position_mm") << g.message;
   }
   {
     const SetupCheck k = analyse(rec, Mistake::swapped).check;

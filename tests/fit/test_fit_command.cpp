@@ -13,6 +13,7 @@
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/virtual_rig_scene.hpp"
 
 namespace fourbar {
 namespace {
@@ -28,17 +29,7 @@ noise_snr_db = 30.0
 seed = )" + std::to_string(seed) + R"(
 [recording.pulse]
 angle_deg = 0.0
-[[recording.sensor]]
-name = "coupler_t"
-role = "coupler_tangential"
-position_mm = 289.0
-volts_per_unit = 0.002
-[[recording.sensor]]
-name = "rocker_t"
-role = "rocker_tangential"
-position_mm = 292.0
-volts_per_unit = 0.002
-)";
+)" + testing::tangential_sensors_toml(289.0, 292.0);
 }
 
 class FitCommand : public ::testing::Test {
@@ -50,8 +41,7 @@ class FitCommand : public ::testing::Test {
       const std::string name = "nominal_" + std::to_string(static_cast<int>(rpm));
       dir_->write("make/" + name + ".toml", nominal_scene(rpm, seed++));
       // The manifest needs a clearance for the fit to get as far as the noise check.
-      const auto r = testing::run_fourbar("virtual-rig " + (dir_->path() / "make" / (name + ".toml")).string() +
-                                          " --no-truth --out " + (dir_->path() / "session" / (name + ".flac")).string());
+      const auto r = testing::record_virtual(dir_->path() / "make" / (name + ".toml"), dir_->path() / "session" / (name + ".flac"));
       ASSERT_EQ(r.status, 0) << r.err;
     }
   }
@@ -104,19 +94,8 @@ noise_snr_db = 30.0
 seed = 5
 [recording.pulse]
 angle_deg = 0.0
-[[recording.sensor]]
-name = "coupler_t"
-role = "coupler_tangential"
-position_mm = 289.0
-volts_per_unit = 0.002
-[[recording.sensor]]
-name = "rocker_t"
-role = "rocker_tangential"
-position_mm = 292.0
-volts_per_unit = 0.002
-)");
-  const auto made = testing::run_fourbar("virtual-rig " + (dir.path() / "make" / "rec.toml").string() +
-                                         " --no-truth --out " + (dir.path() / "session" / "rec.flac").string());
+)" + testing::tangential_sensors_toml(289.0, 292.0));
+  const auto made = testing::record_virtual(dir.path() / "make" / "rec.toml", dir.path() / "session" / "rec.flac");
   ASSERT_EQ(made.status, 0) << made.err;
   dir.write("session/session.toml", "[theory]\nrestitution = 0.95\ncontact = \"smooth\"\n");
 }

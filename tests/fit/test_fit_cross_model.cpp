@@ -16,6 +16,7 @@
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/virtual_rig_scene.hpp"
 
 namespace fourbar {
 namespace {
@@ -36,23 +37,12 @@ noise_snr_db = 30.0
 seed = 5
 [recording.pulse]
 angle_deg = 0.0
-[[recording.sensor]]
-name = "coupler_t"
-role = "coupler_tangential"
-position_mm = 289.0
-volts_per_unit = 0.002
-[[recording.sensor]]
-name = "rocker_t"
-role = "rocker_tangential"
-position_mm = 292.0
-volts_per_unit = 0.002
-)";
+)" + testing::tangential_sensors_toml(289.0, 292.0);
 }
 
 nlohmann::json fit_of(const testing::TempDir& dir, const std::string& name, const std::string& contact_law) {
   dir.write("make/" + name + ".toml", scene(contact_law));
-  const auto made = testing::run_fourbar("virtual-rig " + (dir.path() / "make" / (name + ".toml")).string() +
-                                         " --no-truth --out " + (dir.path() / name / "rec.flac").string());
+  const auto made = testing::record_virtual(dir.path() / "make" / (name + ".toml"), dir.path() / name / "rec.flac");
   EXPECT_EQ(made.status, 0) << made.err;
   dir.write(name + "/session.toml", "[theory]\nrestitution = 0.95\ncontact = \"smooth\"\n");
   const auto out = dir.path() / (name + "_fit");

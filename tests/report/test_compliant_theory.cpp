@@ -13,13 +13,14 @@
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/virtual_rig_scene.hpp"
 
 namespace fourbar {
 namespace {
 
 using nlohmann::json;
 
-const char* kScene = R"(rig = "rig.toml"
+const std::string kScene = R"(rig = "rig.toml"
 model = "clearance"
 crank_speed_rpm = 350
 outputs = ["alpha3_rad_s2"]
@@ -35,12 +36,7 @@ noise_snr_db = 50.0
 seed = 11
 [recording.pulse]
 angle_deg = 0.0
-[[recording.sensor]]
-name = "coupler_t"
-role = "coupler_tangential"
-position_mm = 300.0
-volts_per_unit = 0.002
-)";
+)" + testing::sensor_toml("coupler_t", "coupler_tangential", 300.0);
 
 class CompliantTheory : public ::testing::Test {
  protected:
@@ -49,8 +45,7 @@ class CompliantTheory : public ::testing::Test {
     dir_->write("make/rig.toml", testing::thesis_rig_toml());
     dir_->write("make/rec.toml", kScene);
     std::filesystem::create_directories(dir_->path() / "session");
-    const auto r = testing::run_fourbar("virtual-rig " + (dir_->path() / "make" / "rec.toml").string() +
-                                        " --no-truth --out " + (dir_->path() / "session" / "rec.flac").string());
+    const auto r = testing::record_virtual(dir_->path() / "make" / "rec.toml", dir_->path() / "session" / "rec.flac");
     ASSERT_EQ(r.status, 0) << r.err;
   }
   static void TearDownTestSuite() { delete dir_; }

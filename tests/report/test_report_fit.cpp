@@ -18,6 +18,7 @@
 #include "support/headless_browser.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/virtual_rig_scene.hpp"
 
 namespace fourbar {
 namespace {
@@ -43,12 +44,7 @@ noise_snr_db = 40.0
 seed = )" + std::to_string(seed) + R"(
 [recording.pulse]
 angle_deg = 0.0
-[[recording.sensor]]
-name = "coupler_t"
-role = "coupler_tangential"
-position_mm = 289.0
-volts_per_unit = 0.002
-)";
+)" + testing::sensor_toml("coupler_t", "coupler_tangential", 289.0);
 }
 
 /// A fit.json as `fourbar fit` writes it (the keys the report reads, and more).
@@ -83,8 +79,7 @@ class ReportFit : public ::testing::Test {
     dir_ = new testing::TempDir;
     const auto& d = dir_->path();
     dir_->write("make/a.toml", scene(350, 11));
-    const auto r = testing::run_fourbar("virtual-rig " + (d / "make" / "a.toml").string() + " --no-truth --out " +
-                                        (d / "session" / "a.flac").string());
+    const auto r = testing::record_virtual(d / "make" / "a.toml", d / "session" / "a.flac");
     ASSERT_EQ(r.status, 0) << r.err;
     dir_->write("session/session.toml", "[theory]\nrestitution = 1.0\ncontact = \"smooth\"\naveraged_revolutions = 16\n");
     dir_->write("fit_elsewhere/fit.json", fit_json({"a.flac"}).dump(2));

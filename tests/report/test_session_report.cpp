@@ -19,6 +19,7 @@
 #include "support/headless_browser.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/virtual_rig_scene.hpp"
 
 namespace fourbar {
 namespace {
@@ -38,17 +39,7 @@ noise_snr_db = 50.0
 seed = )" + std::to_string(seed) + R"(
 [recording.pulse]
 angle_deg = 0.0
-[[recording.sensor]]
-name = "coupler_t"
-role = "coupler_tangential"
-position_mm = 300.0
-volts_per_unit = 0.002
-[[recording.sensor]]
-name = "rocker_t"
-role = "rocker_tangential"
-position_mm = 300.0
-volts_per_unit = 0.002
-)";
+)" + testing::tangential_sensors_toml(300.0, 300.0);
   return s;
 }
 
@@ -62,8 +53,7 @@ class SessionReport : public ::testing::Test {
     dir_->write("make/clearance.toml", scene("clearance", 350, 0.254, 4));
     std::filesystem::create_directories(d / "session");
     for (const char* name : {"nominal", "clearance"}) {
-      const auto r = testing::run_fourbar("virtual-rig " + (d / "make" / (std::string(name) + ".toml")).string() +
-                                          " --no-truth --out " + (d / "session" / (std::string(name) + ".flac")).string());
+      const auto r = testing::record_virtual(d / "make" / (std::string(name) + ".toml"), d / "session" / (std::string(name) + ".flac"));
       ASSERT_EQ(r.status, 0) << r.err;
     }
     // A copy of the nominal recording cut in half (a damaged transfer), with its manifest.

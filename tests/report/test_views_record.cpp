@@ -18,6 +18,7 @@
 #include "report/views_record.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/virtual_rig_scene.hpp"
 
 namespace fourbar {
 namespace {
@@ -45,19 +46,9 @@ noise_snr_db = 50.0
 seed = 11
 [recording.pulse]
 angle_deg = 20.0
-[[recording.sensor]]
-name = "coupler_t"
-role = "coupler_tangential"
-position_mm = 300.0
-volts_per_unit = 0.002
-[[recording.sensor]]
-name = "rocker_t"
-role = "rocker_tangential"
-position_mm = 300.0
-volts_per_unit = 0.002
-)");
+)" + testing::tangential_sensors_toml(300.0, 300.0));
     rec_ = new std::filesystem::path(dir_->path() / "rec.flac");
-    const auto r = testing::run_fourbar("virtual-rig " + (dir_->path() / "scene.toml").string() + " --no-truth --out " + rec_->string());
+    const auto r = testing::record_virtual(dir_->path() / "scene.toml", *rec_);
     ASSERT_EQ(r.status, 0) << r.err;
     AnalyzeOptions o;
     o.progress = false;
