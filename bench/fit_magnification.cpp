@@ -3,7 +3,11 @@
 // magnification factor a of the fitted model"). On a SYNTHETIC session made
 // by bench/make_fit_session.sh with known parameters:
 //
-//   fit_magnification SESSION_DIR TRUE_E TRUE_CONTACT TRUE_MU [MODEL_TURNS] [THREADS] [BLOCK]
+//   fit_magnification SESSION_DIR TRUE_E TRUE_CONTACT TRUE_MU [MODEL_TURNS] [THREADS] [BLOCK] [E:MU ...]
+//
+// Each E:MU after BLOCK (MU 0: smooth) is a further point (the fitted values,
+// the prior) at which a is given as `fourbar fit` computes it
+// (matched_magnification from MODEL_TURNS turns) and as the scatter ratio.
 //
 // Per recording, α3 (the link the fit's a is taken on):
 // 1. The measurement through acquire + analyze (session settings, every turn
@@ -33,6 +37,7 @@
 #include <vector>
 
 #include "cluster/case_queue.hpp"
+#include "fit/matched_magnification.hpp"
 #include "fit/recording_target.hpp"
 #include "report/session_settings.hpp"
 
@@ -132,6 +137,16 @@ int main(int argc, char** argv) {
   const unsigned threads = argc > 6 ? static_cast<unsigned>(std::stoi(argv[6])) : 1;
   const std::size_t block = argc > 7 ? static_cast<std::size_t>(std::stoi(argv[7])) : 23;
 
+  std::vector<ContactParameters> points;
+  for (int i = 8; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto colon = arg.find(':');
+    ContactParameters p;
+    p.restitution = std::stod(arg.substr(0, colon));
+    p.friction_coefficient = colon == std::string::npos ? 0.0 : std::stod(arg.substr(colon + 1));
+    p.contact = p.friction_coefficient > 0 ? ContactLaw::stick_slip : ContactLaw::smooth;
+    points.push_back(p);
+  }
   SessionSettings settings = load_session_settings(dir);
   AnalyzeOptions options = settings.analysis;
   options.keep_revolutions = true;
@@ -152,14 +167,17 @@ int main(int argc, char** argv) {
     recs.push_back(std::move(r));
   }
   std::vector<ModelRun> runs(recs.size());
-  std::vector<std::size_t> jobs(recs.size());
+  std::vector<std::size_t> jobs(recs.size() * (1 + points.size()));
   for (std::size_t i = 0; i < jobs.size(); ++i) jobs[i] = i;
+  std::vector<std::vector<StatisticValues>> at_points(recs.size(), std::vector<StatisticValues>(points.size()));
   std::mutex m;
   run_case_queue(jobs, threads,
                  [&](std::size_t j) {
-                   ModelRun r = simulate(recs[j].t, truth, model_turns);
+                   const std::size_t r = j % recs.size(), c = j / recs.size();
+                   ModelRun run = simulate(recs[r].t, c == 0 ? truth : points[c - 1], model_turns);
                    std::lock_guard lock(m);
-                   runs[j] = std::move(r);
+                   if (c == 0) runs[r] = std::move(run);
+                   else at_points[r][c - 1] = response_statistics(run.alpha3, recs[r].t.nominal[0]);
                    return std::string();
                  },
                  [](std::size_t, std::string&&) {});
@@ -240,6 +258,13 @@ int main(int argc, char** argv) {
                 std::min_element(bR.s.begin(), bR.s.end(), [](auto& x, auto& y) { return x.md < y.md; })->md / meas.md,
                 std::max_element(bR.s.begin(), bR.s.end(), [](auto& x, auto& y) { return x.md < y.md; })->md / meas.md,
                 a_exp, a_exp * meas.md_se / meas.md);
+    for (std::size_t c = 0; c < points.size(); ++c) {
+      const auto a = matched_magnification(*t.measured[0], R, at_points[i][c], M);
+      const double sr = at_points[i][c].value[index_of(ResponseStatistic::spread)] / meas.spread;
+      std::printf("   at e = %.4g mu = %.4g: a = %.3f ± %.3f (measured rel %.3f, model rel %.3f), a from scatter %.3f\n",
+                  points[c].restitution, points[c].friction_coefficient, a ? a->value : 0.0, a ? a->standard_error : 0.0,
+                  a ? a->measured_relative_error : 0.0, a ? a->model_relative_error : 0.0, sr);
+    }
     if (R >= 2 * block) {
       // A long recording: the measurement's own scatter from block to block.
       const Blocks mbk = blocks_of(r.alpha3, nom, block, r.band3.empty() ? nullptr : &r.band3, nb);
