@@ -5,8 +5,9 @@
 # prior e = 0.95 smooth in session.toml), e in {0.2, 0.5, 0.8} x contact
 # {smooth, stick-slip mu 0.1, 0.3}; each fitted (PARALLEL fits at a time,
 # JOBS threads each), then one table row per session: truth, fitted value
-# [interval], truth inside?, chi2/term at the fit and at the prior,
-# evaluations, simulations, wall time.
+# [interval], truth inside?, chi2/term at the fit and at the prior, the
+# magnification factor a ± its standard error per recording at the fit and
+# at the prior, evaluations, simulations, wall time.
 # The last lines count the intervals that hold the truth and the widest
 # identifiable interval. CASES="e0.2_0.3 e0.5_smooth ..." in the environment
 # fits only those sessions (all are made). With REFIT=0 sessions that already
@@ -63,9 +64,13 @@ def cell(name, truth):
 ce, ie = cell("restitution", e)
 cm, im = cell("friction_coefficient", mu)
 t = max(1, j["terms"])
-af = [r.get("magnification_fitted") for r in j["recordings"]]
-ap = [r.get("magnification_prior") for r in j["recordings"]]
-fmt = lambda v: "/".join(f"{x:.2f}" if x is not None else "–" for x in v)
+def a_cell(r, key):
+    if r.get(key) is None: return "–"
+    se = r.get(key + "_standard_error")
+    return f"{r[key]:.2f}" + (f"±{se:.2f}" if se is not None else "")
+af = [a_cell(r, "magnification_fitted") for r in j["recordings"]]
+ap = [a_cell(r, "magnification_prior") for r in j["recordings"]]
+fmt = lambda v: "/".join(v)
 print(f"| {e} | {contact} | {ce} | {mu} | {cm} | {ie} | {im} | {j['chi2']/t:.2f} ({j['chi2_prior']/t:.1f}) | {fmt(af)} ({fmt(ap)}) | {j['evaluations']} | {j['simulations']} | {j['seconds']:.0f} ({j.get('cpu_seconds', 0):.0f}) |")
 PY
 done

@@ -193,6 +193,15 @@ int run_fit(const Invocation& inv) {
               << format_number(f.seconds, 3) << " s\n";
     for (const ParameterEstimate& p : f.parameters)
       if (!p.identifiable) std::cout << "  " << parameter_advice(p) << "\n";
+    // a with its standard error: from a few dozen turns it is noise-limited.
+    for (std::size_t r = 0; r < f.recordings.size() && r < f.magnification_fitted.size(); ++r) {
+      const auto &af = f.magnification_fitted[r], &ap = f.magnification_prior[r];
+      if (!af) continue;
+      std::cout << "  " << f.recordings[r].name << ": magnification a = " << format_number(af->value, 3) << " ± "
+                << format_number(af->standard_error, 2);
+      if (ap) std::cout << " (prior " << format_number(ap->value, 3) << " ± " << format_number(ap->standard_error, 2) << ")";
+      std::cout << "\n";
+    }
     for (const std::string& n : f.notes) std::cout << "  note: " << n << "\n";
   };
   if (per_recording) {

@@ -86,8 +86,12 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
       rj["measured_statistics"] = stats;
     }
     if (r < f.magnification_fitted.size()) {
-      if (f.magnification_fitted[r]) rj["magnification_fitted"] = *f.magnification_fitted[r];
-      if (f.magnification_prior[r]) rj["magnification_prior"] = *f.magnification_prior[r];
+      // a with its standard error: with 25 turns a is noise-limited (±8–36 %),
+      // so a bare number would read as a verdict it cannot give.
+      if (const auto& a = f.magnification_fitted[r])
+        rj["magnification_fitted"] = a->value, rj["magnification_fitted_standard_error"] = a->standard_error;
+      if (const auto& a = f.magnification_prior[r])
+        rj["magnification_prior"] = a->value, rj["magnification_prior_standard_error"] = a->standard_error;
     }
     if (r < f.measured_scatter_share.size() && f.measured_scatter_share[r])
       rj["measured_scatter_share"] = *f.measured_scatter_share[r];
@@ -121,6 +125,8 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
             {"warmup_turns", o.warmup_turns},
             {"simulated_turns", o.simulated_turns},
             {"turns_simulated", f.turns_simulated},
+            {"magnification_turns", f.magnification_turns},
+            {"magnification_simulations", f.magnification_simulations},
             {"seconds", f.seconds},
             {"cpu_seconds", f.cpu_seconds},
             {"seconds_per_simulation", f.seconds_per_simulation},

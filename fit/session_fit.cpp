@@ -11,6 +11,7 @@
 
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "fit/matched_magnification.hpp"
 #include "fit/objective_surrogate.hpp"
 #include "fit/simulation_cache.hpp"
 
@@ -167,6 +168,7 @@ void validate_fit_options(const FitOptions& o) {
     bad("--friction " + format_number(b.friction_low) + ":" + format_number(b.friction_high),
         "the box is given backwards or empty (low must be below high); write --friction LOW:HIGH");
   if (o.simulated_turns < 8) bad("--turns " + std::to_string(o.simulated_turns), "simulate at least 8 turns");
+  if (o.magnification_turns < 0) bad("magnification turns", "must be >= 0 (0: 8x the measured turns)");
   if (o.warmup_turns < 0) bad("--warmup " + std::to_string(o.warmup_turns), "must be >= 0");
   if (o.global_evaluations < 1 || o.local_evaluations < 0 || o.profile_points_e < 3 || o.profile_points_mu < 3)
     bad("evaluations", "the global stage needs >= 1 evaluation and each profile >= 3 points");
@@ -315,36 +317,40 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   for (std::size_t r = 0; r < targets.size(); ++r)
     out.recordings.push_back({targets[r].name, at_best.by_recording[r], at_best.terms_by_recording[r],
                               at_prior.by_recording[r]});
+  // The magnification factor a at the fit and at the prior, from runs of
+  // many more turns than the measurement's, turned into what the model
+  // expects of an averaged curve of the measured turns (matched_magnification.hpp).
+  std::size_t max_turns = 0;
+  for (const RecordingTarget& t : targets) max_turns = std::max(max_turns, t.turns);
+  out.magnification_turns =
+      o.magnification_turns > 0 ? o.magnification_turns
+                                : kMagnificationTurnsPerMeasuredTurn * static_cast<int>(std::max<std::size_t>(max_turns, 1));
+  SimulationCache long_runs(targets, {o.warmup_turns, out.magnification_turns, o.tolerance, std::max(1u, o.threads)});
+  long_runs.ensure({best, prior});
+  out.magnification_simulations = long_runs.simulations();
   for (std::size_t r = 0; r < targets.size(); ++r) {
-    auto a = [&](const ContactParameters& p) -> std::optional<double> {
-      const CachedSimulation& sim = cache.at(r, p);
-      if (!sim.error.empty()) return std::nullopt;
-      for (FitLink l : kFitLinks) {
-        const auto li = static_cast<std::size_t>(l);
-        const auto& m = targets[r].measured[li];
-        if (!m) continue;
-        const double md = m->value[index_of(ResponseStatistic::mean_deviation)];
-        if (!(md > 0)) return std::nullopt;
-        return sim.statistics.link[li]->value[index_of(ResponseStatistic::mean_deviation)] / md;
-      }
-      return std::nullopt;
+    // α3, or α4 without a coupler channel.
+    std::size_t li = 0;
+    while (li + 1 < kFitLinks.size() && !targets[r].measured[li]) ++li;
+    const auto& m = targets[r].measured[li];
+    auto a = [&](const ContactParameters& p) -> std::optional<MatchedMagnification> {
+      const CachedSimulation& sim = long_runs.at(r, p);
+      if (!m || !sim.error.empty() || !sim.statistics.link[li]) return std::nullopt;
+      return matched_magnification(*m, targets[r].turns, *sim.statistics.link[li],
+                                   static_cast<std::size_t>(out.magnification_turns));
     };
     out.magnification_fitted.push_back(a(best));
     out.magnification_prior.push_back(a(prior));
     std::optional<double> share, from_scatter;
-    for (FitLink l : kFitLinks) {
-      const auto li = static_cast<std::size_t>(l);
-      const auto& m = targets[r].measured[li];
-      if (!m) continue;
+    if (m) {
       const double md = m->value[index_of(ResponseStatistic::mean_deviation)];
-      const double rm = static_cast<double>(targets[r].turns);
-      const double sm = m->value[index_of(ResponseStatistic::spread)] / std::sqrt(rm);
+      const double sm = m->value[index_of(ResponseStatistic::spread)] / std::sqrt(static_cast<double>(targets[r].turns));
       if (md > 0) share = sm / md;
-      const CachedSimulation& sim = cache.at(r, best);
+      // Both scatters over the measured number of turns: σ_model / σ_measured.
+      const CachedSimulation& sim = long_runs.at(r, best);
       if (sim.error.empty() && sim.statistics.link[li] && sm > 0)
         from_scatter = sim.statistics.link[li]->value[index_of(ResponseStatistic::spread)] /
-                       std::sqrt(static_cast<double>(o.simulated_turns)) / sm;
-      break;
+                       m->value[index_of(ResponseStatistic::spread)];
     }
     out.measured_scatter_share.push_back(share);
     out.magnification_from_scatter_fitted.push_back(from_scatter);
@@ -369,9 +375,9 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
                         "): the model family does not describe this bearing; the values are effective ones and their "
                         "intervals, which assume the model describes the measurement, are not uncertainties");
   }
-  out.simulations = cache.simulations();
-  out.simulations_on_rank_0 = cache.computed_here();
-  out.turns_simulated = cache.turns_simulated();
+  out.simulations = cache.simulations() + long_runs.simulations();
+  out.simulations_on_rank_0 = cache.computed_here() + long_runs.computed_here();
+  out.turns_simulated = cache.turns_simulated() + long_runs.turns_simulated();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   out.seconds_per_simulation =

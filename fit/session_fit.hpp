@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "fit/matched_magnification.hpp"
 #include "fit/objective_noise.hpp"
 #include "fit/recording_target.hpp"
 
@@ -64,6 +65,9 @@ struct FitOptions {
   /// μ above their noise (docs/fit.md: sensitivity per statistic). Each extra
   /// statistic that carries nothing adds its noise to χ² (≈ √2 per term).
   std::vector<ResponseStatistic> statistics{ResponseStatistic::spread};
+  /// Turns of the runs at the fit and the prior that give the magnification
+  /// factor a (0: kMagnificationTurnsPerMeasuredTurn × the most measured turns).
+  int magnification_turns = 0;
 };
 
 /// Throws InputError naming the option when the box is backwards or out of
@@ -114,15 +118,20 @@ struct FitResult {
   double seconds = 0;        ///< wall time
   double cpu_seconds = 0;    ///< CPU time of the process over the fit (all threads)
   double seconds_per_simulation = 0;  ///< CPU time per simulation (wall × threads / simulations, approx.)
-  /// Time-domain magnification factor a of α3 (α4 without a coupler channel)
-  /// per recording: RMS of the model's averaged deviation from the nominal
-  /// over the measurement's (compare/magnification.hpp), at the fit and at the prior.
-  std::vector<std::optional<double>> magnification_fitted, magnification_prior;
+  /// Magnification factor a of α3 (α4 without a coupler channel) per
+  /// recording, at the fit and at the prior, with its standard error: the
+  /// model's expected RMS of the averaged deviation of the measured number
+  /// of turns (from a run of `magnification_turns` turns) over the
+  /// measurement's (matched_magnification.hpp).
+  std::vector<std::optional<MatchedMagnification>> magnification_fitted, magnification_prior;
+  int magnification_turns = 0;        ///< turns of the runs that give a (after the warm-up)
+  int magnification_simulations = 0; ///< those runs (included in `simulations`)
   /// Averaged over R turns, a deviation that varies from turn to turn leaves
   /// its scatter σ/√R in the average (σ: the spread statistic). Per recording:
   /// (σ/√R)/RMS(averaged deviation) of the measurement (near 1: the averaged
   /// deviation is scatter, not a repeatable curve), and the a that the two
-  /// scatters alone would give at the fit, (σ_model/√R_model)/(σ_meas/√R_meas).
+  /// scatters alone would give at the fit over the same number of turns,
+  /// σ_model/σ_measured.
   std::vector<std::optional<double>> measured_scatter_share, magnification_from_scatter_fitted;
   std::vector<std::string> notes;     ///< not identifiable, model family, …
 };

@@ -197,6 +197,11 @@ json fit_report_record(const ReportFit& fit, const json& records, const std::fil
           row["fit_chi2_prior_per_term"] = fr.value("terms", 0) > 0 ? fr.value("chi2_prior", 0.0) / fr["terms"].get<double>() : 0.0;
           if (fr.contains("magnification_fitted")) row["fit_a_fitted"] = fr["magnification_fitted"];
           if (fr.contains("magnification_prior")) row["fit_a_prior"] = fr["magnification_prior"];
+          // Their standard errors (fits before they were written have none).
+          if (fr.contains("magnification_fitted_standard_error"))
+            row["fit_a_fitted_standard_error"] = fr["magnification_fitted_standard_error"];
+          if (fr.contains("magnification_prior_standard_error"))
+            row["fit_a_prior_standard_error"] = fr["magnification_prior_standard_error"];
         }
     rows.push_back(row);
   }

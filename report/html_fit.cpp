@@ -27,6 +27,13 @@ std::string arrow(const json& before, const json& after, const char* f) {
   return fmt(before, f) + " → <b>" + fmt(after, f) + "</b>";
 }
 
+/// `row[key]` ± `row[key_standard_error]` (the bare value when the fit gave no error).
+std::string with_error(const json& row, const std::string& key) {
+  std::string t = fmt(row.value(key, json()), "%.3g");
+  if (row.contains(key + "_standard_error")) t += " ± " + fmt(row[key + "_standard_error"], "%.2g");
+  return t;
+}
+
 /// One fit's parameters, χ² and notes (the session's, or one recording's).
 void fit_summary(std::ostringstream& h, const json& f, const std::string& id_prefix) {
   const json& prior = f["prior"];
@@ -123,7 +130,9 @@ void fit_section(std::ostringstream& h, const json& data) {
        "varies from turn to turn leaves σ/√R in the average (σ: the turn-to-turn scatter): <i>scatter share</i> = "
        "(σ/√R)/RMS(measured − nominal), near 1 when the measured averaged deviation is that scatter and not a repeatable "
        "curve; <i>a from scatter</i> = the a that the two scatters alone would give; <i>a without scatter</i> takes σ²/R "
-       "out of both mean squares (– when nothing is left).</p><table><tr><th class=\"l\">recording</th><th>turns</th>"
+       "out of both mean squares (– when nothing is left); <i>a in the fit's statistics</i> = what a long model run expects "
+       "of an averaged curve of the measured turns over the measured one, ± its standard error (the measured turns' "
+       "noise: a within about 2 errors of 1 is all a can say).</p><table><tr><th class=\"l\">recording</th><th>turns</th>"
        "<th>a</th><th>RMS difference</th><th>correlation</th><th>scatter share (measured)</th><th>a from scatter</th>"
        "<th>a without scatter</th><th>a in the fit's statistics</th><th>χ²/statistic in the fit</th></tr>";
   bool scatter_dominated = false;
@@ -136,7 +145,8 @@ void fit_section(std::ostringstream& h, const json& data) {
       << arrow(p["correlation"], f["correlation"], "%.3f") << "</td><td>" << fmt(share, "%.2f") << "</td><td>"
       << arrow(p["a_from_scatter_alone"], f["a_from_scatter_alone"], "%.3g") << "</td><td>"
       << arrow(p["a_without_scatter"], f["a_without_scatter"], "%.3g") << "</td><td>"
-      << (r.contains("fit_a_fitted") ? arrow(r.value("fit_a_prior", json()), r["fit_a_fitted"], "%.3g") : std::string("–"))
+      << (r.contains("fit_a_fitted") ? with_error(r, "fit_a_prior") + " → <b>" + with_error(r, "fit_a_fitted") + "</b>"
+                                     : std::string("–"))
       << "</td><td>"
       << (r.contains("fit_chi2_per_term") ? arrow(r["fit_chi2_prior_per_term"], r["fit_chi2_per_term"], "%.3g") : std::string("–"))
       << "</td></tr>";

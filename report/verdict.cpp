@@ -149,7 +149,10 @@ std::string fit_sentence(const VerdictInputs& in) {
                   num(f.restitution_high, 3) + "]" + (f.friction ? ", μ = " + num(*f.friction, 3) : std::string()) + " (" +
                   f.contact + ")";
   if (!f.restitution_identifiable) s += ", but e is not identifiable from these recordings";
-  if (f.magnification_fitted) s += "; with it a = " + num(*f.magnification_fitted, 3) + " for this recording";
+  if (f.magnification_fitted)
+    s += "; with it a = " + num(*f.magnification_fitted, 3) +
+         (f.magnification_fitted_standard_error ? " ± " + num(*f.magnification_fitted_standard_error, 2) : std::string()) +
+         " for this recording";
   if (std::abs(f.restitution - in.restitution) > 0.01)
     s += "; set [theory] restitution = " + num(f.restitution, 3) + (f.friction ? " and friction_coefficient = " + num(*f.friction, 3) : std::string()) +
          " in session.toml to report with the fitted values";
@@ -295,7 +298,10 @@ VerdictInputs verdict_inputs(const json& r, const json* fit, const std::string& 
     f.friction = opt(path(*fit, {"fitted", "friction_coefficient"}));
     const std::string name = r.value("name", "");
     for (const json& fr : path(*fit, {"recordings"}).is_array() ? path(*fit, {"recordings"}) : json::array())
-      if (fr.value("file", "") == name) f.magnification_fitted = opt(path(fr, {"magnification_fitted"}));
+      if (fr.value("file", "") == name) {
+        f.magnification_fitted = opt(path(fr, {"magnification_fitted"}));
+        f.magnification_fitted_standard_error = opt(path(fr, {"magnification_fitted_standard_error"}));
+      }
     in.fit = f;
   }
   return in;

@@ -67,6 +67,7 @@ struct VerdictFit {
   std::string contact;
   std::optional<double> friction;
   std::optional<double> magnification_fitted;  ///< this recording's a at the fitted parameters
+  std::optional<double> magnification_fitted_standard_error;  ///< its standard error (absent in older fits)
 };
 
 struct VerdictInputs {

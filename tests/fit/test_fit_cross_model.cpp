@@ -10,6 +10,8 @@
 // the impact model, fits within its noise and says nothing of the kind.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -72,6 +74,15 @@ TEST(FitCrossModel, CompliantSessionFittedWithTheImpactModelSaysTheModelFamilyDi
   const nlohmann::json impact = fit_of(dir, "impact", "contact = \"smooth\"");
   EXPECT_LT(impact["chi2_per_term"].get<double>(), 4.0) << impact.dump(1);
   EXPECT_FALSE(says_model_family_differs(impact)) << impact.dump(1);
+  // The magnification factor with its standard error, from runs of 8× the
+  // measured turns: the impact model fitted to its own recording gives a
+  // within 3 errors of 1.
+  const nlohmann::json& rec = impact["recordings"][0];
+  ASSERT_TRUE(rec.contains("magnification_fitted_standard_error")) << rec.dump(1);
+  const double a = rec["magnification_fitted"].get<double>(), se = rec["magnification_fitted_standard_error"].get<double>();
+  EXPECT_GT(se, 0.0);
+  EXPECT_LT(std::abs(a - 1.0), 3 * se) << "a = " << a << " ± " << se;
+  EXPECT_EQ(impact["magnification_turns"].get<int>(), 8 * rec["measured_turns"].get<int>());
 }
 
 }  // namespace

@@ -52,7 +52,8 @@ json fit_json(const std::vector<std::string>& files) {
   json recs = json::array();
   for (const auto& f : files)
     recs.push_back({{"file", f}, {"chi2", 2.0}, {"terms", 2}, {"chi2_per_term", 1.0}, {"chi2_prior", 90.0},
-                    {"magnification_fitted", 1.05}, {"magnification_prior", 3.5}});
+                    {"magnification_fitted", 1.05}, {"magnification_fitted_standard_error", 0.21},
+                    {"magnification_prior", 3.5}, {"magnification_prior_standard_error", 0.7}});
   return {{"parameters",
            {{"restitution", {{"value", kTrueRestitution}, {"low", 0.0}, {"high", 0.137}, {"identifiable", true},
                              {"profile", {{0.0, 2.1}, {0.25, 9.0}, {0.5, 30.0}, {1.0, 180.0}}}}},
@@ -121,6 +122,8 @@ TEST_F(ReportFit, SectionShowsTheNumbersOfFitJson) {
   EXPECT_NE(html_->find("a note of the fit"), std::string::npos);
   EXPECT_NE(html_->find("id=\"fit-profile-restitution\""), std::string::npos);
   EXPECT_NE(html_->find("id=\"fit-r0\""), std::string::npos);
+  // The fit's a with its standard error, prior → fitted.
+  EXPECT_NE(html_->find("3.5 ± 0.7 → <b>1.05 ± 0.21</b>"), std::string::npos);
   // The theory at the prior is the session's; the fitted one the fit's.
   const json& rec = (*summary_)["recordings"][0];
   EXPECT_EQ(rec["theory"]["settings"]["restitution"].get<double>(), 1.0);

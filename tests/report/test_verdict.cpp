@@ -205,7 +205,7 @@ json record() {
 TEST(VerdictInputs, ReadFromTheRecordAndTheFit) {
   const json fit = {{"parameters", {{"restitution", {{"value", 0.4}, {"low", 0.3}, {"high", 0.5}, {"identifiable", false}}}}},
                     {"fitted", {{"restitution", 0.4}, {"contact", "stick-slip"}, {"friction_coefficient", 0.1}}},
-                    {"recordings", {{{"file", "r.flac"}, {"magnification_fitted", 0.97}}}}};
+                    {"recordings", {{{"file", "r.flac"}, {"magnification_fitted", 0.97}, {"magnification_fitted_standard_error", 0.2}}}}};
   const VerdictInputs in = verdict_inputs(record(), &fit, "fit/fit.json");
   EXPECT_TRUE(in.setup_checked);
   EXPECT_EQ(in.revolutions, 30u);
@@ -220,6 +220,10 @@ TEST(VerdictInputs, ReadFromTheRecordAndTheFit) {
   EXPECT_FALSE(in.fit->restitution_identifiable);
   EXPECT_EQ(*in.fit->friction, 0.1);
   EXPECT_EQ(*in.fit->magnification_fitted, 0.97);
+  EXPECT_EQ(*in.fit->magnification_fitted_standard_error, 0.2);
+  // a is said with its error: from a few dozen turns it is noise-limited.
+  EXPECT_NE(verdict_of(in).agreement.sentence.find("with it a = 0.97 ± 0.2 for this recording"), std::string::npos)
+      << verdict_of(in).agreement.sentence;
   EXPECT_FALSE(verdict_inputs(record()).fit);
   // The JSON carries levels and sentences.
   const json j = verdict_json(verdict_of(in));
