@@ -110,10 +110,13 @@ class DriftCheck final : public RevolutionObserver {
 int main(int argc, char** argv) {
   bool thesis = false;
   unsigned threads = 1;
+  std::size_t chunk_revolutions = 0;  // 0: the planned default
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--thesis") == 0) thesis = true;
     else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) threads = static_cast<unsigned>(std::atoi(argv[++i]));
+    else if (std::strcmp(argv[i], "--chunk-revolutions") == 0 && i + 1 < argc)
+      chunk_revolutions = static_cast<std::size_t>(std::atol(argv[++i]));
     else args.emplace_back(argv[i]);
   }
   const double seconds = !args.empty() ? std::atof(args[0].c_str()) : 3600.0;
@@ -134,6 +137,7 @@ int main(int argc, char** argv) {
         o.progress = false;
         o.filter.mains_hz = 50;
         o.threads = t;
+        o.chunk_revolutions = chunk_revolutions;
         DriftCheck drift(setup, 500, total_revs);
         const auto t0 = std::chrono::steady_clock::now();
         const RecordingAnalysis r = analyze_recording(file, {}, o, &drift);
@@ -166,6 +170,8 @@ int main(int argc, char** argv) {
       if (!got) return 1;
       std::printf("  child: %.1f s wall, %.1f s CPU, %.2f M frames/s (wall), peak resident %.0f MB; result digest %016llx\n",
                   a.wall_s, a.cpu_s, frames / a.wall_s / 1e6, a.peak_mb, static_cast<unsigned long long>(digest));
+      std::printf("  child CPU: user %.2f s, system %.2f s, %ld minor page faults, %ld involuntary switches\n", a.user_s,
+                  a.system_s, a.minor_faults, a.involuntary_switches);
       if (t == 1) {
         wall_one = a.wall_s, digest_one = digest;
       } else {
