@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,14 @@ struct Digest {
     for (double x : v) add(x);
   }
 };
+
+/// The 1, 5 and 15 minute load averages (/proc/loadavg), for the ratio line.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
 
 /// Every number of the result that the threads could change.
 void add_result(Digest& d, const RecordingAnalysis& r) {
@@ -126,8 +135,9 @@ int main(int argc, char** argv) {
   const auto frames = static_cast<double>(std::llround(seconds * 25600));
   std::printf("file: %s, %.0f MB, %.0f frames\n", file.c_str(), double(std::filesystem::file_size(file)) / 1e6, frames);
   const std::size_t total_revs = static_cast<std::size_t>(seconds * 350 / 60);
+  const std::string load_before = load_average();
   for (int method = 0; method < (thesis ? 2 : 1); ++method) {
-    double wall_one = 0;
+    double wall_one = 0, cpu_one = 0;
     std::uint64_t digest_one = 0;
     for (const unsigned t : threads > 1 ? std::vector<unsigned>{1, threads} : std::vector<unsigned>{1}) {
       int digest_pipe[2];
@@ -173,10 +183,15 @@ int main(int argc, char** argv) {
       std::printf("  child CPU: user %.2f s, system %.2f s, %ld minor page faults, %ld involuntary switches\n", a.user_s,
                   a.system_s, a.minor_faults, a.involuntary_switches);
       if (t == 1) {
-        wall_one = a.wall_s, digest_one = digest;
+        wall_one = a.wall_s, cpu_one = a.cpu_s, digest_one = digest;
       } else {
         std::printf("  %u threads / 1 thread: wall %.1f / %.1f s = %.2f; results %s\n", t, a.wall_s, wall_one,
                     a.wall_s / wall_one, digest == digest_one ? "identical (bit for bit)" : "DIFFER");
+        // The line to quote (wall-clock ratio: meaningful only with the load beside it).
+        std::printf("RATIO %.0f s analysis, %u threads / 1: %.2f (target <= 0.6); CPU %.2f / %.2f s; load average %s -> "
+                    "%s on %ld cores\n",
+                    seconds, t, a.wall_s / wall_one, a.cpu_s, cpu_one, load_before.c_str(), load_average().c_str(),
+                    sysconf(_SC_NPROCESSORS_ONLN));
         if (digest != digest_one) return 1;
       }
     }
