@@ -94,9 +94,11 @@ void round_numbers(json& j) {
       return;
     }
     char buf[32];
-    const auto written = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6);
+    const auto written = std::to_chars(buf, buf + sizeof buf - 1, v, std::chars_format::general, 6);
+    *written.ptr = '\0';
     double rounded = 0;
-    std::from_chars(buf, written.ptr, rounded);
+    if (std::from_chars(buf, written.ptr, rounded).ec != std::errc())
+      rounded = std::strtod(buf, nullptr);  // (not seen for a finite double: six digits stay in range)
     j = rounded;
   } else if (j.is_structured()) {
     for (auto& e : j) round_numbers(e);

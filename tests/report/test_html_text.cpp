@@ -33,7 +33,10 @@ TEST(RoundNumbers, EqualsPrintfAndStrtodBitForBit) {
   for (double v : {0.0, -0.0, 1.0, -1.0, 0.5, 123456.5, 1234565.0, 9.999995, 9.9999949999, 1e-320, 5e-324,
                    std::numeric_limits<double>::max(), std::numeric_limits<double>::min(), 0.1, 2.0 / 3.0})
     values.push_back(v);
-  for (int i = 0; i < 100000; ++i) values.push_back(mantissa(rng) * std::pow(10.0, exponent(rng)));
+  for (double v : {-std::numeric_limits<double>::max(), std::numeric_limits<double>::denorm_min(), 1.79769e308})
+    values.push_back(v);
+  for (int i = 0; i < 100000; ++i)
+    if (const double v = mantissa(rng) * std::pow(10.0, exponent(rng)); std::isfinite(v)) values.push_back(v);
   for (int i = 0; i < 100000; ++i) {  // any bit pattern that is a finite number
     std::uint64_t b = bits(rng);
     double v = 0;
