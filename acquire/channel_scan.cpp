@@ -47,16 +47,29 @@ void check_finite(const RecordingInfo& info, const double* frame, std::uint64_t 
 /// thread hands over each block's pulse values (checked finite) and goes on
 /// with the next block; the thread takes them in the file's order, so every
 /// sum and count is the one of one thread. At most kQueued blocks wait, so
-/// memory stays bounded when the thread falls behind.
+/// memory stays bounded when the thread falls behind. The blocks' vectors
+/// go back to a pool when done and are refilled (no fresh pages per block).
 class PulseScanThread {
  public:
   explicit PulseScanThread(std::function<void(std::span<const double>)> work)
       : work_(std::move(work)), thread_([this] { run(); }) {}
   ~PulseScanThread() { finish(); }
-  void post(std::vector<double> values) {
-    std::unique_lock lock(mutex_);
-    changed_.wait(lock, [&] { return queue_.size() < kQueued; });
-    queue_.push_back(std::move(values));
+  /// Copies `values` into a vector of the pool and queues it.
+  void post(std::span<const double> values) {
+    std::vector<double> copy;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return queue_.size() < kQueued; });  // (one poster: still true below)
+      if (!spare_.empty()) {
+        copy = std::move(spare_.back());
+        spare_.pop_back();
+      }
+    }
+    copy.assign(values.begin(), values.end());
+    {
+      const std::lock_guard lock(mutex_);
+      queue_.push_back(std::move(copy));
+    }
     changed_.notify_all();
   }
   /// Waits until every block posted is done.
@@ -83,12 +96,15 @@ class PulseScanThread {
       }
       changed_.notify_all();
       work_(values);
+      const std::lock_guard lock(mutex_);
+      spare_.push_back(std::move(values));
     }
   }
   std::function<void(std::span<const double>)> work_;
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::vector<double>> queue_;
+  std::vector<std::vector<double>> spare_;  // done, to be refilled
   bool finishing_ = false;
   std::thread thread_;
 };
@@ -134,7 +150,7 @@ ScanResult scan_pass(const BlockStream& stream, std::span<const AccelerometerInp
                                                   std::uint64_t first) {
       accelerometer_part(block, frames, first);
       pulse_values(block, frames);
-      pulse_thread.post(volts);  // a copy: the next block refills `volts`
+      pulse_thread.post(volts);  // copied: the next block refills `volts`
     });
     pulse_thread.finish();
   } else {

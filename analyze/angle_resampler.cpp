@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/reused_vector.hpp"
 #include "common/units.hpp"
 
 namespace fourbar {
@@ -27,7 +28,13 @@ RevolutionResampler::RevolutionResampler(std::span<const double> angle, std::siz
                                          double direction)
     : n_(n), samples_(angle.size()), start_(start), direction_(direction < 0 ? -1.0 : 1.0) {
   if (n < 4) throw InputError("resampling: need at least 4 points per revolution, got " + std::to_string(n));
+  plan(angle);
+}
+
+void RevolutionResampler::plan(std::span<const double> angle) {
   if (angle.size() < 4) throw InputError("resampling: need at least 4 samples");
+  const std::size_t n = n_;
+  samples_ = angle.size();
   // Work in ψ = direction·θ, increasing.
   const double d = direction_;
   for (std::size_t i = 0; i < angle.size(); ++i) {
@@ -44,14 +51,14 @@ RevolutionResampler::RevolutionResampler(std::span<const double> angle, std::siz
   const std::size_t last = angle.size() - 1;
   const double front = d * angle[0] - d * (angle[1] - angle[0]);
   const double back = d * angle[last] + d * (angle[last] - angle[last - 1]);
-  const double psi0 = d * start;
+  const double psi0 = d * start_;
   first_ = static_cast<long>(std::ceil((front - psi0) / units::kTwoPi));
   const long end =
       static_cast<long>(std::floor((back - psi0) / units::kTwoPi - static_cast<double>(n - 1) / static_cast<double>(n)));
   if (end < first_) throw InputError("resampling: the samples do not cover one whole crank revolution");
   revs_ = static_cast<std::size_t>(end - first_ + 1);
-  base_.resize(revs_ * n_);
-  weights_.resize(4 * revs_ * n_);
+  resize_reusing(base_, revs_ * n_);
+  resize_reusing(weights_, 4 * revs_ * n_);
   std::size_t j = 0;  // ψ[j] <= ψ_grid < ψ[j + 1]
   for (std::size_t g = 0; g < revs_ * n_; ++g) {
     const double psi = d * grid_angle_rad(g / n_, g % n_);
@@ -68,18 +75,23 @@ double RevolutionResampler::grid_angle_rad(std::size_t r, std::size_t k) const {
 }
 
 std::vector<double> RevolutionResampler::resample(std::span<const double> channel) const {
+  std::vector<double> out;
+  resample(channel, out);
+  return out;
+}
+
+void RevolutionResampler::resample(std::span<const double> channel, std::vector<double>& out) const {
   if (channel.size() != samples_) {
     std::ostringstream os;
     os << "resampling: channel has " << channel.size() << " samples, the crank-angle track " << samples_;
     throw InputError(os.str());
   }
-  std::vector<double> out(base_.size());
+  resize_reusing(out, base_.size());
   for (std::size_t g = 0; g < base_.size(); ++g) {
     const double* x = channel.data() + base_[g];
     const double* w = weights_.data() + 4 * g;
     out[g] = w[0] * x[0] + w[1] * x[1] + w[2] * x[2] + w[3] * x[3];
   }
-  return out;
 }
 
 namespace {

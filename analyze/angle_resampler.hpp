@@ -26,6 +26,11 @@ class RevolutionResampler {
   RevolutionResampler(std::span<const double> crank_angle_rad, std::size_t grid_points_per_rev, double start_angle_rad,
                       double direction = 1.0);
 
+  /// Plans the same grid (points per revolution, start, direction) for
+  /// another track, as the constructor would, in the memory of this one
+  /// (no allocation once it has held a track as long: for chunk after chunk).
+  void plan(std::span<const double> crank_angle_rad);
+
   std::size_t grid_points_per_rev() const { return n_; }
   std::size_t revolutions() const { return revs_; }
   /// Index of the first covered revolution (θ_start ± 2π·first is its start).
@@ -36,6 +41,8 @@ class RevolutionResampler {
   /// revolutions() × N values, row-major (row = revolution), of a channel with
   /// one value per crank-angle sample.
   std::vector<double> resample(std::span<const double> channel) const;
+  /// The same into `out` (resized; its memory reused).
+  void resample(std::span<const double> channel, std::vector<double>& out) const;
 
  private:
   std::size_t n_, revs_ = 0, samples_;

@@ -43,6 +43,18 @@ void ChunkedAnalysis::give_back(std::unique_ptr<ChunkWorkspace> w) {
   spare_workspaces_.push_back(std::move(w));
 }
 
+std::unique_ptr<ChunkedAnalysis::ChunkOutcome> ChunkedAnalysis::take_outcome() {
+  {
+    const std::lock_guard lock(workspace_mutex_);
+    if (!spare_outcomes_.empty()) {
+      auto out = std::move(spare_outcomes_.back());
+      spare_outcomes_.pop_back();
+      return out;
+    }
+  }
+  return std::make_unique<ChunkOutcome>();
+}
+
 ChunkedAnalysis::ChunkJob ChunkedAnalysis::make_job(std::size_t rb, bool segment_end) const {
   const std::size_t sa = rev_start(next_rev_), sb = segment_end ? end_ : rev_start(rb);
   const std::size_t begin = std::max(base_, sa >= overlap_ ? sa - overlap_ : 0);
@@ -83,7 +95,8 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
   if (threads_ <= 1) {
     const ChunkJob job = make_job(rb, segment_end);
     auto w = take_workspace();
-    ChunkOutcome outcome = transform(job, *w);
+    auto outcome = take_outcome();
+    transform(job, *w, *outcome);
     give_back(std::move(w));
     deliver(std::move(outcome));
     next_rev_ = rb;
@@ -91,7 +104,7 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
     return;
   }
   if (in_flight_.size() >= threads_) {  // the oldest first
-    std::future<ChunkOutcome> oldest = std::move(in_flight_.front());
+    std::future<std::unique_ptr<ChunkOutcome>> oldest = std::move(in_flight_.front());
     in_flight_.pop_front();
     deliver(oldest.get());
   }
@@ -103,7 +116,8 @@ void ChunkedAnalysis::process_chunk(std::size_t rb, bool segment_end) {
   if (!segment_end) keep_from(rb, &job.owned);
   in_flight_.push_back(std::async(std::launch::async, [this, job = std::move(job)]() mutable {
     auto w = take_workspace();
-    ChunkOutcome outcome = transform(job, *w);
+    auto outcome = take_outcome();
+    transform(job, *w, *outcome);
     give_back(std::move(w));
     const std::lock_guard lock(workspace_mutex_);
     spare_buffers_.push_back(std::move(job.owned));
@@ -116,7 +130,7 @@ void ChunkedAnalysis::drain(bool wait) {
   while (!in_flight_.empty() &&
          (wait || in_flight_.front().wait_for(std::chrono::seconds(0)) == std::future_status::ready)) {
     // Popped before it is delivered: a chunk that failed is not waited for again.
-    std::future<ChunkOutcome> front = std::move(in_flight_.front());
+    std::future<std::unique_ptr<ChunkOutcome>> front = std::move(in_flight_.front());
     in_flight_.pop_front();
     deliver(front.get());
   }

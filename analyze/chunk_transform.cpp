@@ -12,10 +12,11 @@
 #include <algorithm>
 
 #include "analyze/integration.hpp"
+#include "common/reused_vector.hpp"
 
 namespace fourbar {
 
-ChunkedAnalysis::ChunkOutcome ChunkedAnalysis::transform(const ChunkJob& job, ChunkWorkspace& w) const {
+void ChunkedAnalysis::transform(const ChunkJob& job, ChunkWorkspace& w, ChunkOutcome& out) const {
   const std::size_t n = job.theta.size(), c0 = job.c0, c1 = job.c1;
   const Rig& rig = *manifest_.rig;
   const CrankTrack crank{job.theta, job.speed, job.accel};
@@ -24,17 +25,22 @@ ChunkedAnalysis::ChunkOutcome ChunkedAnalysis::transform(const ChunkJob& job, Ch
     return job.samples[slot];
   };
 
-  RecordAnalyzer analyzer(rig, crank, fs_, grid_, tables_);
+  // The workspace's analyzer planned for this chunk; `out` is an earlier
+  // chunk's outcome (or new): every field is set here, in memory reused.
+  if (w.analyzer) w.analyzer->reset(crank);
+  else w.analyzer.emplace(rig, crank, fs_, grid_, tables_);
+  RecordAnalyzer& analyzer = *w.analyzer;
   const RevolutionResampler& grid = analyzer.grid();
   const std::size_t links = channels_.links.size();
-  ChunkOutcome out;
   out.rev_begin = job.rev_begin, out.rev_end = job.rev_end, out.segment_end = job.segment_end;
   out.first_revolution = grid.first_revolution();
   out.revolutions = grid.revolutions();
-  out.speed = analyzer.crank_speed_grid();
+  const std::vector<double>& speed = analyzer.crank_speed_grid();
+  assign_reusing(out.speed, speed.begin(), speed.end());
   out.grids.resize(links);
   out.normal_grid.resize(links);
   out.spectrum_samples.resize(links);
+  out.spectrum_powers.resize(links);
   const AnalyzeOptions& o = result_.options;
   const bool trapezoid = o.integration == IntegrationMethod::trapezoid;
   if (trapezoid) {
@@ -43,51 +49,54 @@ ChunkedAnalysis::ChunkOutcome ChunkedAnalysis::transform(const ChunkJob& job, Ch
     out.c0 = c0, out.c1 = c1;
     out.resampler = grid;
   }
+  const std::size_t segment = spectra_.front()->segment_length();
+  if (!w.spectrum_fft || w.spectrum_fft->size() != segment) w.spectrum_fft = std::make_unique<RealFft>(segment);
   for (std::size_t j = 0; j < links; ++j) {
     const LinkChannels& lc = channels_.links[j];
     const auto reading = channel(*lc.tangential);
     // α per sample, the samples of its spectrum (the chunk's own), filtered.
     // (Working arrays are the workspace's: reused, not allocated, chunk by chunk.)
-    w.alpha.resize(n);
+    resize_reusing(w.alpha, n);
     const std::span<double> alpha(w.alpha);
     if (o.conversion == ConversionMethod::full)
       analyzer.converted(lc.tangential->mount, reading, {}, alpha);
     else
       thesis_angular_acceleration(rig, lc.link, 1, mean_speed_rad_s_, crank.angle_rad, reading, alpha);
-    out.spectrum_samples[j].assign(alpha.begin() + static_cast<std::ptrdiff_t>(c0),
-                                   alpha.begin() + static_cast<std::ptrdiff_t>(c1));
-    out.spectrum_powers.push_back(spectra_[j]->segment_powers(out.spectrum_samples[j], job.stream_at));
+    assign_reusing(out.spectrum_samples[j], alpha.begin() + static_cast<std::ptrdiff_t>(c0),
+                   alpha.begin() + static_cast<std::ptrdiff_t>(c1));
+    spectra_[j]->segment_powers(out.spectrum_samples[j], job.stream_at, *w.spectrum_fft, out.spectrum_powers[j]);
     // The normal channel's offset term takes α before the band-pass: its
     // low-pass then filters that term as the rest of ω², and each sample
     // needs α only there (no second overlap for the α filter).
-    if (lc.normal) w.unfiltered.assign(alpha.begin(), alpha.end());
+    if (lc.normal) assign_reusing(w.unfiltered, alpha.begin(), alpha.end());
     filter(false, crank.angle_rad, alpha, job.at_start, job.segment_end, w);
     // ω: per revolution on the grid, or the running trapezoid in time (its
     // start carries from the previous chunk: shifted and resampled in deliver()).
     if (trapezoid) {
-      out.omega_samples[j].resize(n);
+      resize_reusing(out.omega_samples[j], n);
       cumulative_trapezoid(alpha, 1.0 / fs_, 0.0, out.omega_samples[j]);
       out.nominal_start_omega[j] = (*tables_)[lc.link].motion(crank.at(c0)).omega_rad_s;
-      out.grids[j].alpha_grid = grid.resample(alpha);
+      grid.resample(alpha, out.grids[j].alpha_grid);
     } else {
-      out.grids[j] = analyzer.on_grid(lc.link, alpha,
-                                      o.integration == IntegrationMethod::closed_trapezoid
-                                          ? PeriodicMethod::closed_trapezoid
-                                          : PeriodicMethod::spectral,
-                                      o.integration == IntegrationMethod::spectral);
+      analyzer.on_grid(lc.link, alpha,
+                       o.integration == IntegrationMethod::closed_trapezoid ? PeriodicMethod::closed_trapezoid
+                                                                            : PeriodicMethod::spectral,
+                       o.integration == IntegrationMethod::spectral, out.grids[j]);
     }
     // The normal channel's ω².
     if (lc.normal) {
-      w.w2.resize(n);
+      resize_reusing(w.w2, n);
       analyzer.converted(lc.normal->mount, channel(*lc.normal), w.unfiltered, w.w2);
       filter(true, crank.angle_rad, w.w2, job.at_start, job.segment_end, w);
-      out.normal_grid[j] = grid.resample(w.w2);
+      grid.resample(w.w2, out.normal_grid[j]);
+    } else {
+      out.normal_grid[j].clear();
     }
   }
-  return out;
 }
 
-void ChunkedAnalysis::deliver(ChunkOutcome&& c) {
+void ChunkedAnalysis::deliver(std::unique_ptr<ChunkOutcome> outcome) {
+  ChunkOutcome& c = *outcome;
   const std::size_t links = channels_.links.size();
   for (std::size_t j = 0; j < links; ++j) spectra_[j]->push(c.spectrum_samples[j], c.spectrum_powers[j]);
   // The running trapezoid: ω from the previous chunk's end (or the nominal
@@ -98,7 +107,7 @@ void ChunkedAnalysis::deliver(ChunkOutcome&& c) {
     const double shift = start - omega[c.c0];
     for (double& wv : omega) wv += shift;
     if (!c.segment_end) omega_carry_[j] = omega[c.c1];
-    c.grids[j].omega_grid = c.resampler->resample(omega);
+    c.resampler->resample(omega, c.grids[j].omega_grid);
   }
 
   // The chunk's own revolutions, in order.
@@ -122,6 +131,8 @@ void ChunkedAnalysis::deliver(ChunkOutcome&& c) {
     }
     accept(std::move(p));
   }
+  const std::lock_guard lock(workspace_mutex_);
+  spare_outcomes_.push_back(std::move(outcome));
 }
 
 void ChunkedAnalysis::filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start,

@@ -24,6 +24,13 @@
 // result is bit for bit the one of one thread. Memory: `threads` more copies
 // of a chunk's samples and working arrays.
 //
+// Nothing of a chunk's size is allocated chunk by chunk: the segment
+// buffers, the workspaces (filter blocks and FFTW buffers, the grid and the
+// working arrays) and the chunks' outcomes go back to pools when a chunk is
+// done and are refilled by the next, so their memory is paged in once
+// (fresh pages for every chunk cost the kernel as much as a tenth of the
+// analysis, and more with chunks on several threads).
+//
 // The class is split by concept, one file each:
 //   chunked_analysis.cpp   the driver: settings into members (analysis_settings,
 //                          chunk_plan), filter blocks, averagers, result layout
@@ -94,9 +101,12 @@ class ChunkedAnalysis final : public AcquisitionSink {
     std::size_t c0 = 0, c1 = 0;
     std::optional<RevolutionResampler> resampler;
   };
-  /// A worker's filter blocks and working arrays (one per chunk in flight).
+  /// A worker's filter blocks, grid and working arrays (one per chunk in
+  /// flight), made once and reused chunk after chunk.
   struct ChunkWorkspace {
     std::unique_ptr<FftFilter> alpha_filter, normal_filter;  // windowed: linear convolution, made once
+    std::optional<RecordAnalyzer> analyzer;                   // the chunk's grid (reset per chunk)
+    std::unique_ptr<RealFft> spectrum_fft;                    // the spectrum segments' transform
     std::vector<double> alpha, unfiltered, w2;
   };
 
@@ -135,11 +145,14 @@ class ChunkedAnalysis final : public AcquisitionSink {
   std::unique_ptr<ChunkWorkspace> take_workspace();
   void give_back(std::unique_ptr<ChunkWorkspace> w);
   // chunk_transform.cpp
-  /// The chunk's transform: reads only the job, the settings and `w`, so
-  /// chunks may run on several threads at once.
-  ChunkOutcome transform(const ChunkJob& job, ChunkWorkspace& w) const;
-  /// What carries over from chunk to chunk, in order.
-  void deliver(ChunkOutcome&& outcome);
+  /// The chunk's transform into `out` (an outcome of an earlier chunk
+  /// reused, or new): reads only the job, the settings and `w`, so chunks
+  /// may run on several threads at once.
+  void transform(const ChunkJob& job, ChunkWorkspace& w, ChunkOutcome& out) const;
+  /// What carries over from chunk to chunk, in order; the outcome then goes
+  /// back to the pool.
+  void deliver(std::unique_ptr<ChunkOutcome> outcome);
+  std::unique_ptr<ChunkOutcome> take_outcome();
   /// Filters one chunk's values in place; a segment end is continued
   /// periodically in the crank angle first (crank_periodic_extension).
   void filter(bool normal, std::span<const double> angle, std::span<double> x, bool at_start, bool at_end,
@@ -189,7 +202,8 @@ class ChunkedAnalysis final : public AcquisitionSink {
   std::mutex workspace_mutex_;
   std::vector<std::unique_ptr<ChunkWorkspace>> spare_workspaces_;
   std::vector<std::vector<std::vector<double>>> spare_buffers_;  // detached buffers, back from their chunks
-  std::deque<std::future<ChunkOutcome>> in_flight_;
+  std::vector<std::unique_ptr<ChunkOutcome>> spare_outcomes_;    // delivered outcomes, to be filled again
+  std::deque<std::future<std::unique_ptr<ChunkOutcome>>> in_flight_;
 };
 
 }  // namespace fourbar

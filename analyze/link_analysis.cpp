@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/reused_vector.hpp"
 
 namespace fourbar {
 
@@ -51,6 +52,14 @@ RecordAnalyzer::RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double f
   if (!tables_) tables_ = std::make_shared<const RigTables>(rig);
 }
 
+void RecordAnalyzer::reset(const CrankTrack& crank) {
+  check_crank_track(crank);
+  if (crank.size() != crank_.size()) filters_.clear();  // made for the old length
+  crank_ = crank;
+  grid_.plan(crank.angle_rad);
+  grid_.resample(crank.speed_rad_s, speed_grid_);
+}
+
 void RecordAnalyzer::filter(const FilterSpec& spec, Boundary boundary, std::span<double> x) {
   auto cached = std::find_if(filters_.begin(), filters_.end(),
                              [&](const CachedFilter& c) { return c.boundary == boundary && same(c.spec, spec); });
@@ -79,12 +88,18 @@ void RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const 
 LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method,
                                   bool keep_slope) {
   LinkGrids out;
+  on_grid(link, alpha, method, keep_slope, out);
+  return out;
+}
+
+void RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha, PeriodicMethod method, bool keep_slope,
+                             LinkGrids& out) {
   const std::size_t N = grid_.grid_points_per_rev();
   out.grid_points_per_rev = N;
   out.revolutions = grid_.revolutions();
   out.first_revolution = grid_.first_revolution();
-  out.alpha_grid = grid_.resample(alpha);
-  out.omega_grid.resize(out.alpha_grid.size());
+  grid_.resample(alpha, out.alpha_grid);
+  resize_reusing(out.omega_grid, out.alpha_grid.size());
   // Integrate in ψ = direction·θ2 (increasing): dω/dψ = α/(direction·ω2),
   // and over one turn Δθ_link/Δψ = direction·turns.
   PeriodicIntegrator integrator(N);
@@ -96,7 +111,6 @@ LinkGrids RecordAnalyzer::on_grid(SensedLink link, std::span<const double> alpha
     integrator.integrate(method, std::span(out.alpha_grid).subspan(at, N), psi_speed, turns,
                          std::span(out.omega_grid).subspan(at, N), keep_slope);
   }
-  return out;
 }
 
 LinkAnalysis RecordAnalyzer::tangential(const AccelerometerMount& mount, std::span<const double> reading,

@@ -83,6 +83,12 @@ class RecordAnalyzer {
   RecordAnalyzer(const Rig& rig, const CrankTrack& crank, double sample_rate_hz, const AngleGridSpec& grid,
                  std::shared_ptr<const RigTables> tables = nullptr);
 
+  /// Moves the analyzer to another record of the same rig, rate and grid
+  /// (the next chunk of a long one), as if made anew for it, in the memory
+  /// of this one: the grid and the crank speed on it are planned again
+  /// without allocating once a record as long was seen.
+  void reset(const CrankTrack& crank);
+
   const RevolutionResampler& grid() const { return grid_; }
   /// Crank speed ω2 on the grid, revolutions × N.
   const std::vector<double>& crank_speed_grid() const { return speed_grid_; }
@@ -114,6 +120,9 @@ class RecordAnalyzer {
   /// integrated to ω (periodic, the constant from the mechanism's topology).
   LinkGrids on_grid(SensedLink link, std::span<const double> alpha_rad_s2, PeriodicMethod method,
                     bool keep_slope = false);
+  /// The same into `out` (its vectors' memory reused).
+  void on_grid(SensedLink link, std::span<const double> alpha_rad_s2, PeriodicMethod method, bool keep_slope,
+               LinkGrids& out);
 
  private:
   const Rig& rig_;

@@ -1,5 +1,6 @@
 #include "analyze/spectrum.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <numeric>
 #include <sstream>
@@ -140,16 +141,25 @@ void SpectrumAverager::transform_segment(std::span<const double> segment, RealFf
 
 SpectrumAverager::SegmentPowers SpectrumAverager::segment_powers(std::span<const double> x, std::size_t at) const {
   SegmentPowers out;
+  RealFft fft(m_);
+  segment_powers(x, at, fft, out);
+  return out;
+}
+
+void SpectrumAverager::segment_powers(std::span<const double> x, std::size_t at, RealFft& fft, SegmentPowers& out) const {
+  assert(fft.size() == m_);
   out.at = at;
   out.first = (at + step_ - 1) / step_;
-  RealFft fft(m_);
+  std::size_t count = 0;
   for (std::size_t k = out.first; k * step_ + m_ <= at + x.size(); ++k) {
     transform_segment(x.subspan(k * step_ - at, m_), fft);
     const auto s = fft.spectrum();
-    std::vector<double>& p = out.power.emplace_back(s.size());
+    if (out.power.size() <= count) out.power.emplace_back();
+    std::vector<double>& p = out.power[count++];
+    p.resize(s.size());
     for (std::size_t b = 0; b < p.size(); ++b) p[b] = std::norm(s[b]);
   }
-  return out;
+  out.power.resize(count);
 }
 
 void SpectrumAverager::run_segment(const SegmentPowers* powers) {

@@ -71,6 +71,9 @@ class SpectrumAverager {
   /// The segments inside `x`, a piece of the stream starting at position
   /// `at`. Reads only the window and the sizes: safe on several threads at once.
   SegmentPowers segment_powers(std::span<const double> x, std::size_t at) const;
+  /// The same into `out` (its vectors' memory reused), transformed with
+  /// `fft` (segment_length() points, the caller's: one per thread).
+  void segment_powers(std::span<const double> x, std::size_t at, RealFft& fft, SegmentPowers& out) const;
   /// push(x) where the segments of `powers` are summed from it instead of
   /// transformed again: bit for bit the same sums. `x` must be the piece
   /// `powers` was computed from, at position() (else std::logic_error).

@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,14 @@ struct Digest {
     for (double x : v) add(x);
   }
 };
+
+/// The 1, 5 and 15 minute load averages (/proc/loadavg), for the ratio line.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
 
 /// Every number of the result that the threads could change.
 void add_result(Digest& d, const RecordingAnalysis& r) {
@@ -110,10 +119,13 @@ class DriftCheck final : public RevolutionObserver {
 int main(int argc, char** argv) {
   bool thesis = false;
   unsigned threads = 1;
+  std::size_t chunk_revolutions = 0;  // 0: the planned default
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--thesis") == 0) thesis = true;
     else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) threads = static_cast<unsigned>(std::atoi(argv[++i]));
+    else if (std::strcmp(argv[i], "--chunk-revolutions") == 0 && i + 1 < argc)
+      chunk_revolutions = static_cast<std::size_t>(std::atol(argv[++i]));
     else args.emplace_back(argv[i]);
   }
   const double seconds = !args.empty() ? std::atof(args[0].c_str()) : 3600.0;
@@ -123,8 +135,9 @@ int main(int argc, char** argv) {
   const auto frames = static_cast<double>(std::llround(seconds * 25600));
   std::printf("file: %s, %.0f MB, %.0f frames\n", file.c_str(), double(std::filesystem::file_size(file)) / 1e6, frames);
   const std::size_t total_revs = static_cast<std::size_t>(seconds * 350 / 60);
+  const std::string load_before = load_average();
   for (int method = 0; method < (thesis ? 2 : 1); ++method) {
-    double wall_one = 0;
+    double wall_one = 0, cpu_one = 0;
     std::uint64_t digest_one = 0;
     for (const unsigned t : threads > 1 ? std::vector<unsigned>{1, threads} : std::vector<unsigned>{1}) {
       int digest_pipe[2];
@@ -134,6 +147,7 @@ int main(int argc, char** argv) {
         o.progress = false;
         o.filter.mains_hz = 50;
         o.threads = t;
+        o.chunk_revolutions = chunk_revolutions;
         DriftCheck drift(setup, 500, total_revs);
         const auto t0 = std::chrono::steady_clock::now();
         const RecordingAnalysis r = analyze_recording(file, {}, o, &drift);
@@ -166,11 +180,18 @@ int main(int argc, char** argv) {
       if (!got) return 1;
       std::printf("  child: %.1f s wall, %.1f s CPU, %.2f M frames/s (wall), peak resident %.0f MB; result digest %016llx\n",
                   a.wall_s, a.cpu_s, frames / a.wall_s / 1e6, a.peak_mb, static_cast<unsigned long long>(digest));
+      std::printf("  child CPU: user %.2f s, system %.2f s, %ld minor page faults, %ld involuntary switches\n", a.user_s,
+                  a.system_s, a.minor_faults, a.involuntary_switches);
       if (t == 1) {
-        wall_one = a.wall_s, digest_one = digest;
+        wall_one = a.wall_s, cpu_one = a.cpu_s, digest_one = digest;
       } else {
         std::printf("  %u threads / 1 thread: wall %.1f / %.1f s = %.2f; results %s\n", t, a.wall_s, wall_one,
                     a.wall_s / wall_one, digest == digest_one ? "identical (bit for bit)" : "DIFFER");
+        // The line to quote (wall-clock ratio: meaningful only with the load beside it).
+        std::printf("RATIO %.0f s analysis, %u threads / 1: %.2f (target <= 0.6); CPU %.2f / %.2f s; load average %s -> "
+                    "%s on %ld cores\n",
+                    seconds, t, a.wall_s / wall_one, a.cpu_s, cpu_one, load_before.c_str(), load_average().c_str(),
+                    sysconf(_SC_NPROCESSORS_ONLN));
         if (digest != digest_one) return 1;
       }
     }

@@ -30,6 +30,9 @@ namespace fourbar::bench {
 struct ChildResult {
   int status = -1;
   double wall_s = 0, cpu_s = 0, peak_mb = 0;
+  double user_s = 0, system_s = 0;  ///< cpu_s split: user and kernel (page faults, I/O)
+  long minor_faults = 0;            ///< pages first touched (fresh memory)
+  long involuntary_switches = 0;    ///< times the scheduler took a CPU away (machine load)
 };
 
 /// Runs `work` in a child process: its exit status, wall and CPU time, and
@@ -45,8 +48,11 @@ inline ChildResult in_child(const std::function<int()>& work) {
   ChildResult r;
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.cpu_s = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-            1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  r.user_s = double(usage.ru_utime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec);
+  r.system_s = double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec);
+  r.cpu_s = r.user_s + r.system_s;
+  r.minor_faults = usage.ru_minflt;
+  r.involuntary_switches = usage.ru_nivcsw;
   r.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
   return r;
 }

@@ -27,6 +27,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # cluster with InfiniBand leave them unset (UCX), see docs/cluster.md.
 export OMPI_MCA_pml="${OMPI_MCA_pml:-ob1}" OMPI_MCA_btl="${OMPI_MCA_btl:-self,vader}"
 now() { date +%s.%N; }
+load() { cut -d' ' -f1-3 /proc/loadavg; }
+load_before=$(load)
 run() {  # label, command...; prints and records the wall time
   local label=$1; shift
   local t0 t1; t0=$(now); "$@" >/dev/null; t1=$(now)
@@ -53,6 +55,9 @@ awk -v a="${times[threads1]}" -v b="${times[threads2]}" 'BEGIN{printf "2 threads
 [ -n "${times[ranks2]:-}" ] && awk -v a="${times[ranks1]}" -v b="${times[ranks2]}" -v l="${times[launch]}" 'BEGIN{
   printf "2 ranks vs 1:   %.2fx\n", a / b
   printf "2 ranks vs 1 without mpirun'"'"'s own start (%.3f s, in both): %.2fx\n", l, (a - l) / (b - l) }'
+# The line to quote (wall-clock ratio: meaningful only with the load beside it).
+[ -n "${times[ranks2]:-}" ] && awk -v a="${times[ranks1]}" -v b="${times[ranks2]}" -v t="$turns" -v l0="$load_before" -v l1="$(load)" -v c="$(nproc)" \
+  'BEGIN{ printf "RATIO sweep 24 x %d turns, 2 MPI ranks / 1: %.2fx (target >= 1.8); load average %s -> %s on %d cores\n", t, a / b, l0, l1, c }'
 awk -v t="${times[threads1]}" -v turns="$turns" 'BEGIN{
   per_turn = t / (24 * (turns + 2));
   case_s = per_turn * 1002;

@@ -57,6 +57,31 @@ TEST(Resampler, RejectsBadAngleTracks) {
   EXPECT_THROW(rs.resample(wrong), InputError);
 }
 
+TEST(Resampler, PlannedAgainInItsMemoryEqualsOneMadeAnew) {
+  // Three tracks one after the other (long, short, longer: the chunks of a
+  // recording) through one resampler, against a resampler made for each.
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> jitter(0.9, 1.1);
+  RevolutionResampler reused(std::vector<double>{0.0, -1.0, -2.0, -3.0, -4.0, -5.0, -6.0, -7.0}, 90, 0.1, -1.0);
+  std::vector<double> into{42.0};
+  for (const int samples : {9000, 3000, 12000}) {
+    std::vector<double> angle, value;
+    double th = -2.0;
+    for (int i = 0; i < samples; ++i) {
+      th -= 0.0061 * jitter(rng);  // clockwise, uneven steps
+      angle.push_back(th);
+      value.push_back(std::sin(2 * th) + 0.1 * jitter(rng));
+    }
+    reused.plan(angle);
+    const RevolutionResampler fresh(angle, 90, 0.1, -1.0);
+    EXPECT_EQ(reused.first_revolution(), fresh.first_revolution());
+    ASSERT_EQ(reused.revolutions(), fresh.revolutions());
+    reused.resample(value, into);
+    EXPECT_EQ(into, fresh.resample(value)) << samples << " samples";  // bit for bit
+  }
+  EXPECT_THROW(reused.plan(std::vector<double>{0.0, -1.0, 1.0, -2.0}), InputError);
+}
+
 TEST(Averaging, MeanAndSpreadPerAngle) {
   const std::size_t n = 90, revs = 40;
   std::mt19937 rng(5);
