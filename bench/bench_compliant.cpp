@@ -9,9 +9,12 @@
 // shared; the damping law's calibration is solved once per process before,
 // and timed on its own), and the share of the simulated time in contact.
 // The same table for the three-mode model (Odeint) with e = 0.5 is printed
-// beside it.
+// beside it. --integrators adds the compliant model under CVODE's Adams
+// modes (fixed-point and Newton iteration, orders up to 12) beside BDF, at
+// tolerances 1e-9 … 1e-11 (docs/compliant.md "Why BDF"; slow: the Adams
+// modes need 10⁵–10⁶ steps).
 //
-//   bench_compliant [--quick] [--stiffness K] [--csv FILE]
+//   bench_compliant [--quick] [--integrators] [--stiffness K] [--csv FILE]
 //   bench_compliant [--stiffness K] --profile TOL N   (N runs of one case, for a profiler; prints the
 //                                                      integrator's counters)
 
@@ -23,6 +26,7 @@
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "common/units.hpp"
@@ -40,6 +44,14 @@ struct Trial {
   std::vector<double> alpha3;
   std::size_t impacts = 0, steps = 0;
   double contact_share = 0;  ///< of the simulated time
+  std::string counters;      ///< the compliant integrator's
+};
+
+struct Path {
+  const char* name;
+  bool compliant;
+  StiffMethod method;
+  bool own_reference;  ///< else the previous path's reference (the same model)
 };
 
 double period() { return units::kTwoPi / units::rpm_to_rad_s(kRpm); }
@@ -59,10 +71,11 @@ Trial run(Sim& sim, bool sample) {
   out.impacts = d.impacts;
   out.steps = d.steps;
   out.contact_share = d.time_following_s / (d.time_following_s + d.time_free_s);
+  if constexpr (std::is_same_v<Sim, CompliantSimulator>) out.counters = sim.integrator_counters();
   return out;
 }
 
-Trial simulate(bool compliant, double stiffness, double tol, bool sample) {
+Trial simulate(bool compliant, double stiffness, double tol, bool sample, StiffMethod method = StiffMethod::bdf) {
   const ClearanceModel model(thesis_rig(), kXi);
   const ConstantSpeedCrank crank(0.0, units::rpm_to_rad_s(kRpm));
   ClearanceSettings s;
@@ -71,24 +84,12 @@ Trial simulate(bool compliant, double stiffness, double tol, bool sample) {
   if (compliant) {
     s.model = ClearanceKind::compliant;
     s.compliant.stiffness_N_per_m_n = stiffness;
+    s.compliant.method = method;
     CompliantSimulator sim(model, crank, s);
     return run(sim, sample);
   }
   ClearanceSimulator sim(model, crank, s);
   return run(sim, sample);
-}
-
-std::string counters(double stiffness, double tol) {
-  const ClearanceModel model(thesis_rig(), kXi);
-  const ConstantSpeedCrank crank(0.0, units::rpm_to_rad_s(kRpm));
-  ClearanceSettings s;
-  s.restitution = kE;
-  s.tolerance = tol;
-  s.model = ClearanceKind::compliant;
-  s.compliant.stiffness_N_per_m_n = stiffness;
-  CompliantSimulator sim(model, crank, s);
-  run(sim, false);
-  return sim.integrator_counters();
 }
 
 double cpu_seconds() {
@@ -97,12 +98,12 @@ double cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-double ms_per_turn(bool compliant, double stiffness, double tol, int repeats) {
-  simulate(compliant, stiffness, tol, false);
+double ms_per_turn(const Path& p, double stiffness, double tol, int repeats) {
+  simulate(p.compliant, stiffness, tol, false, p.method);
   double best = 1e300;
   for (int r = 0; r < repeats; ++r) {
     const double t0 = cpu_seconds();
-    simulate(compliant, stiffness, tol, false);
+    simulate(p.compliant, stiffness, tol, false, p.method);
     best = std::min(best, cpu_seconds() - t0);
   }
   return 1e3 * best / 2;
@@ -120,13 +121,14 @@ double rel_rms(const std::vector<double>& a, const std::vector<double>& ref, std
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, integrators = false;
   double stiffness = 1e10;
   std::string csv_path = "bench_compliant.csv";
   double profile_tol = 0;
   int profile_runs = 0;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--integrators")) integrators = true;
     else if (!std::strcmp(argv[i], "--stiffness") && i + 1 < argc) stiffness = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv_path = argv[++i];
     else if (!std::strcmp(argv[i], "--profile") && i + 2 < argc) {
@@ -136,19 +138,26 @@ int main(int argc, char** argv) {
     }
   }
   if (profile_runs > 0) {
-    std::size_t steps = 0;
-    for (int r = 0; r < profile_runs; ++r) steps = simulate(true, stiffness, profile_tol, false).steps;
-    std::printf("%d runs of 2 turns, %zu steps each; %s\n", profile_runs, steps,
-                counters(stiffness, profile_tol).c_str());
+    Trial t;
+    for (int r = 0; r < profile_runs; ++r) t = simulate(true, stiffness, profile_tol, false);
+    std::printf("%d runs of 2 turns, %zu steps each; %s\n", profile_runs, t.steps, t.counters.c_str());
     return 0;
   }
   const std::vector<double> tols =
-      quick ? std::vector<double>{1e-6, 1e-8} : std::vector<double>{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
+      quick ? std::vector<double>{1e-6, 1e-8}
+            : std::vector<double>{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
+  const std::vector<double> adams_tols = quick ? std::vector<double>{1e-8} : std::vector<double>{1e-9, 1e-10, 1e-11};
+  std::vector<Path> paths{{"compliant", true, StiffMethod::bdf, true}};
+  if (integrators) {
+    paths.push_back({"adams-fp", true, StiffMethod::adams_fixed_point, false});
+    paths.push_back({"adams-newt", true, StiffMethod::adams_newton, false});
+  }
+  paths.push_back({"three-mode", false, StiffMethod::bdf, true});
   const int repeats = quick ? 1 : 3;
   const std::size_t short_n = kSamplesPerTurn / 12;
   std::ofstream csv(csv_path);
   csv << "model,stiffness_N_per_m_n,tolerance,ms_per_rev,alpha3_rel_rms_turn,alpha3_rel_rms_30deg,impacts,steps,"
-         "contact_share\n";
+         "contact_share,rhs\n";
   {
     const double t0 = cpu_seconds();
     (void)hysteresis_factor(DampingLaw::calibrated, kE, 1.5);
@@ -157,21 +166,26 @@ int main(int argc, char** argv) {
   }
   std::printf("thesis rig, 350 rpm, xi = 0.254 mm, e = 0.5, no friction, K = %.3g; alpha3 error over turn 1 and its "
               "first 30 deg\n", stiffness);
-  std::printf("%-11s %-9s %10s %14s %14s %8s %8s %9s\n", "model", "tol", "ms/rev", "relRMS turn", "relRMS 30deg",
-              "impacts", "steps", "contact");
-  for (bool compliant : {true, false}) {
-    const char* name = compliant ? "compliant" : "three-mode";
-    const Trial ref = simulate(compliant, stiffness, 1e-13, true);
-    std::printf("%s: reference at tolerance 1e-13 (%zu impacts, %zu steps)\n", name, ref.impacts, ref.steps);
-    for (double tol : tols) {
-      const Trial t = simulate(compliant, stiffness, tol, true);
+  std::printf("%-11s %-9s %10s %14s %14s %8s %8s %9s  %s\n", "model", "tol", "ms/rev", "relRMS turn",
+              "relRMS 30deg", "impacts", "steps", "contact", "integrator (compliant)");
+  Trial ref;
+  for (const Path& p : paths) {
+    // One reference per model: the compliant model's is BDF at 1e-13, for every CVODE mode.
+    if (p.own_reference) {
+      ref = simulate(p.compliant, stiffness, 1e-13, true);
+      std::printf("%s: reference at tolerance 1e-13 (%zu impacts, %zu steps)\n", p.name, ref.impacts, ref.steps);
+    }
+    const bool adams = p.method != StiffMethod::bdf;
+    for (double tol : adams ? adams_tols : tols) {
+      const Trial t = simulate(p.compliant, stiffness, tol, true, p.method);
       const double err = rel_rms(t.alpha3, ref.alpha3, kSamplesPerTurn);
       const double err_short = rel_rms(t.alpha3, ref.alpha3, short_n);
-      const double ms = ms_per_turn(compliant, stiffness, tol, repeats);
-      std::printf("%-11s %-9.0e %10.3f %14.3e %14.3e %8zu %8zu %8.1f%%\n", name, tol, ms, err, err_short, t.impacts,
-                  t.steps, 100 * t.contact_share);
-      csv << name << "," << (compliant ? stiffness : 0.0) << "," << tol << "," << ms << "," << err << "," << err_short
-          << "," << t.impacts << "," << t.steps << "," << t.contact_share << "\n";
+      const double ms = ms_per_turn(p, stiffness, tol, adams ? 1 : repeats);
+      std::printf("%-11s %-9.0e %10.3f %14.3e %14.3e %8zu %8zu %8.1f%%  %s\n", p.name, tol, ms, err, err_short,
+                  t.impacts, t.steps, 100 * t.contact_share, t.counters.c_str());
+      csv << p.name << "," << (p.compliant ? stiffness : 0.0) << "," << tol << "," << ms << "," << err << ","
+          << err_short << "," << t.impacts << "," << t.steps << "," << t.contact_share << ","
+          << (t.counters.empty() ? std::string() : t.counters.substr(4, t.counters.find(',') - 4)) << "\n";
     }
   }
   std::printf("wrote %s\n", csv_path.c_str());

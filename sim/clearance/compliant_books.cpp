@@ -104,7 +104,7 @@ void CompliantSimulator::Impl::track_contact(double ta, double tb) {
   if (!ep.active || !(tb > ta)) return;
   const double w = scale.deviation.speed_rad_s;
   auto at = [&](double time) {
-    const ContactState k = evaluate(time, state_at(time));
+    const ContactState k = evaluate_contact(time, state_at(time));
     books.diag.max_penetration = std::max(books.diag.max_penetration, k.penetration_m / model.clearance_m());
     ep.rec.max_penetration_m = std::max(ep.rec.max_penetration_m, k.penetration_m);
     return k;
@@ -126,7 +126,7 @@ void CompliantSimulator::Impl::track_contact(double ta, double tb) {
     const double rate_b = kb.bearing.normal_speed_m_s;
     if (ep.phase == 0 && rate_b < 0) ep.phase = 1;
     if (ep.phase == 1 && rate_b > 0) {
-      auto rate = [&](double x) { return evaluate(x, state_at(x)).bearing.normal_speed_m_s; };
+      auto rate = [&](double x) { return evaluate_contact(x, state_at(x)).bearing.normal_speed_m_s; };
       const double rate_a = rate(ta);
       const double tc = rate_a < 0 ? locate_root(rate, ta, tb, rate_a, rate_b) : ta;
       ep.impact_impulse_Ns = state_at(tc)[kImpulseN] * scale.force_N / w;

@@ -19,13 +19,11 @@ const NominalMotion& CompliantSimulator::Impl::nominal_at(double time) const {
   return e.motion;
 }
 
-ContactState CompliantSimulator::Impl::evaluate(double time, const StiffState& y) const {
+ContactState CompliantSimulator::Impl::evaluate_contact(double time, const StiffState& y) const {
   ContactState k;
   k.nominal = nominal_at(time);
-  const CrankState& c = k.nominal.crank;
   k.links = deviation_links(k.nominal, scale.deviation, y.data());
-  const Vec2 u2 = k.nominal.pose.u2;
-  k.bearing = model.bearing(c, u2, k.links);
+  k.bearing = model.bearing(k.nominal.crank, k.nominal.pose.u2, k.links);
   k.penetration_m = -k.bearing.gap_m;
   if (k.penetration_m > 0) {
     // A contact whose onset was not seen (entered and left inside one step)
@@ -36,6 +34,13 @@ ContactState CompliantSimulator::Impl::evaluate(double time, const StiffState& y
     k.normal_force_N = normal_force_N(law, k.penetration_m, k.bearing.normal_speed_m_s, chi);
     k.friction_force_N = friction_force_N(friction, k.normal_force_N, k.bearing.tangential_speed_m_s);
   }
+  return k;
+}
+
+ContactState CompliantSimulator::Impl::evaluate(double time, const StiffState& y) const {
+  ContactState k = evaluate_contact(time, y);
+  const CrankState& c = k.nominal.crank;
+  const Vec2 u2 = k.nominal.pose.u2;
   if (film.viscosity_Pa_s > 0) {
     // ε, ε̇ and ε·ω̄ = ε·(ω3 + ω4) − 2·ε·φ̇ with |e|·φ̇ = v_t + ω4·|e| (film_force.hpp).
     const double xi = model.clearance_m();

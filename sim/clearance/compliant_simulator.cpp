@@ -22,7 +22,8 @@ CompliantSimulator::Impl::Impl(const ClearanceModel& m, const CrankMotion& c, co
       crank(c),
       settings(s),
       // A dry bearing leaves the film's quadrature out (the error norm, so the steps, as without it).
-      integ(s.tolerance, kCoupled, s.compliant.film.viscosity_Pa_s > 0 ? kStiffSize : std::size_t{kFilmLoss}) {
+      integ(s.tolerance, kCoupled, s.compliant.film.viscosity_Pa_s > 0 ? kStiffSize : std::size_t{kFilmLoss},
+            s.compliant.method) {
   const CompliantSettings& k = s.compliant;
   if (!(k.stiffness_N_per_m_n > 0))
     throw RunError("compliant clearance model: no contact stiffness (the scene resolves it; see docs/clearance-model.md)");

@@ -118,6 +118,10 @@ struct CompliantSimulator::Impl final : StiffSystem {
 
   // ---- equations (compliant_equations.cpp) ----
   ContactState evaluate(double time, const StiffState& y) const;
+  /// The part of evaluate() up to the contact forces (nominal motion, links,
+  /// bearing, penetration, normal and friction force): no film, no
+  /// accelerations, no crank torque. For the contact's books.
+  ContactState evaluate_contact(double time, const StiffState& y) const;
   void rhs(double time, const StiffState& y, StiffState& dy) override;
   double witness(double time, const StiffState& y) override;
   /// The state of a link motion at `time`, quadratures taken from `q`.

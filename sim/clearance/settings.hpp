@@ -24,6 +24,15 @@ enum class IntegratorKind {
   odeint  ///< Boost.Odeint, Dormand–Prince 5(4) with dense output
 };
 
+/// Which CVODE mode advances the compliant model. BDF with Newton iteration
+/// is the product's (the contact is stiff: docs/compliant.md "Why BDF"); the
+/// two Adams modes exist for bench_compliant's comparison and have no scene key.
+enum class StiffMethod {
+  bdf,                ///< BDF orders 1–5, Newton iteration, dense Jacobian
+  adams_fixed_point,  ///< Adams–Moulton orders 1–12, fixed-point (functional) iteration
+  adams_newton        ///< Adams–Moulton orders 1–12, Newton iteration, dense Jacobian
+};
+
 /// Which clearance model: the thesis's three modes with instantaneous
 /// impacts, or a continuous (compliant) contact force.
 enum class ClearanceKind { three_mode, compliant };
@@ -51,6 +60,7 @@ struct CompliantSettings {
   /// lubricant_viscosity_Pa_s; radius, length and clearance resolved from the
   /// rig when the scene is loaded. viscosity_Pa_s = 0: a dry bearing.
   JournalFilm film;
+  StiffMethod method = StiffMethod::bdf;  ///< benches only (no scene key)
   bool viscosity_given = false;
   bool film_keys_given = false;  ///< film or film_break_eccentricity given (need a lubricant)
 };

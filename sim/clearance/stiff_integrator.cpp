@@ -5,6 +5,7 @@
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -43,6 +44,7 @@ struct StiffIntegrator::Cvode {
   N_Vector y = nullptr, dky = nullptr;
   SUNMatrix jac = nullptr;
   SUNLinearSolver ls = nullptr;
+  SUNNonlinearSolver fixed_point = nullptr;  ///< Adams with functional iteration only
   void* mem = nullptr;
   double tol = 0;
   bool initialised = false;
@@ -91,7 +93,7 @@ int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector,
 
 }  // namespace
 
-StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size)
+StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size, StiffMethod method)
     : cv_(std::make_unique<Cvode>()), coupled_(coupled), size_(size) {
   if (!(coupled <= size && size <= kStiffSize)) throw std::logic_error("StiffIntegrator: size out of range");
   Cvode& c = *cv_;
@@ -101,17 +103,22 @@ StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::siz
   c.y = N_VNew_Serial(n, c.ctx);
   c.dky = N_VNew_Serial(n, c.ctx);
   N_VConst(0.0, c.y);
-  c.mem = CVodeCreate(CV_BDF, c.ctx);
+  c.mem = CVodeCreate(method == StiffMethod::bdf ? CV_BDF : CV_ADAMS, c.ctx);
   if (!c.mem) throw RunError("CVODE (BDF): cannot create the integrator");
-  c.jac = SUNDenseMatrix(n, n, c.ctx);
-  c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
+  if (method == StiffMethod::adams_fixed_point) {
+    c.fixed_point = SUNNonlinSol_FixedPoint(c.y, 0, c.ctx);
+  } else {
+    c.jac = SUNDenseMatrix(n, n, c.ctx);
+    c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
+  }
 }
 
 StiffIntegrator::~StiffIntegrator() {
   Cvode& c = *cv_;
   CVodeFree(&c.mem);
-  SUNLinSolFree(c.ls);
-  SUNMatDestroy(c.jac);
+  if (c.fixed_point) SUNNonlinSolFree(c.fixed_point);
+  if (c.ls) SUNLinSolFree(c.ls);
+  if (c.jac) SUNMatDestroy(c.jac);
   N_VDestroy(c.y);
   N_VDestroy(c.dky);
   SUNContext_Free(&c.ctx);
@@ -128,8 +135,12 @@ void StiffIntegrator::reset(StiffSystem& system, double t0, const StiffState& y0
     check(CVodeInit(c.mem, rhs_fn, t0, c.y), "init");
     check(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
     check(CVodeSetUserData(c.mem, this), "user data");
-    check(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
-    check(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
+    if (c.fixed_point) {
+      check(CVodeSetNonlinearSolver(c.mem, c.fixed_point), "nonlinear solver");
+    } else {
+      check(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
+      check(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
+    }
     check(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
     check(CVodeSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
     check(CVodeRootInit(c.mem, 1, root_fn), "root finding");

@@ -1,6 +1,6 @@
 #pragma once
 // SUNDIALS CVODE in its stiff mode — BDF orders 1–5, Newton iteration with a
-// dense direct linear solver — for the compliant contact model, whose contact
+// dense direct linear solver (or, for comparison, Adams–Moulton) — for the compliant contact model, whose contact
 // phases are stiff (a Hertz spring of 1e10 N/m^1.5 with hysteresis damping
 // on a 0.05 kg effective mass). One step at a time with dense output, and
 // CVODE's root finding on one witness (the penetration) so that contact
@@ -14,6 +14,8 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+
+#include "sim/clearance/settings.hpp"
 
 namespace fourbar {
 
@@ -33,7 +35,9 @@ class StiffIntegrator {
   /// `tolerance` relative and absolute on the scaled state; the Jacobian
   /// differences the first `coupled` components.
   /// `size` ≤ kStiffSize: the components integrated (the rest read as 0).
-  StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size = kStiffSize);
+  /// `method`: BDF (the default) or one of the Adams modes (settings.hpp).
+  StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size = kStiffSize,
+                  StiffMethod method = StiffMethod::bdf);
   ~StiffIntegrator();
   StiffIntegrator(const StiffIntegrator&) = delete;
   StiffIntegrator& operator=(const StiffIntegrator&) = delete;

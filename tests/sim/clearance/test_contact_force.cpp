@@ -35,9 +35,9 @@ struct Outcome {
 };
 
 /// Integrates from onset to release; time is scaled by length/speed.
-Outcome collide(Collision& c, double tol) {
+Outcome collide(Collision& c, double tol, StiffMethod method = StiffMethod::bdf) {
   c.time_s = c.length_m / c.speed_m_s;
-  StiffIntegrator integ(tol, 2);
+  StiffIntegrator integ(tol, 2, kStiffSize, method);
   StiffState y{};
   y[1] = 1.0;
   integ.reset(c, 0.0, y);
@@ -51,6 +51,21 @@ Outcome collide(Collision& c, double tol) {
   }
   ADD_FAILURE() << "no release";
   return {};
+}
+
+TEST(ContactForce, AdamsModesMatchTheLinearSpringDashpotToo) {
+  // The comparison modes of the same integrator (bench_compliant --integrators):
+  // root finding and dense output as with BDF, on a collision that is not stiff.
+  const double m = 0.05, k = 2e7, v = 0.02, zeta = 0.3;
+  const double wn = std::sqrt(k / m), c = 2 * zeta * std::sqrt(k * m), wd = wn * std::sqrt(1 - zeta * zeta);
+  for (StiffMethod method : {StiffMethod::adams_fixed_point, StiffMethod::adams_newton}) {
+    Collision col;
+    col.mass_kg = m, col.speed_m_s = v, col.length_m = v / wn;
+    col.force = [&](double pen, double rate) { return k * pen + c * rate; };
+    const Outcome o = collide(col, 1e-12, method);
+    EXPECT_NEAR(o.duration_s / (M_PI / wd), 1.0, 1e-8) << static_cast<int>(method);
+    EXPECT_NEAR(o.rebound_m_s / (v * std::exp(-zeta * wn * M_PI / wd)), 1.0, 1e-8) << static_cast<int>(method);
+  }
 }
 
 TEST(ContactForce, LinearSpringDashpotMatchesItsExactSolution) {
