@@ -20,9 +20,8 @@ std::pair<std::string, std::string> split_unit(const std::string& column) {
   return {column.substr(0, p), column.substr(p + 1)};
 }
 
-std::vector<std::string> comments(const json& session, const json& r) {
-  std::vector<std::string> c{"made by fourbar " + session["version"].get<std::string>() + ": " +
-                             session["command"].get<std::string>()};
+std::vector<std::string> comments(const std::string& made_by, const json& r) {
+  std::vector<std::string> c{made_by};
   for (const json& f : r["files"])
     c.push_back("input: " + f["path"].get<std::string>() + " sha256 " +
                 (f["sha256"].is_null() ? std::string("-") : f["sha256"].get<std::string>()));
@@ -38,9 +37,9 @@ std::string cell(const json& v) {
   return {};
 }
 
-void write_recording(const json& session, const json& r, const std::filesystem::path& dir, bool csv_comments) {
+void write_recording(const std::string& made_by, const json& r, const std::filesystem::path& dir, bool csv_comments) {
   const std::string stem = std::filesystem::path(r["name"].get<std::string>()).stem().string();
-  const auto notes = csv_comments ? comments(session, r) : std::vector<std::string>{};
+  const auto notes = csv_comments ? comments(made_by, r) : std::vector<std::string>{};
 
   // Per-angle series.
   std::vector<std::string> cols{"crank_deg"};
@@ -101,12 +100,16 @@ void write_recording(const json& session, const json& r, const std::filesystem::
 
 }  // namespace
 
-void write_series_files(const json& session, const std::filesystem::path& out_dir, bool csv_comments) {
-  const std::filesystem::path dir = out_dir / "series";
-  ensure_output_dir(dir);
-  for (const json& r : session["recordings"])
-    if (is_analysed(r)) write_recording(session, r, dir, csv_comments);
+std::string series_made_by(const std::string& version, const std::string& command) {
+  return "made by fourbar " + version + ": " + command;
+}
 
+void write_recording_series(const json& r, const std::filesystem::path& out_dir, const std::string& made_by,
+                            bool csv_comments) {
+  if (is_analysed(r)) write_recording(made_by, r, out_dir / "series", csv_comments);
+}
+
+void write_session_series(const json& session, const std::filesystem::path& out_dir, bool csv_comments) {
   std::vector<std::string> c;
   if (csv_comments)
     c.push_back("made by fourbar " + session["version"].get<std::string>() + ": " + session["command"].get<std::string>());

@@ -14,11 +14,22 @@
 // that does not exist (null in summary.json) is an empty cell.
 
 #include <filesystem>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 namespace fourbar {
 
-void write_series_files(const nlohmann::json& session, const std::filesystem::path& out_dir, bool csv_comments);
+/// The `# made by` line of the CSV files (with csv_comments).
+std::string series_made_by(const std::string& version, const std::string& command);
+
+/// One recording's series/<stem>*.csv from its record (nothing for a failed
+/// recording) into out_dir/series/, which must exist: written as soon as the
+/// recording is done, on its worker.
+void write_recording_series(const nlohmann::json& recording, const std::filesystem::path& out_dir,
+                            const std::string& made_by, bool csv_comments);
+
+/// summary.csv and session_severity.csv from the whole session record.
+void write_session_series(const nlohmann::json& session, const std::filesystem::path& out_dir, bool csv_comments);
 
 }  // namespace fourbar

@@ -153,6 +153,10 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   analysis.threads = static_cast<unsigned>(std::max<std::size_t>(1, cores / jobs));
   {
     std::atomic<std::size_t> next{0}, done{0};
+    // Each recording's series are written by the worker that made it, as it
+    // finishes (the session's tables, the summary and the page come after all).
+    const std::string made_by = series_made_by(kVersion, o.command_line);
+    ensure_output_dir(out_dir / "series");
     Progress bar("report", n, o.progress);
     std::mutex io;
     std::exception_ptr failure;
@@ -160,6 +164,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
       for (std::size_t i; (i = next.fetch_add(1)) < n;) {
         try {
           computed[i] = record_of(i);
+          write_recording_series(computed[i], out_dir, made_by, o.csv_comments);
         } catch (...) {  // an output that cannot be written: stop every worker, rethrow below
           const std::lock_guard lock(io);
           if (!failure) failure = std::current_exception();
@@ -224,12 +229,13 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     out.fit = fit->file;
   }
 
-  // Outputs: series first, the report last (each written whole or not at all).
-  // With more than one core the page is put together on a thread of its own
-  // while the series and the summary are written (the same text either way).
+  // Outputs: each recording's series as it finished (above), then the
+  // session's tables, the summary, the report last (each written whole or not
+  // at all). With more than one core the page is put together on a thread of
+  // its own while the tables and the summary are written (the same text either way).
   std::future<std::string> html;
   if (cores > 1) html = std::async(std::launch::async, [&session] { return render_html_report(session); });
-  write_series_files(session, out_dir, o.csv_comments);
+  write_session_series(session, out_dir, o.csv_comments);
   out.summary = out_dir / "summary.json";
   write_text_file(out.summary, json_text(summary_of(session), 2) + "\n");
   write_text_file(o.out_html, html.valid() ? html.get() : render_html_report(session));
