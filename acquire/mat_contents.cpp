@@ -1,4 +1,4 @@
-#include "acquire/mat_reader.hpp"
+#include "acquire/mat_contents.hpp"
 
 #include <hdf5.h>
 #include <matio.h>
@@ -109,18 +109,6 @@ std::string v5_matrix_damage(const std::function<std::uint32_t(std::size_t)>& u3
   return {};
 }
 
-/// Whether the file starts with the 128-byte header of MATLAB v5/v7 (version
-/// 0x0100) or v7.3 (0x0200, the HDF5 file's user block): version and
-/// byte-order mark "IM" or "MI" at bytes 124-127.
-bool has_mat_header(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  unsigned char h[128];
-  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return false;
-  const bool im = h[126] == 'I' && h[127] == 'M', mi = h[126] == 'M' && h[127] == 'I';
-  // The version is written in the file's byte order, as the mark is ("IM" read on this machine).
-  const unsigned version = im ? h[124] | h[125] << 8 : h[124] << 8 | h[125];
-  return (im || mi) && (version == 0x0100 || version == 0x0200);
-}
 
 /// The largest dimensions or name part a variable's header may claim (a
 /// MATLAB name has at most 63 characters; 4096 bytes are 1024 dimensions).
@@ -217,12 +205,12 @@ struct VarInfo {
   std::size_t width() const { return std::min(rows, cols); }
 };
 
-class MatReader final : public Reader {
+/// Reads the whole file in its constructor; take() hands the result over.
+class MatLoader {
  public:
-  MatReader(const std::filesystem::path& file, const ReaderOptions& options) {
+  MatLoader(const std::filesystem::path& file, const ReaderOptions& options) {
     info_.file = file;
     const std::string f = file.string();
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // HDF5 (v7.3) prints no error stacks: the errors below say it
     Mat_LogInitFunc("fourbar", [](int, char*) {});  // nor libmatio its warnings
     // v4 (MATLAB before 1996) has no header to check a file against, and
     // libmatio spends seconds and gigabytes on a damaged one (fuzzing) —
@@ -231,12 +219,20 @@ class MatReader final : public Reader {
     // is checked first.
     const std::string v4 = f + ": a MATLAB v4 file (or not a MATLAB file at all): not read; save it from MATLAB as "
                                "v7 (save -v7) or v7.3";
-    if (!has_mat_header(file)) throw InputError(v4);
+    const unsigned header = mat_header_version(file);
+    if (header == 0) throw InputError(v4);
+    // HDF5 prints no error stacks: the errors below say it. Only for v7.3, so
+    // that reading a v5 file leaves libhdf5 untouched (uninitialised) in
+    // this process, and a child forked for a v7.3 file starts it afresh.
+    if (header == 0x0200) H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     MatFile m;
     m.mat = Mat_Open(f.c_str(), MAT_ACC_RDONLY);
     if (!m.mat) throw InputError(f + ": not a readable MATLAB file (damaged or not a .mat); re-export it from MATLAB");
     const mat_ft version = Mat_GetVersion(m.mat);
     if (version == MAT_FT_MAT4) throw InputError(v4);
+    if ((version == MAT_FT_MAT73) != (header == 0x0200))
+      throw InputError(f + ": damaged header: libmatio reads it as another MATLAB version than its bytes 124-127 "
+                           "say; re-export it from MATLAB");
     info_.format = version == MAT_FT_MAT73 ? "MAT v7.3" : "MAT v5";
     std::error_code ec;
     const auto file_bytes = std::filesystem::file_size(file, ec);
@@ -335,16 +331,7 @@ class MatReader final : public Reader {
     info_.sample_format = cls;
   }
 
-  std::size_t read(std::span<double> out) override {
-    const std::size_t channels = columns_.size();
-    const std::size_t n = std::min<std::size_t>(out.size() / channels, info_.frames - position_);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t c = 0; c < channels; ++c) out[i * channels + c] = columns_[c][position_ + i];
-    position_ += n;
-    return n;
-  }
-
-  void rewind() override { position_ = 0; }
+  MatContents take() && { return {std::move(info_), std::move(columns_)}; }
 
  private:
   static std::string list_variables(const std::vector<VarInfo>& vars) {
@@ -412,22 +399,24 @@ class MatReader final : public Reader {
     return rate;
   }
 
+  RecordingInfo info_;
   std::vector<std::vector<double>> columns_;
-  std::uint64_t position_ = 0;
 };
 
 }  // namespace
 
-bool mat_claims(const std::filesystem::path& file, std::span<const unsigned char> head) {
-  static constexpr char kMagic[] = "MATLAB ";
-  if (head.size() >= 7 && std::memcmp(head.data(), kMagic, 7) == 0) return true;
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".mat";
+unsigned mat_header_version(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char h[128];
+  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return 0;
+  const bool im = h[126] == 'I' && h[127] == 'M', mi = h[126] == 'M' && h[127] == 'I';
+  // The version is written in the file's byte order, as the mark is ("IM" read on this machine).
+  const unsigned version = im ? h[124] | h[125] << 8 : h[124] << 8 | h[125];
+  return (im || mi) && (version == 0x0100 || version == 0x0200) ? version : 0;
 }
 
-std::unique_ptr<Reader> open_mat_reader(const std::filesystem::path& file, const ReaderOptions& options) {
-  return std::make_unique<MatReader>(file, options);
+MatContents read_mat_contents(const std::filesystem::path& file, const ReaderOptions& options) {
+  return MatLoader(file, options).take();
 }
 
 }  // namespace fourbar
