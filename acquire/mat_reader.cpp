@@ -1,339 +1,25 @@
 #include "acquire/mat_reader.hpp"
 
-#include <hdf5.h>
-#include <matio.h>
-#include <zlib.h>
-
 #include <algorithm>
 #include <cctype>
-#include <cmath>
+#include <chrono>
+#include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <functional>
 #include <new>
-#include <sstream>
+#include <optional>
+#include <string_view>
 
-#include "acquire/csv_units.hpp"
+#include "acquire/mat_contents.hpp"
+#include "common/child_process.hpp"
 #include "common/error.hpp"
 
 namespace fourbar {
 
 namespace {
 
-struct MatFile {
-  mat_t* mat = nullptr;
-  ~MatFile() {
-    if (mat) Mat_Close(mat);
-  }
-};
-
-struct VarDeleter {
-  void operator()(matvar_t* v) const { Mat_VarFree(v); }
-};
-using Var = std::unique_ptr<matvar_t, VarDeleter>;
-
-const char* class_name(matio_classes c) {
-  switch (c) {
-    case MAT_C_DOUBLE: return "DOUBLE";
-    case MAT_C_SINGLE: return "SINGLE";
-    case MAT_C_INT8: return "INT8";
-    case MAT_C_UINT8: return "UINT8";
-    case MAT_C_INT16: return "INT16";
-    case MAT_C_UINT16: return "UINT16";
-    case MAT_C_INT32: return "INT32";
-    case MAT_C_UINT32: return "UINT32";
-    case MAT_C_INT64: return "INT64";
-    case MAT_C_UINT64: return "UINT64";
-    default: return nullptr;  // char, struct, cell, sparse, function, object
-  }
-}
-
-template <class T>
-double at(const void* data, std::size_t i) {
-  return static_cast<double>(static_cast<const T*>(data)[i]);
-}
-
-double element(const matvar_t& v, std::size_t i) {
-  switch (v.class_type) {
-    case MAT_C_DOUBLE: return at<double>(v.data, i);
-    case MAT_C_SINGLE: return at<float>(v.data, i);
-    case MAT_C_INT8: return at<std::int8_t>(v.data, i);
-    case MAT_C_UINT8: return at<std::uint8_t>(v.data, i);
-    case MAT_C_INT16: return at<std::int16_t>(v.data, i);
-    case MAT_C_UINT16: return at<std::uint16_t>(v.data, i);
-    case MAT_C_INT32: return at<std::int32_t>(v.data, i);
-    case MAT_C_UINT32: return at<std::uint32_t>(v.data, i);
-    case MAT_C_INT64: return at<std::int64_t>(v.data, i);
-    case MAT_C_UINT64: return at<std::uint64_t>(v.data, i);
-    default: return 0;
-  }
-}
-
-/// Seconds per unit of a time variable's name, 0 when it is not one.
-double time_unit_s(std::string name) {
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (name == "t" || name == "time" || name == "time_s") return 1.0;
-  if (name == "time_ms" || name == "t_ms") return 1e-3;
-  return 0.0;
-}
-
-bool is_rate_name(const std::string& name) {
-  static const char* kNames[] = {"fs", "Fs", "FS", "sample_rate", "sample_rate_hz", "samplerate", "SampleRate", "rate"};
-  return std::any_of(std::begin(kNames), std::end(kNames), [&](const char* n) { return name == n; });
-}
-
-/// The sub-elements of the miMATRIX element whose data are bytes [at, end):
-/// empty when each lies within it (nested miMATRIX elements of cell and
-/// struct arrays too), else where one does not. libmatio trusts these
-/// sizes: a dimensions sub-element claiming 1.9 GB inside an 816-byte
-/// variable made it allocate 3.9 GB (fuzzing: tests/fuzz/regressions/mat/).
-std::string v5_matrix_damage(const std::function<std::uint32_t(std::size_t)>& u32, std::size_t at, std::size_t end,
-                             int depth) {
-  if (depth > 16) return "damaged: variables nested more than 16 deep at byte " + std::to_string(at);
-  while (at < end) {
-    if (end - at < 8) return "damaged: a variable's last part at byte " + std::to_string(at) + " is cut short";
-    const std::uint32_t type = u32(at);
-    if (type >> 16) {  // small data element: 2-byte size, 2-byte type, 4 bytes of data
-      if ((type >> 16) > 4) return "damaged: a small data element at byte " + std::to_string(at) + " claims more than 4 bytes";
-      at += 8;
-      continue;
-    }
-    const std::size_t count = u32(at + 4);
-    if (count > end - at - 8)
-      return "damaged: a part of a variable at byte " + std::to_string(at) + " claims " + std::to_string(count) +
-             " bytes, more than the variable holds";
-    if (type == 14)
-      if (std::string d = v5_matrix_damage(u32, at + 8, at + 8 + count, depth + 1); !d.empty()) return d;
-    at = std::min(end, at + 8 + (count + 7) / 8 * 8);
-  }
-  return {};
-}
-
-/// Whether the file starts with the 128-byte header of MATLAB v5/v7 (version
-/// 0x0100) or v7.3 (0x0200, the HDF5 file's user block): version and
-/// byte-order mark "IM" or "MI" at bytes 124-127.
-bool has_mat_header(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  unsigned char h[128];
-  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return false;
-  const bool im = h[126] == 'I' && h[127] == 'M', mi = h[126] == 'M' && h[127] == 'I';
-  // The version is written in the file's byte order, as the mark is ("IM" read on this machine).
-  const unsigned version = im ? h[124] | h[125] << 8 : h[124] << 8 | h[125];
-  return (im || mi) && (version == 0x0100 || version == 0x0200);
-}
-
-/// The largest dimensions or name part a variable's header may claim (a
-/// MATLAB name has at most 63 characters; 4096 bytes are 1024 dimensions).
-constexpr std::size_t kMaxHeaderPart = 4096;
-
-/// A compressed variable (miCOMPRESSED, data bytes [data, data + size)):
-/// libmatio inflates its header and trusts the sizes there as it does in an
-/// uncompressed one (a name claiming 1.9 GB in a 58-byte variable cost 9 s
-/// and gigabytes; fuzzing: tests/fuzz/regressions/mat/). Inflates only the
-/// header (array flags, dimensions, name tags); empty when they are sound.
-std::string v5_compressed_damage(const unsigned char* data, std::size_t size, bool swap, std::size_t at) {
-  const std::string where = "damaged: the compressed variable at byte " + std::to_string(at);
-  std::vector<unsigned char> head(8 + 3 * (8 + kMaxHeaderPart));
-  z_stream z{};
-  if (inflateInit(&z) != Z_OK) throw std::bad_alloc();
-  z.next_in = const_cast<unsigned char*>(data);
-  z.avail_in = static_cast<uInt>(size);
-  z.next_out = head.data();
-  z.avail_out = static_cast<uInt>(head.size());
-  const int rc = inflate(&z, Z_SYNC_FLUSH);
-  head.resize(head.size() - z.avail_out);
-  inflateEnd(&z);
-  if (rc != Z_OK && rc != Z_STREAM_END && rc != Z_BUF_ERROR) return where + " does not inflate";
-  auto u32 = [&](std::size_t i) {
-    std::uint32_t v = 0;
-    std::memcpy(&v, &head[i], 4);
-    return swap ? __builtin_bswap32(v) : v;
-  };
-  if (head.size() < 8 || u32(0) != 14) return where + " holds no variable";
-  const std::size_t end = 8 + static_cast<std::size_t>(u32(4));
-  std::size_t i = 8;
-  for (int part = 0; part < 3; ++part) {  // array flags, dimensions, name
-    if (i + 8 > head.size() || i + 8 > end) return where + " ends within its header";
-    const std::uint32_t type = u32(i);
-    if (type >> 16) {
-      i += 8;
-      continue;
-    }
-    const std::size_t count = u32(i + 4);
-    if (count > kMaxHeaderPart || count > end - i - 8)
-      return where + " has a header part claiming " + std::to_string(count) + " bytes";
-    i += 8 + (count + 7) / 8 * 8;
-  }
-  return {};
-}
-
-/// v5 files: checks the endian indicator and walks the top-level data
-/// elements (tag: type, byte count), the parts of uncompressed variables
-/// and the headers of compressed ones; empty when sound, else what is wrong.
-/// libmatio stops quietly at a truncated element, which would drop the
-/// variables after it.
-std::string v5_damage(const std::filesystem::path& file) {
-  const std::string truncated = "truncated: a variable runs past the end of the file (an interrupted copy?)";
-  std::ifstream in(file, std::ios::binary);
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < 128) return truncated;
-  // The endian indicator must read "IM" (this machine's byte order) or "MI";
-  // with anything else libmatio guesses, and a size read in the wrong order
-  // asked it for 8 GB (fuzzing: tests/fuzz/regressions/mat/).
-  if (!((bytes[126] == 'I' && bytes[127] == 'M') || (bytes[126] == 'M' && bytes[127] == 'I')))
-    return "damaged header: the byte-order mark at bytes 126-127 is not 'IM' or 'MI'";
-  const bool swap = bytes[126] == 'M' && bytes[127] == 'I';
-  auto u32 = [&](std::size_t at) {
-    std::uint32_t v = 0;
-    std::memcpy(&v, &bytes[at], 4);
-    return swap ? __builtin_bswap32(v) : v;
-  };
-  std::size_t at = 128;
-  while (at < bytes.size()) {
-    if (at + 8 > bytes.size()) return truncated;
-    const std::uint32_t type = u32(at), count = u32(at + 4);
-    // A file's top level holds variables only: miMATRIX (14) or miCOMPRESSED (15).
-    if (type != 14 && type != 15)
-      return "damaged: the data element at byte " + std::to_string(at) + " is of type " + std::to_string(type) +
-             ", not a variable (miMATRIX or miCOMPRESSED)";
-    const std::size_t end = at + 8 + static_cast<std::size_t>(count);
-    if (end > bytes.size()) return truncated;
-    if (type == 14)
-      if (std::string d = v5_matrix_damage(u32, at + 8, end, 0); !d.empty()) return d;
-    if (type == 15)
-      if (std::string d = v5_compressed_damage(&bytes[at + 8], count, swap, at); !d.empty()) return d;
-    at = type == 15 ? end : (end + 7) / 8 * 8;  // miMATRIX is padded to 8 bytes, miCOMPRESSED is not
-  }
-  return {};
-}
-
-struct VarInfo {
-  std::string name;                ///< as UTF-8 (Latin-1 read as such)
-  std::string raw;                 ///< as stored, for libmatio
-  const char* cls = nullptr;  ///< null: not a real numeric array
-  std::size_t rows = 0, cols = 0;
-  bool numeric() const { return cls != nullptr; }
-  std::size_t length() const { return std::max(rows, cols); }
-  std::size_t width() const { return std::min(rows, cols); }
-};
-
-class MatReader final : public Reader {
+class MatRecording final : public Reader {
  public:
-  MatReader(const std::filesystem::path& file, const ReaderOptions& options) {
-    info_.file = file;
-    const std::string f = file.string();
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // HDF5 (v7.3) prints no error stacks: the errors below say it
-    Mat_LogInitFunc("fourbar", [](int, char*) {});  // nor libmatio its warnings
-    // v4 (MATLAB before 1996) has no header to check a file against, and
-    // libmatio spends seconds and gigabytes on a damaged one (fuzzing) —
-    // already in Mat_Open, which tries v4 when the v5/v7.3 header is missing
-    // (a 120-byte file whose "name length" read 690 MB: 7 s). So the header
-    // is checked first.
-    const std::string v4 = f + ": a MATLAB v4 file (or not a MATLAB file at all): not read; save it from MATLAB as "
-                               "v7 (save -v7) or v7.3";
-    if (!has_mat_header(file)) throw InputError(v4);
-    MatFile m;
-    m.mat = Mat_Open(f.c_str(), MAT_ACC_RDONLY);
-    if (!m.mat) throw InputError(f + ": not a readable MATLAB file (damaged or not a .mat); re-export it from MATLAB");
-    const mat_ft version = Mat_GetVersion(m.mat);
-    if (version == MAT_FT_MAT4) throw InputError(v4);
-    info_.format = version == MAT_FT_MAT73 ? "MAT v7.3" : "MAT v5";
-    std::error_code ec;
-    const auto file_bytes = std::filesystem::file_size(file, ec);
-    if (version == MAT_FT_MAT5)
-      if (const std::string damage = v5_damage(file); !damage.empty())
-        throw InputError(f + ": " + damage + " (" + std::to_string(file_bytes) + " bytes); copy the file again");
-
-    // Every variable's header (class and size), without its data.
-    std::vector<VarInfo> vars;
-    while (Var v{Mat_VarReadNextInfo(m.mat)}) {
-      VarInfo vi;
-      vi.raw = v->name ? v->name : "";
-      vi.name = as_utf8(vi.raw);  // names go into TOML manifests
-      if (v->rank == 2 && !v->isComplex && v->class_type != MAT_C_SPARSE) {
-        vi.cls = class_name(v->class_type);
-        vi.rows = v->dims[0], vi.cols = v->dims[1];
-      }
-      if (vi.name.empty()) continue;
-      if (!vi.numeric()) {
-        info_.notes.push_back("variable '" + vi.name + "' is not a real numeric matrix; not a channel");
-        continue;
-      }
-      // A size the file cannot hold even compressed (zlib: at most ~1032:1)
-      // is damage, not a recording.
-      const double bytes = static_cast<double>(vi.rows) * static_cast<double>(vi.cols) * 8.0;
-      if (bytes > 1100.0 * static_cast<double>(file_bytes) + 4096.0)
-        throw InputError(f + ": variable '" + vi.name + "' claims " + std::to_string(vi.rows) + "x" +
-                         std::to_string(vi.cols) + " values, more than the file can hold (a damaged file)");
-      vars.push_back(vi);
-    }
-    if (vars.empty() && info_.notes.empty())
-      throw InputError(f + ": no variable could be read (an empty or damaged " + info_.format + " file); re-export it");
-    std::size_t length = 0;
-    for (const auto& v : vars) length = std::max(length, v.length());
-    if (length < 2)
-      throw InputError(f + ": no numeric variable with more than one value; a recording needs its channels as "
-                       "vectors or matrix columns" + list_variables(vars));
-
-    // Sample rate source (see the header).
-    std::optional<double> rate = options.sample_rate_hz;
-    if (options.rate_variable) {
-      const auto it = std::find_if(vars.begin(), vars.end(), [&](const VarInfo& v) { return v.name == *options.rate_variable; });
-      if (it == vars.end())
-        throw InputError(f + ": the manifest's rate_variable '" + *options.rate_variable +
-                         "' is not a numeric variable in this file" + list_variables(vars) +
-                         "; name the variable that holds the rate, or give sample_rate_hz instead");
-      if (it->rows * it->cols != 1)
-        throw InputError(f + ": rate_variable '" + it->name + "' is " + std::to_string(it->rows) + "x" +
-                         std::to_string(it->cols) + ", not a scalar; name the scalar that holds the rate in Hz");
-      rate = read_scalar(m.mat, it->raw, f);
-      info_.rate_variable = it->name;
-    }
-
-    int time_var = -1;
-    for (std::size_t i = 0; i < vars.size(); ++i) {
-      const VarInfo& v = vars[i];
-      if (v.length() != length) {
-        if (v.length() > 1) info_.notes.push_back("variable '" + v.name + "' (" + std::to_string(v.rows) + "x" +
-                                                  std::to_string(v.cols) + ") has another length; not a channel");
-        continue;
-      }
-      if (v.width() == 1 && time_var < 0 && time_unit_s(v.name) > 0) {
-        time_var = static_cast<int>(i);
-        continue;
-      }
-      add_channels(m.mat, v, f);
-    }
-    if (columns_.empty()) throw InputError(f + ": only a time variable; the recording needs channels" + list_variables(vars));
-
-    if (!rate && time_var >= 0) {
-      const VarInfo& tv = vars[static_cast<std::size_t>(time_var)];
-      rate = rate_from_time(m.mat, tv, f);
-    }
-    if (!rate) {
-      for (const auto& v : vars)
-        if (v.rows * v.cols == 1 && is_rate_name(v.name)) {
-          rate = read_scalar(m.mat, v.raw, f);
-          info_.rate_variable = v.name;
-          break;
-        }
-    }
-    if (!rate)
-      throw InputError(f + ": no sample rate: no time variable (t, time, time_s) and no rate scalar (fs, sample_rate, …)" +
-                       list_variables(vars) + "; set rate_variable (or sample_rate_hz) in the manifest");
-    if (!(*rate >= 1e-3 && *rate <= 1e9))
-      throw InputError(f + ": sample rate " + std::to_string(*rate) + " Hz" +
-                       (info_.rate_variable ? " (variable '" + *info_.rate_variable + "')" : std::string()) +
-                       " is not between 0.001 Hz and 1 GHz; check the rate variable or give sample_rate_hz");
-    info_.sample_rate_hz = *rate;
-    info_.frames = length;
-    info_.channels = static_cast<int>(columns_.size());
-    std::string cls;
-    for (const auto& v : vars)
-      if (v.length() == length && static_cast<int>(&v - vars.data()) != time_var)
-        cls = cls.empty() || cls == v.cls ? v.cls : "MIXED";
-    info_.sample_format = cls;
-  }
+  explicit MatRecording(MatContents c) : columns_(std::move(c.columns)) { info_ = std::move(c.info); }
 
   std::size_t read(std::span<double> out) override {
     const std::size_t channels = columns_.size();
@@ -347,74 +33,165 @@ class MatReader final : public Reader {
   void rewind() override { position_ = 0; }
 
  private:
-  static std::string list_variables(const std::vector<VarInfo>& vars) {
-    std::string s = " (variables found:";
-    for (const auto& v : vars) s += " " + v.name + " " + std::to_string(v.rows) + "x" + std::to_string(v.cols) + ",";
-    if (vars.empty()) s += " none,";
-    s.back() = ')';
-    return s;
-  }
-
-  static Var read_var(mat_t* mat, const std::string& name, const std::string& f) {
-    Var v{Mat_VarRead(mat, name.c_str())};
-    if (!v || !v->data || !class_name(v->class_type))
-      throw InputError(f + ": cannot read the data of variable '" + name + "' (a damaged file); re-export it");
-    return v;
-  }
-
-  static double read_scalar(mat_t* mat, const std::string& name, const std::string& f) {
-    const Var v = read_var(mat, name, f);
-    return element(*v, 0);
-  }
-
-  void add_channels(mat_t* mat, const VarInfo& vi, const std::string& f) {
-    const Var v = read_var(mat, vi.raw, f);
-    if (v->rank != 2 || v->dims[0] != vi.rows || v->dims[1] != vi.cols)
-      throw InputError(f + ": variable '" + vi.name + "' changed size between its header and its data (a damaged file)");
-    const bool by_column = vi.rows >= vi.cols;  // the longer dimension is time
-    const std::size_t n = vi.length(), width = vi.width();
-    for (std::size_t c = 0; c < width; ++c) {
-      std::vector<double> col(n);
-      for (std::size_t i = 0; i < n; ++i) {
-        const double x = element(*v, by_column ? c * vi.rows + i : i * vi.rows + c);
-        if (!std::isfinite(x))
-          throw InputError(f + ": variable '" + vi.name + "' element " + std::to_string(i + 1) +
-                           (width > 1 ? " of " + std::string(by_column ? "column " : "row ") + std::to_string(c + 1) : "") +
-                           " is not a finite number; every sample must be a number (fix or cut it)");
-        col[i] = x;
-      }
-      columns_.push_back(std::move(col));
-      if (width == 1) info_.channel_names.push_back(vi.name);
-      else info_.channel_names.push_back(vi.name + (by_column ? "(:," + std::to_string(c + 1) + ")"
-                                                              : "(" + std::to_string(c + 1) + ",:)"));
-    }
-  }
-
-  double rate_from_time(mat_t* mat, const VarInfo& tv, const std::string& f) {
-    const Var v = read_var(mat, tv.raw, f);
-    const double unit = time_unit_s(tv.name);
-    const std::size_t n = tv.length();
-    const double t0 = element(*v, 0) * unit, tn = element(*v, n - 1) * unit;
-    if (!(tn > t0) || !std::isfinite(tn - t0))
-      throw InputError(f + ": the time variable '" + tv.name + "' does not increase; fix it or set sample_rate_hz");
-    const double rate = static_cast<double>(n - 1) / (tn - t0);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double t = element(*v, i) * unit, expected = t0 + static_cast<double>(i) / rate;
-      if (!(std::abs(t - expected) <= 0.5 / rate)) {
-        std::ostringstream os;
-        os.precision(10);
-        os << f << ": time variable '" << tv.name << "' element " << i + 1 << " = " << t << " s is not uniform: sampling at "
-           << rate << " Hz puts it at " << expected << " s; acquire needs uniformly sampled data (or set sample_rate_hz)";
-        throw InputError(os.str());
-      }
-    }
-    info_.start_time_s = t0;
-    return rate;
-  }
-
   std::vector<std::vector<double>> columns_;
   std::uint64_t position_ = 0;
 };
+
+// What the child sends back: a tag, then the contents or an error message.
+// Numbers as their bytes (doubles bit for bit), strings and vectors as a
+// count then their elements.
+enum Tag : std::uint8_t { kContents = 'C', kInputError = 'I', kRunError = 'R', kNoMemory = 'M', kOther = 'X' };
+
+struct WireOut {
+  std::string s;
+  void u64(std::uint64_t v) { s.append(reinterpret_cast<const char*>(&v), sizeof v); }
+  void f64(double v) { s.append(reinterpret_cast<const char*>(&v), sizeof v); }
+  void str(const std::string& v) { u64(v.size()), s += v; }
+  void strs(const std::vector<std::string>& v) {
+    u64(v.size());
+    for (const auto& x : v) str(x);
+  }
+};
+
+/// Reads what WireOut wrote; any read past the end sets `bad` (the data are then garbled).
+struct WireIn {
+  std::string_view s;
+  std::size_t at = 0;
+  bool bad = false;
+  bool take(void* out, std::size_t n) {
+    if (bad || n > s.size() - at) return !(bad = true);
+    std::memcpy(out, s.data() + at, n);
+    at += n;
+    return true;
+  }
+  std::uint64_t u64() {
+    std::uint64_t v = 0;
+    take(&v, sizeof v);
+    return v;
+  }
+  double f64() {
+    double v = 0;
+    take(&v, sizeof v);
+    return v;
+  }
+  std::string str() {
+    const std::uint64_t n = u64();
+    if (bad || n > s.size() - at) return (bad = true), std::string();
+    std::string v(s.substr(at, n));
+    at += n;
+    return v;
+  }
+  std::vector<std::string> strs() {
+    std::vector<std::string> v;
+    for (std::uint64_t n = u64(); !bad && n > 0; --n) v.push_back(str());
+    return v;
+  }
+};
+
+// A field added to RecordingInfo must be sent from the child too (encode,
+// decode) — or the v7.3 path would drop it silently. (Size on x86-64 with
+// libstdc++, the platform fourbar builds on.)
+static_assert(sizeof(RecordingInfo) == 248, "RecordingInfo changed: send the new field in encode() and decode()");
+
+std::string encode(const MatContents& c) {
+  WireOut w;
+  w.s.push_back(static_cast<char>(kContents));
+  const RecordingInfo& i = c.info;
+  w.str(i.format), w.str(i.sample_format);
+  w.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(i.integer_bits)));
+  w.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(i.channels)));
+  w.f64(i.sample_rate_hz), w.u64(i.frames), w.f64(i.start_time_s);
+  w.strs(i.channel_names), w.strs(i.channel_units);
+  w.u64(i.rate_variable ? 1 : 0);
+  if (i.rate_variable) w.str(*i.rate_variable);
+  w.strs(i.notes);
+  w.u64(c.columns.size());
+  for (const auto& col : c.columns) {
+    w.u64(col.size());
+    w.s.append(reinterpret_cast<const char*>(col.data()), col.size() * sizeof(double));
+  }
+  return w.s;
+}
+
+/// The contents, or nothing when the bytes are not exactly one encoded,
+/// self-consistent MatContents.
+std::optional<MatContents> decode(std::string_view bytes, const std::filesystem::path& file) {
+  WireIn r{bytes.substr(1)};
+  MatContents c;
+  RecordingInfo& i = c.info;
+  i.file = file;
+  i.format = r.str(), i.sample_format = r.str();
+  i.integer_bits = static_cast<int>(static_cast<std::int64_t>(r.u64()));
+  i.channels = static_cast<int>(static_cast<std::int64_t>(r.u64()));
+  i.sample_rate_hz = r.f64(), i.frames = r.u64(), i.start_time_s = r.f64();
+  i.channel_names = r.strs(), i.channel_units = r.strs();
+  if (r.u64() == 1) i.rate_variable = r.str();
+  i.notes = r.strs();
+  for (std::uint64_t n = r.u64(); !r.bad && n > 0; --n) {
+    const std::uint64_t len = r.u64();
+    if (r.bad || len > (r.s.size() - r.at) / sizeof(double)) return std::nullopt;
+    std::vector<double> col(len);
+    r.take(col.data(), len * sizeof(double));
+    c.columns.push_back(std::move(col));
+  }
+  if (r.bad || r.at != r.s.size() || i.channels < 1 || c.columns.size() != static_cast<std::size_t>(i.channels) ||
+      i.channel_names.size() != c.columns.size())
+    return std::nullopt;
+  for (const auto& col : c.columns)
+    if (col.size() != i.frames) return std::nullopt;
+  return c;
+}
+
+/// The child's side: read the file, send the contents or the error.
+std::string read_and_encode(const std::filesystem::path& file, const ReaderOptions& options) {
+  auto error = [](Tag tag, const char* what) { return static_cast<char>(tag) + std::string(what); };
+  try {
+    return encode(read_mat_contents(file, options));
+  } catch (const InputError& e) {
+    return error(kInputError, e.what());
+  } catch (const RunError& e) {
+    return error(kRunError, e.what());
+  } catch (const std::bad_alloc&) {
+    return error(kNoMemory, "");
+  } catch (const std::exception& e) {
+    return error(kOther, e.what());
+  }
+}
+
+/// A v7.3 file, read in a child process (common/child_process.hpp). libhdf5
+/// 1.10 (Debian 12) overflows heap blocks on damaged files (fuzzing:
+/// tests/fuzz/regressions/mat/v73_attribute_heap_overflow_in_libhdf5.mat.bin)
+/// and fourbar cannot check an HDF5 file's structure before it as it does a
+/// v5 file's; in the child, a crash, a hang or corrupted memory ends there.
+/// Errors the reading raises in the child are raised here unchanged; the
+/// contents arrive bit for bit.
+MatContents read_v73_isolated(const std::filesystem::path& file, const ReaderOptions& options) {
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(file, ec);
+  // A minute, and a second more per MB: reading and sending a valid file
+  // takes a small part of that even on a loaded machine.
+  const std::chrono::milliseconds limit(60'000 + (ec ? 0 : static_cast<std::int64_t>(bytes / 1000)));
+  const ChildResult res = run_in_child_process([&] { return read_and_encode(file, options); }, limit);
+  const std::string f = file.string();
+  const auto damaged = [&](const std::string& how) {
+    return InputError(f + ": reading this MATLAB v7.3 (HDF5) file went wrong inside libmatio/libhdf5 — the reading "
+                          "process " + how + ": the file is damaged; copy the file again, or re-save it from MATLAB "
+                          "(save -v7.3, or -v7)");
+  };
+  if (!res.ok) throw damaged(res.failure);
+  if (res.bytes.empty()) throw damaged("sent nothing");
+  const std::string message = res.bytes.substr(1);
+  switch (static_cast<Tag>(res.bytes[0])) {
+    case kContents:
+      if (auto c = decode(res.bytes, file)) return std::move(*c);
+      throw damaged("sent garbled data");
+    case kInputError: throw InputError(message);
+    case kRunError: throw RunError(message);
+    case kNoMemory: throw std::bad_alloc();
+    case kOther: throw std::runtime_error(message);
+  }
+  throw damaged("sent garbled data");
+}
 
 }  // namespace
 
@@ -427,7 +204,15 @@ bool mat_claims(const std::filesystem::path& file, std::span<const unsigned char
 }
 
 std::unique_ptr<Reader> open_mat_reader(const std::filesystem::path& file, const ReaderOptions& options) {
-  return std::make_unique<MatReader>(file, options);
+  // v5 (and the v4 refusal) stay in this process: what fuzzing found in
+  // libmatio's v5 code (sizes the file cannot hold, read as gigabytes to
+  // allocate) is refused before libmatio reads the file — v5_damage in
+  // mat_contents.cpp walks every element and inflates each compressed
+  // variable's header with zlib — and the campaigns since found no memory
+  // error there. An HDF5 file's object headers cannot be checked so
+  // without a second HDF5 parser: v7.3 goes to a child process (above).
+  if (mat_header_version(file) == 0x0200) return std::make_unique<MatRecording>(read_v73_isolated(file, options));
+  return std::make_unique<MatRecording>(read_mat_contents(file, options));
 }
 
 }  // namespace fourbar
