@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "truth_args.hpp"
 #include "cluster/case_queue.hpp"
 #include "fit/recording_target.hpp"
 #include "report/session_settings.hpp"
@@ -53,10 +54,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::filesystem::path dir = argv[1];
-  ContactParameters truth;
-  truth.restitution = std::stod(argv[2]);
-  truth.contact = std::string(argv[3]) == "stick-slip" ? ContactLaw::stick_slip : ContactLaw::smooth;
-  truth.friction_coefficient = std::stod(argv[4]);
+  const ContactParameters truth = bench::truth_from_args(argv);
   const int sim_turns = argc > 5 ? std::stoi(argv[5]) : 100;
   const unsigned threads = argc > 6 ? static_cast<unsigned>(std::stoi(argv[6])) : 2;
   const bool mu_scan = argc > 7 && std::string(argv[7]) == "mu-scan";

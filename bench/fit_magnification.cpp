@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "truth_args.hpp"
 #include "cluster/case_queue.hpp"
 #include "fit/matched_magnification.hpp"
 #include "fit/recording_target.hpp"
@@ -129,10 +130,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::filesystem::path dir = argv[1];
-  ContactParameters truth;
-  truth.restitution = std::stod(argv[2]);
-  truth.contact = std::string(argv[3]) == "stick-slip" ? ContactLaw::stick_slip : ContactLaw::smooth;
-  truth.friction_coefficient = std::stod(argv[4]);
+  const ContactParameters truth = bench::truth_from_args(argv);
   const int model_turns = argc > 5 ? std::stoi(argv[5]) : 460;
   const unsigned threads = argc > 6 ? static_cast<unsigned>(std::stoi(argv[6])) : 1;
   const std::size_t block = argc > 7 ? static_cast<std::size_t>(std::stoi(argv[7])) : 23;
