@@ -1,5 +1,6 @@
 #include "report/analysis_cache.hpp"
 
+#include <cmath>
 #include <fstream>
 
 #include "common/atomic_output.hpp"
@@ -28,11 +29,26 @@ std::optional<json> read_cached_record(const std::filesystem::path& file) {
   return std::nullopt;
 }
 
+namespace {
+
+/// JSON text reads back every value exactly (nlohmann writes the shortest
+/// decimal that parses back to the same double, -0.0 included) except a NaN
+/// or an infinity, which it writes as null.
+bool all_numbers_finite(const json& j) {
+  if (j.is_number_float()) return std::isfinite(j.get<double>());
+  if (j.is_structured())
+    for (const json& e : j)
+      if (!all_numbers_finite(e)) return false;
+  return true;
+}
+
+}  // namespace
+
 bool write_cached_record(const std::filesystem::path& file, const json& record) {
+  if (!all_numbers_finite(record)) return false;
   std::string text;
   try {
     text = record.dump();
-    if (json::parse(text) != record) return false;
   } catch (const json::exception&) {  // invalid UTF-8 in a string
     return false;
   }

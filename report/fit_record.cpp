@@ -146,7 +146,49 @@ TheorySettings with_fitted_contact(TheorySettings t, const FittedContact& c) {
   return t;
 }
 
-json fit_report_record(const ReportFit& fit, const json& records, const std::filesystem::path& session_dir) {
+std::optional<json> fit_report_row(const ReportFit& fit, const json& r) {
+  if (!r.contains("fitted_theory") || !r.contains("metrics")) return std::nullopt;
+  const char* q = r["metrics"].contains("alpha3_rad_s2") ? "alpha3_rad_s2" : "alpha4_rad_s2";
+  if (!r["metrics"].contains(q) || !r["fitted_theory"]["metrics"].contains(q)) return std::nullopt;
+  const json& m = r["metrics"][q];
+  const std::optional<double> sm = scatter_rms(r["series"][q]["measured_std"]);
+  const double rm = r["operating_point"]["revolutions_averaged"].get<double>();
+  const double dm = m["magnification"]["measured_deviation_rms"].get<double>();
+  json row = {{"name", r["name"]},
+              {"quantity", q},
+              {"measured_turns", rm},
+              {"measured_deviation_rms", dm},
+              {"measured_scatter_rms", opt(sm)},
+              // The share of the measured averaged deviation that scatter
+              // over the turns alone would give: near 1, a compares scatter.
+              {"measured_scatter_share", sm && dm > 0 ? json(*sm / std::sqrt(rm) / dm) : json(nullptr)}};
+  row["prior"] = model_row(m, r["series"][q], sm, rm, dm, r["theory"]["settings"]["averaged_revolutions"].get<double>());
+  row["prior"]["settings"] = r["theory"]["settings"];
+  const json& ft = r["fitted_theory"];
+  row["fitted"] = model_row(ft["metrics"][q], ft["series"][q], sm, rm, dm, ft["settings"]["averaged_revolutions"].get<double>());
+  row["fitted"]["settings"] = ft["settings"];
+  std::vector<const json*> fit_recordings;
+  if (fit.fit.contains("recordings"))
+    for (const json& fr : fit.fit["recordings"]) fit_recordings.push_back(&fr);
+  if (fit.fit.contains("per_recording"))
+    for (const json& p : fit.fit["per_recording"])
+      for (const json& fr : p["recordings"]) fit_recordings.push_back(&fr);
+  for (const json* frp : fit_recordings)
+    if (const json& fr = *frp; fr.value("file", "") == r["name"]) {
+      row["fit_chi2_per_term"] = fr.value("chi2_per_term", 0.0);
+      row["fit_chi2_prior_per_term"] = fr.value("terms", 0) > 0 ? fr.value("chi2_prior", 0.0) / fr["terms"].get<double>() : 0.0;
+      if (fr.contains("magnification_fitted")) row["fit_a_fitted"] = fr["magnification_fitted"];
+      if (fr.contains("magnification_prior")) row["fit_a_prior"] = fr["magnification_prior"];
+      // Their standard errors (fits before they were written have none).
+      if (fr.contains("magnification_fitted_standard_error"))
+        row["fit_a_fitted_standard_error"] = fr["magnification_fitted_standard_error"];
+      if (fr.contains("magnification_prior_standard_error"))
+        row["fit_a_prior_standard_error"] = fr["magnification_prior_standard_error"];
+    }
+  return row;
+}
+
+json fit_report_record(const ReportFit& fit, const std::vector<json>& rows, const std::filesystem::path& session_dir) {
   json out = {{"file", std::filesystem::proximate(fit.file, session_dir).string()},
               {"sha256", sha256_file(fit.file)},
               {"warnings", fit.warnings}};
@@ -163,49 +205,9 @@ json fit_report_record(const ReportFit& fit, const json& records, const std::fil
   } else {
     out["session_fit"] = brief(fit.fit);
   }
-  json rows = json::array();
-  for (const json& r : records) {
-    if (!r.contains("fitted_theory") || !r.contains("metrics")) continue;
-    const char* q = r["metrics"].contains("alpha3_rad_s2") ? "alpha3_rad_s2" : "alpha4_rad_s2";
-    if (!r["metrics"].contains(q) || !r["fitted_theory"]["metrics"].contains(q)) continue;
-    const json& m = r["metrics"][q];
-    const std::optional<double> sm = scatter_rms(r["series"][q]["measured_std"]);
-    const double rm = r["operating_point"]["revolutions_averaged"].get<double>();
-    const double dm = m["magnification"]["measured_deviation_rms"].get<double>();
-    json row = {{"name", r["name"]},
-                {"quantity", q},
-                {"measured_turns", rm},
-                {"measured_deviation_rms", dm},
-                {"measured_scatter_rms", opt(sm)},
-                // The share of the measured averaged deviation that scatter
-                // over the turns alone would give: near 1, a compares scatter.
-                {"measured_scatter_share", sm && dm > 0 ? json(*sm / std::sqrt(rm) / dm) : json(nullptr)}};
-    row["prior"] = model_row(m, r["series"][q], sm, rm, dm, r["theory"]["settings"]["averaged_revolutions"].get<double>());
-    row["prior"]["settings"] = r["theory"]["settings"];
-    const json& ft = r["fitted_theory"];
-    row["fitted"] = model_row(ft["metrics"][q], ft["series"][q], sm, rm, dm, ft["settings"]["averaged_revolutions"].get<double>());
-    row["fitted"]["settings"] = ft["settings"];
-    std::vector<const json*> fit_recordings;
-    if (fit.fit.contains("recordings"))
-      for (const json& fr : fit.fit["recordings"]) fit_recordings.push_back(&fr);
-    if (fit.fit.contains("per_recording"))
-      for (const json& p : fit.fit["per_recording"])
-        for (const json& fr : p["recordings"]) fit_recordings.push_back(&fr);
-    for (const json* frp : fit_recordings)
-      if (const json& fr = *frp; fr.value("file", "") == r["name"]) {
-          row["fit_chi2_per_term"] = fr.value("chi2_per_term", 0.0);
-          row["fit_chi2_prior_per_term"] = fr.value("terms", 0) > 0 ? fr.value("chi2_prior", 0.0) / fr["terms"].get<double>() : 0.0;
-          if (fr.contains("magnification_fitted")) row["fit_a_fitted"] = fr["magnification_fitted"];
-          if (fr.contains("magnification_prior")) row["fit_a_prior"] = fr["magnification_prior"];
-          // Their standard errors (fits before they were written have none).
-          if (fr.contains("magnification_fitted_standard_error"))
-            row["fit_a_fitted_standard_error"] = fr["magnification_fitted_standard_error"];
-          if (fr.contains("magnification_prior_standard_error"))
-            row["fit_a_prior_standard_error"] = fr["magnification_prior_standard_error"];
-        }
-    rows.push_back(row);
-  }
-  out["recordings"] = rows;
+  json recordings = json::array();
+  for (const json& row : rows) recordings.push_back(row);
+  out["recordings"] = recordings;
   return out;
 }
 

@@ -49,11 +49,16 @@ ReportFit load_report_fit(const std::filesystem::path& file, const std::vector<s
 /// `base` with restitution, contact law and μ replaced by the fitted ones.
 TheorySettings with_fitted_contact(TheorySettings base, const FittedContact& fitted);
 
+/// One analysed recording's row of the fit section: measured vs the prior
+/// model vs the fitted model (a, RMS difference, correlation on α3) with the
+/// scatter each averaged deviation holds (README "Fitted bearing parameters
+/// in the report"). Reads the record's series, so it is made by the worker
+/// that made the record; none for a recording without a fitted theory.
+std::optional<nlohmann::json> fit_report_row(const ReportFit& fit, const nlohmann::json& record);
+
 /// The session record's "fit": the fit.json (file, SHA-256, parameters,
-/// notes, χ²) and, per analysed recording, measured vs the prior model vs the
-/// fitted model (a, RMS difference, correlation on α3) with the scatter each
-/// averaged deviation holds (README "Fitted bearing parameters in the report").
-nlohmann::json fit_report_record(const ReportFit& fit, const nlohmann::json& records,
+/// notes, χ²) and the rows of fit_report_row, in the folder's order.
+nlohmann::json fit_report_record(const ReportFit& fit, const std::vector<nlohmann::json>& rows,
                                  const std::filesystem::path& session_dir);
 
 }  // namespace fourbar

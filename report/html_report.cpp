@@ -1,6 +1,7 @@
 #include "report/html_report.hpp"
 
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "common/json_text.hpp"
@@ -37,13 +38,28 @@ std::string report_script() {
 
 }  // namespace
 
-std::string render_html_report(const json& session_in) {
+RecordingPage render_recording_page(json record, std::size_t index) {
+  round_numbers(record);
+  std::ostringstream h;
+  recording_section(h, record, index);
+  return {h.str(), json_safe(json_text(record))};
+}
+
+std::string render_html_report(const json& session) {
+  std::vector<RecordingPage> pages;
+  const json& recs = session["recordings"];
+  for (std::size_t i = 0; i < recs.size(); ++i) pages.push_back(render_recording_page(recs[i], i));
+  return render_html_report(session, pages);
+}
+
+std::string render_html_report(const json& session_in, const std::vector<RecordingPage>& pages) {
   const std::string js = without_source_maps(read_text(dygraphs_dir() / "dygraph.min.js"));
   const std::string css = without_source_maps(read_text(dygraphs_dir() / "dygraph.min.css"));
   json data = session_in;
   round_numbers(data);
   data["names"] = quantity_names_json();  // the scripts label charts from the same table as the tables
   const json& recs = data["recordings"];
+  if (pages.size() != recs.size()) throw std::logic_error("render_html_report: one page part per recording");
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
@@ -62,7 +78,7 @@ std::string render_html_report(const json& session_in) {
   severity_section(h, data);
   fit_section(h, data);
 
-  for (std::size_t i = 0; i < recs.size(); ++i) recording_section(h, recs[i], i);
+  for (const RecordingPage& p : pages) h << p.section_html;
 
   h << "<section id=\"settings\"><h2>Settings</h2><table><tr><th class=\"l\">setting</th><th class=\"l\">value</th></tr>";
   settings_rows(h, data["settings"], "");
@@ -70,7 +86,22 @@ std::string render_html_report(const json& session_in) {
   if (!data["settings_file"].is_null()) files_table(h, json::array({data["settings_file"]}));
   h << "</section></main><footer><p class=\"note\">Self-contained: data and Debian's dygraphs "
        "(MIT licence) are inlined; nothing is fetched.</p></footer>";
-  h << "<script id=\"report-data\" type=\"application/json\">" << json_safe(json_text(data)) << "</script>";
+  // The data as json_text(data) would write it, with each recording's text
+  // (already rounded and made safe) where the recordings array stands.
+  h << "<script id=\"report-data\" type=\"application/json\">{";
+  bool first = true;
+  for (const auto& [key, value] : data.items()) {
+    h << (first ? "" : ",") << json_safe(json_text(json(key))) << ':';
+    first = false;
+    if (key != "recordings") {
+      h << json_safe(json_text(value));
+      continue;
+    }
+    h << '[';
+    for (std::size_t i = 0; i < pages.size(); ++i) h << (i ? "," : "") << pages[i].data_json;
+    h << ']';
+  }
+  h << "}</script>";
   h << "<script>" << script_safe(js) << "</script><script>" << report_script() << "</script></body></html>\n";
   return h.str();
 }

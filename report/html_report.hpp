@@ -23,13 +23,34 @@
 // <body>; script errors are counted in data-js-errors and listed on the page
 // (the headless-browser test reads both).
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace fourbar {
 
+/// One recording's share of the page, made apart from the rest (by the
+/// report's worker that made the recording, while others still compute):
+/// its section and its entry of the page's data, numbers rounded.
+struct RecordingPage {
+  std::string section_html;
+  std::string data_json;  ///< the record as JSON text, safe inside <script>
+};
+
+/// `record` (the whole record, series included) as the `index`-th recording
+/// of the page. Takes the record by value: it is rounded in place.
+RecordingPage render_recording_page(nlohmann::json record, std::size_t index);
+
 /// The HTML text. RunError when dygraphs is not installed (names the package).
 std::string render_html_report(const nlohmann::json& session);
+
+/// The same text from the session record without its recordings' bulk
+/// (`session["recordings"]` may hold the light records of summary_of: the
+/// page reads only their names, verdicts and tables) and each recording's
+/// page part in the same order: render_html_report(s) ==
+/// render_html_report(light s, render_recording_page of each recording).
+std::string render_html_report(const nlohmann::json& session, const std::vector<RecordingPage>& recordings);
 
 }  // namespace fourbar

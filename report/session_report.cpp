@@ -70,15 +70,22 @@ json input_files(const std::filesystem::path& rec, const std::filesystem::path& 
 
 std::size_t default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
 
+namespace {
+
+/// The record without what only the page and the series files read.
+json light_record(const json& r) {
+  json light = json::object();
+  for (const auto& [key, value] : r.items())
+    if (key != "series" && key != "spectra" && key != "impacts" && key != "grid") light[key] = value;
+  if (light.contains("fitted_theory")) light["fitted_theory"].erase("series");
+  return light;
+}
+
+}  // namespace
+
 json summary_of(const json& session) {
   json s = session;
-  for (json& r : s["recordings"]) {
-    r.erase("series");
-    r.erase("spectra");
-    r.erase("impacts");
-    r.erase("grid");
-    if (r.contains("fitted_theory")) r["fitted_theory"].erase("series");
-  }
+  for (json& r : s["recordings"]) r = light_record(r);
   return s;
 }
 
@@ -143,7 +150,25 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     r["from_cache"] = cached;
     return std::move(r);
   };
+  // The verdict in words of every analysed recording (never cached: a fit may
+  // come later), with the fit the report shows (--fit, or SESSION_DIR/fit/fit.json).
+  const std::string fit_name = fit ? std::filesystem::proximate(fit->file, o.session_dir).string() : std::string();
+  // Per recording, kept to the end: the record without its bulk (summary.json
+  // and the session's tables), its row of the fit section and its page part.
+  // The bulk is read by the worker that made it (series files, verdict, fit
+  // row, page) and freed there.
+  const std::string made_by = series_made_by(kVersion, o.command_line);
+  ensure_output_dir(out_dir / "series");
   std::vector<json> computed(n);
+  std::vector<std::optional<json>> fit_rows(n);
+  std::vector<RecordingPage> pages(n);
+  auto finish = [&](std::size_t i, json record) {
+    write_recording_series(record, out_dir, made_by, o.csv_comments);
+    if (is_analysed(record)) record["verdict"] = verdict_json(verdict_of(verdict_inputs(record, fit ? &fit->fit : nullptr, fit_name)));
+    if (fit) fit_rows[i] = fit_report_row(*fit, record);
+    computed[i] = light_record(record);
+    pages[i] = render_recording_page(std::move(record), i);
+  };
   // `jobs` is the number of cores to use: as many recordings at once (at
   // most all of them), each analysed on its share of the cores, so that
   // fewer recordings than cores (one long recording) still use them all and
@@ -153,18 +178,13 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   analysis.threads = static_cast<unsigned>(std::max<std::size_t>(1, cores / jobs));
   {
     std::atomic<std::size_t> next{0}, done{0};
-    // Each recording's series are written by the worker that made it, as it
-    // finishes (the session's tables, the summary and the page come after all).
-    const std::string made_by = series_made_by(kVersion, o.command_line);
-    ensure_output_dir(out_dir / "series");
     Progress bar("report", n, o.progress);
     std::mutex io;
     std::exception_ptr failure;
     auto worker = [&] {
       for (std::size_t i; (i = next.fetch_add(1)) < n;) {
         try {
-          computed[i] = record_of(i);
-          write_recording_series(computed[i], out_dir, made_by, o.csv_comments);
+          finish(i, record_of(i));
         } catch (...) {  // an output that cannot be written: stop every worker, rethrow below
           const std::lock_guard lock(io);
           if (!failure) failure = std::current_exception();
@@ -183,12 +203,6 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     pool.clear();  // joins
     if (failure) std::rethrow_exception(failure);
   }
-
-  // The verdict in words of every analysed recording (never cached: a fit may
-  // come later), with the fit the report shows (--fit, or SESSION_DIR/fit/fit.json).
-  const std::string fit_name = fit ? std::filesystem::proximate(fit->file, o.session_dir).string() : std::string();
-  for (json& r : computed)
-    if (is_analysed(r)) r["verdict"] = verdict_json(verdict_of(verdict_inputs(r, fit ? &fit->fit : nullptr, fit_name)));
 
   ReportOutcome out;
   json records = json::array();
@@ -225,7 +239,10 @@ ReportOutcome run_session_report(const ReportOptions& o) {
                   {"other_files", others},
                   {"severity", severity_record(records)}};
   if (fit) {
-    session["fit"] = fit_report_record(*fit, records, o.session_dir);
+    std::vector<json> rows;
+    for (auto& row : fit_rows)
+      if (row) rows.push_back(std::move(*row));
+    session["fit"] = fit_report_record(*fit, rows, o.session_dir);
     out.fit = fit->file;
   }
 
@@ -233,12 +250,13 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   // session's tables, the summary, the report last (each written whole or not
   // at all). With more than one core the page is put together on a thread of
   // its own while the tables and the summary are written (the same text either way).
+  // `session` holds the light records: it is the summary as it stands.
   std::future<std::string> html;
-  if (cores > 1) html = std::async(std::launch::async, [&session] { return render_html_report(session); });
+  if (cores > 1) html = std::async(std::launch::async, [&session, &pages] { return render_html_report(session, pages); });
   write_session_series(session, out_dir, o.csv_comments);
   out.summary = out_dir / "summary.json";
-  write_text_file(out.summary, json_text(summary_of(session), 2) + "\n");
-  write_text_file(o.out_html, html.valid() ? html.get() : render_html_report(session));
+  write_text_file(out.summary, json_text(session, 2) + "\n");
+  write_text_file(o.out_html, html.valid() ? html.get() : render_html_report(session, pages));
   out.html = o.out_html;
   out.verdict_table = verdict_text_table(session["recordings"]);
   return out;

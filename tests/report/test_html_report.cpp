@@ -11,6 +11,8 @@
 #include "compare/recording_comparison.hpp"
 #include "report/comparison_record.hpp"
 #include "report/html_report.hpp"
+#include "report/html_text.hpp"
+#include "report/session_report.hpp"
 #include "report/quantity_names.hpp"
 #include "support/headless_browser.hpp"
 
@@ -71,6 +73,34 @@ TEST(HtmlReport, SelfContainedAndEscaped) {
   EXPECT_NE(html.find("<h3>rocker angular velocity ω4 (rad/s): measured, clearance model, nominal</h3>"), std::string::npos);
   EXPECT_EQ(html.find(">alpha3_rad_s2"), std::string::npos);
   EXPECT_NE(html.find("\"names\":{"), std::string::npos);  // the same table for the scripts
+}
+
+// The page's data is put together from each recording's part (made by the
+// worker that made the recording) and the rest of the session: it must read
+// back as the whole session, rounded, and the page must not depend on whether
+// the session it is given still holds the recordings' bulk.
+TEST(HtmlReport, DataAssembledFromRecordingPartsIsTheWholeSession) {
+  const json session = synthetic_session();
+  const std::string html = render_html_report(session);
+  const std::string open = "<script id=\"report-data\" type=\"application/json\">";
+  const std::size_t a = html.find(open);
+  ASSERT_NE(a, std::string::npos);
+  const std::size_t b = html.find("</script>", a);
+  const json data = json::parse(html.substr(a + open.size(), b - a - open.size()));
+  json expected = session;
+  round_numbers(expected);
+  expected["names"] = quantity_names_json();
+  EXPECT_EQ(data, expected);
+  ASSERT_TRUE(data["recordings"][0].contains("series"));  // the bulk is in the page
+
+  std::vector<RecordingPage> pages;
+  for (std::size_t i = 0; i < session["recordings"].size(); ++i)
+    pages.push_back(render_recording_page(session["recordings"][i], i));
+  const json light = summary_of(session);
+  ASSERT_FALSE(light["recordings"][0].contains("series"));
+  EXPECT_EQ(render_html_report(light, pages), html);
+  pages.pop_back();
+  EXPECT_THROW(render_html_report(light, pages), std::logic_error);
 }
 
 TEST(HtmlReport, QuantityNames) {
