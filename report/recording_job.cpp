@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "fit/response_statistics.hpp"
 #include "report/comparison_record.hpp"
 #include "report/setup_check_record.hpp"
 #include "report/views_record.hpp"
@@ -110,6 +111,37 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
   return r;
 }
 
+namespace {
+
+/// The relative standard error of a (scatter) = model / measured turn-to-turn
+/// scatter of α3 (α4): the delete-block jackknife errors of the measured and
+/// the model spread (fit/response_statistics.hpp: √ mean over θ of the
+/// variance over turns, blocks of consecutive turns) in quadrature, as
+/// magnification.scatter_relative_error. Left out with fewer than 4 turns on
+/// either side.
+void add_scatter_errors(json& r, const RecordingAnalysis& a, const MatchedTheory& t) {
+  const std::array<std::pair<const std::optional<LinkResult>*, LinkQuantity>, 2> links{
+      {{&a.coupler, LinkQuantity::alpha3}, {&a.rocker, LinkQuantity::alpha4}}};
+  constexpr std::size_t spread = index_of(ResponseStatistic::spread);
+  for (const auto& [link, q] : links) {
+    const std::string key(column_name(q));
+    if (!*link || !r["metrics"].contains(key)) continue;
+    const TheorySeries& s = t.series[index_of(q)];
+    const std::vector<double>& turns = (**link).alpha_grid;
+    const std::size_t n = s.nominal.size();
+    if (n == 0 || turns.size() % n != 0 || s.clearance_revolutions.size() % n != 0 || turns.size() / n < 4 ||
+        s.clearance_revolutions.size() / n < 4)
+      continue;
+    const StatisticValues measured = response_statistics(turns, s.nominal);
+    const StatisticValues model = response_statistics(s.clearance_revolutions, s.nominal);
+    if (!(measured.value[spread] > 0) || !(model.value[spread] > 0)) continue;
+    r["metrics"][key]["magnification"]["scatter_relative_error"] =
+        std::hypot(measured.standard_error[spread] / measured.value[spread], model.standard_error[spread] / model.value[spread]);
+  }
+}
+
+}  // namespace
+
 json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& options,
                        const TheorySettings& settings, const TheorySettings* fitted) {
   try {
@@ -133,6 +165,7 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
     const MatchedTheory t = theory_at(settings);
     const RecordingComparison c = compare_response(measured, t);
     json r = recording_record(a, measured, t, c);
+    add_scatter_errors(r, a, t);
     if (fitted) {
       // The same theory path at the fitted contact parameters.
       const MatchedTheory tf = theory_at(*fitted);

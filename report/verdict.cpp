@@ -159,12 +159,31 @@ std::string fit_sentence(const VerdictInputs& in) {
   return s + ".";
 }
 
-VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, std::string& a_from) {
+/// The agreement sentence's clause on a (scatter)'s own error: whether the
+/// turns recorded resolve a difference from 1, and how many would.
+std::string scatter_error_clause(double a, double se, std::size_t turns) {
+  const bool one_inside = std::abs(a - 1) <= 2 * se;
+  std::string s = " a (scatter) has a standard error of " + num(se, 2) + " from " + std::to_string(turns) +
+                  " measured turns and the model's turns (jackknife over turns)";
+  if (one_inside && (a < kAgreeLow || a > kAgreeHigh))
+    return s + ": 1 is within a ± 2 standard errors, so these turns do not resolve the difference; record more turns "
+               "before changing the model.";
+  if (!one_inside && a >= kAgreeLow && a <= kAgreeHigh)
+    return s + ": a differs from 1 by more than 2 standard errors, though within " + pct(kAgreeHigh - 1) + ".";
+  if (one_inside && 2 * se > kAgreeHigh - 1)
+    return s + ": larger than the " + pct(kAgreeHigh - 1) + " this judgement allows, so agreement is not resolved either; "
+               "record more turns to tell.";
+  return s + ".";
+}
+
+VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, std::optional<double>& a_se,
+                           std::string& a_from) {
   const bool spectral = in.a_spectral && !in.orders_used.empty();
   const bool chaotic = in.effect_to_floor.value_or(0) < kEffectSeen && scatter_of(in) >= kScatterSeen && in.spread_rms > 0;
   std::string from;
   if (chaotic) {
     a = in.model_spread_rms / in.spread_rms;
+    if (in.scatter_relative_error) a_se = *a * *in.scatter_relative_error;
     a_from = "scatter";
     from = "a (scatter) = model / measured turn-to-turn scatter of α3";
   } else if (spectral) {
@@ -178,7 +197,7 @@ VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, st
     from = "a (time)";
   }
   if (!a) return {VerdictLevel::not_judged, "no a", "No magnification factor: the measurement equals the nominal response." + fit_sentence(in)};
-  const std::string words = "a " + num(*a, 2) + " (" + a_from + ")";
+  const std::string words = "a " + num(*a, 2) + (a_se ? " ± " + num(*a_se, 2) : std::string()) + " (" + a_from + ")";
   if (effect_none(in) || (!in.effect_to_floor && in.spread_rms == 0))
     return {VerdictLevel::not_judged, words + ", not meaningful",
             from + " = " + num(*a, 3) + " compares the model with noise: no clearance effect was measured." + fit_sentence(in)};
@@ -199,6 +218,7 @@ VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, st
     p.sentence += "model and measurement agree within " + pct(kAgreeHigh - 1) + " (" + e + ", " + in.contact + ")";
   if (p.level != VerdictLevel::good && !in.fit) p.sentence += "; `fourbar fit SESSION_DIR` identifies e (and μ) from the session";
   p.sentence += ".";
+  if (chaotic && a_se) p.sentence += scatter_error_clause(*a, *a_se, in.revolutions);
   if (chaotic)
     p.sentence += " The impacts are chaotic: the effect is in the scatter between turns, not in the averaged curve, so a (time)" +
                   (in.a_time ? " = " + num(*in.a_time, 3) : std::string()) + " and a (spectral)" +
@@ -248,7 +268,7 @@ Verdict verdict_of(const VerdictInputs& in) {
   v.setup = setup_part(in);
   v.measurement = measurement_part(in);
   v.effect = effect_part(in);
-  v.agreement = agreement_part(in, v.a, v.a_from);
+  v.agreement = agreement_part(in, v.a, v.a_standard_error, v.a_from);
   for (const VerdictPart* p : {&v.setup, &v.measurement, &v.effect, &v.agreement}) v.overall = worst(v.overall, p->level);
   return v;
 }
@@ -282,6 +302,7 @@ VerdictInputs verdict_inputs(const json& r, const json* fit, const std::string& 
   for (const json& k : path(mg, {"orders_used"}).is_array() ? path(mg, {"orders_used"}) : json::array()) in.orders_used.push_back(k.get<int>());
   in.spread_rms = rms_of(path(r, {"series", "alpha3_rad_s2", "measured_std"}));
   in.model_spread_rms = rms_of(path(r, {"series", "alpha3_rad_s2", "clearance_std"}));
+  in.scatter_relative_error = opt(path(mg, {"scatter_relative_error"}));
   in.restitution = num_or(path(r, {"theory", "settings", "restitution"}), 0);
   const json& contact = path(r, {"theory", "settings", "contact"});
   in.contact = contact.is_string() ? contact.get<std::string>() : "";
@@ -315,6 +336,7 @@ json verdict_json(const Verdict& v) {
           {"clearance_effect", part(v.effect)},
           {"model_agreement", part(v.agreement)},
           {"a", v.a ? json(*v.a) : json(nullptr)},
+          {"a_standard_error", v.a_standard_error ? json(*v.a_standard_error) : json(nullptr)},
           {"a_from", v.a_from}};
 }
 

@@ -86,6 +86,8 @@ struct VerdictInputs {
   double clearance_mm = 0;
   std::optional<double> effect_to_floor, model_effect_to_floor;
   double spread_rms = 0, model_spread_rms = 0;  ///< turn-to-turn scatter of α3, measured and model
+  /// Relative standard error of their ratio, a (scatter) (jackknife over turns; absent in older records).
+  std::optional<double> scatter_relative_error;
   int nominal_band_orders = 0;
   // Model agreement.
   std::optional<double> a_time, a_spectral;
@@ -107,6 +109,7 @@ struct Verdict {
   /// from: "spectral", "time", or "scatter" (model over measured turn-to-turn
   /// scatter, when the effect is chaotic and lives in the scatter, not in the average).
   std::optional<double> a;
+  std::optional<double> a_standard_error;  ///< of a (scatter), when known
   std::string a_from;
   VerdictLevel overall = VerdictLevel::not_judged;  ///< the worst judged part
 };
@@ -118,7 +121,7 @@ Verdict verdict_of(const VerdictInputs& in);
 VerdictInputs verdict_inputs(const nlohmann::json& record, const nlohmann::json* fit = nullptr,
                              const std::string& fit_file = {});
 
-/// {overall, setup|measurement|clearance_effect|model_agreement: {level, words, sentence}}.
+/// {overall, setup|measurement|clearance_effect|model_agreement: {level, words, sentence}, a, a_standard_error, a_from}.
 nlohmann::json verdict_json(const Verdict& v);
 
 }  // namespace fourbar

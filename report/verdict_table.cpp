@@ -26,7 +26,10 @@ std::string verdict_text_table(const json& records) {
         row.push_back(v[p]["level"].get<std::string>() + ": " + v[p]["words"].get<std::string>());
       // a as the verdict judged it: spectral, time or scatter.
       std::string a = "–";
-      if (v.value("a", json()).is_number()) a = format_number(v["a"].get<double>(), 3) + " (" + v.value("a_from", "") + ")";
+      if (v.value("a", json()).is_number())
+        a = format_number(v["a"].get<double>(), 3) +
+            (v.value("a_standard_error", json()).is_number() ? " ± " + format_number(v["a_standard_error"].get<double>(), 2) : std::string()) +
+            " (" + v.value("a_from", "") + ")";
       row.push_back(a);
     }
     rows.push_back(std::move(row));

@@ -223,6 +223,43 @@ TEST_F(SessionReport, ClearanceRecordingShowsTheModelsImpactBursts) {
   EXPECT_LT(c["theory"]["energy_residual_rel"].get<double>(), 1e-5);
 }
 
+// a (scatter) = model / measured turn-to-turn scatter comes with its standard
+// error (jackknife over turns); the theory here is the model that made the
+// recording, so a is 1 within a few of its errors. (Calibrated over 35
+// virtual-rig recordings at the truth: bench/scatter_error_calibration.sh.)
+TEST_F(SessionReport, ScatterRatioAtTheTruthIsOneWithinItsError) {
+  const json& c = recording("clearance.flac");
+  const json& mg = c["metrics"]["alpha3_rad_s2"]["magnification"];
+  ASSERT_TRUE(mg.contains("scatter_relative_error")) << mg.dump(2);
+  const double rel = mg["scatter_relative_error"].get<double>();
+  EXPECT_GT(rel, 0.01);
+  EXPECT_LT(rel, 0.5);
+  // The two scatters from the series file beside the report (the per-angle standard deviations).
+  std::ifstream csv(dir_->path() / "out" / "series" / "clearance.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  std::vector<std::string> head;
+  for (std::stringstream h(line); std::getline(h, line, ',');) head.push_back(line);
+  const auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+  };
+  const std::size_t ms = col("alpha3_measured_std_rad_s2"), cs = col("alpha3_clearance_std_rad_s2");
+  ASSERT_LT(std::max(ms, cs), head.size());
+  double m2 = 0, c2 = 0;
+  while (std::getline(csv, line)) {
+    std::vector<double> v;
+    for (std::stringstream r(line); std::getline(r, line, ',');) v.push_back(std::stod(line));
+    m2 += v[ms] * v[ms], c2 += v[cs] * v[cs];
+  }
+  const double a = std::sqrt(c2 / m2);
+  EXPECT_LT(std::abs(a - 1), 3 * rel * a) << "a (scatter) " << a << " ± " << rel * a;
+  const json& v = c["verdict"];
+  if (v["a_from"] == "scatter") {
+    EXPECT_NEAR(v["a"].get<double>(), a, 1e-9 * a);
+    EXPECT_NEAR(v["a_standard_error"].get<double>(), rel * a, 1e-9 * a);
+  }
+}
+
 // The verdict on virtual-rig truth: the clearance-free recording (its
 // manifest still carries the rig's 0.254 mm) shows no clearance effect above
 // the noise floor while the model expects one; the clearance recording shows

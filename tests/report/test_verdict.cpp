@@ -169,6 +169,47 @@ TEST(Verdict, ChaoticEffectIsJudgedByTheScatter) {
   EXPECT_EQ(verdict_json(v)["a_from"], "scatter");
 }
 
+// a (scatter) is said with its standard error, and the sentence says whether
+// the turns recorded resolve a difference from 1.
+TEST(Verdict, ScatterRatioCarriesItsErrorAndSaysWhatItResolves) {
+  VerdictInputs in = clean();
+  in.effect_to_floor = 1.2, in.spread_rms = 40, in.model_spread_rms = 28;  // a = 0.7
+  in.scatter_relative_error = 0.1;                                          // ± 0.07: 1 is 4.3 SE away
+  Verdict v = verdict_of(in);
+  ASSERT_TRUE(v.a && v.a_standard_error);
+  EXPECT_DOUBLE_EQ(*v.a_standard_error, 0.07);
+  EXPECT_EQ(v.agreement.words, "a 0.7 ± 0.07 (scatter)");
+  EXPECT_EQ(v.agreement.level, VerdictLevel::attention);
+  EXPECT_NE(v.agreement.sentence.find("standard error of 0.07 from 40 measured turns"), std::string::npos)
+      << v.agreement.sentence;
+  EXPECT_EQ(v.agreement.sentence.find("do not resolve"), std::string::npos) << "0.7 ± 0.07 is resolved";
+  EXPECT_DOUBLE_EQ(verdict_json(v)["a_standard_error"].get<double>(), 0.07);
+
+  in.scatter_relative_error = 0.25;  // ± 0.175: 1 is within 2 SE
+  v = verdict_of(in);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::attention) << "the level keeps its documented thresholds";
+  EXPECT_NE(v.agreement.sentence.find("these turns do not resolve the difference; record more turns"), std::string::npos)
+      << v.agreement.sentence;
+
+  in.model_spread_rms = 44, in.scatter_relative_error = 0.2;  // a = 1.1 ± 0.22: agreement not resolved either
+  v = verdict_of(in);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::good);
+  EXPECT_NE(v.agreement.sentence.find("agreement is not resolved either"), std::string::npos) << v.agreement.sentence;
+
+  in.model_spread_rms = 48, in.scatter_relative_error = 0.05;  // a = 1.2 ± 0.06: 3.3 SE from 1, inside 25 %
+  v = verdict_of(in);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::good);
+  EXPECT_NE(v.agreement.sentence.find("differs from 1 by more than 2 standard errors, though within 25 %"), std::string::npos)
+      << v.agreement.sentence;
+
+  in.scatter_relative_error.reset();  // an older record: no error, nothing claimed
+  v = verdict_of(in);
+  EXPECT_FALSE(v.a_standard_error);
+  EXPECT_EQ(v.agreement.words, "a 1.2 (scatter)");
+  EXPECT_EQ(v.agreement.sentence.find("standard error"), std::string::npos);
+  EXPECT_TRUE(verdict_json(v)["a_standard_error"].is_null());
+}
+
 TEST(Verdict, FitParametersAreNamed) {
   VerdictInputs in = clean();
   in.a_spectral = 1.6;
@@ -199,7 +240,8 @@ json record() {
                     {"nominal_band_orders", 5},
                     {"floor_rms", 2.0},
                     {"effect_to_floor", 7.0},
-                    {"model_effect_to_floor", 8.0}}}}}}}};
+                    {"model_effect_to_floor", 8.0},
+                    {"scatter_relative_error", 0.12}}}}}}}};
 }
 
 TEST(VerdictInputs, ReadFromTheRecordAndTheFit) {
@@ -215,6 +257,7 @@ TEST(VerdictInputs, ReadFromTheRecordAndTheFit) {
   EXPECT_DOUBLE_EQ(in.model_spread_rms, std::sqrt((36.0 + 64.0) / 2));
   EXPECT_EQ(in.orders_used, (std::vector<int>{6, 8}));
   EXPECT_EQ(*in.effect_to_floor, 7.0);
+  EXPECT_EQ(*in.scatter_relative_error, 0.12);
   ASSERT_TRUE(in.fit);
   EXPECT_DOUBLE_EQ(in.fit->restitution, 0.4);
   EXPECT_FALSE(in.fit->restitution_identifiable);
