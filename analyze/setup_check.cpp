@@ -454,7 +454,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   }
   out.fit_manifest = fit_manifest;
   if (!best.swapped)
-    add_common_scale_finding(out, judged_scales, lim.common_scale_tolerance, manifest.rig_file.string(),
+    add_common_scale_finding(out, judged_scales, lim.common_scale_tolerance, manifest.rig_file.string(), fs,
                              lim.min_confidence);
   if (!best.swapped) add_channel_scale_findings(out, channel_scales, lim.channel_scale_tolerance);
   return out;

@@ -61,7 +61,7 @@ void add_channel_scale_findings(SetupCheck& out, const std::vector<std::pair<con
 }
 
 void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales, double tolerance,
-                              const std::string& rig_file, double min_confidence) {
+                              const std::string& rig_file, double sample_rate_hz, double min_confidence) {
   if (scales.size() < 2) return;
   double mean = 0, nearest = 1e300;
   bool above = true, below = true;
@@ -77,10 +77,12 @@ void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales
   if (confidence < min_confidence) return;
   std::string each;
   for (double k : scales) each += (each.empty() ? "" : ", ") + format_number(k, 3);
-  add_finding(out, "common_scale", "", "the link lengths in " + rig_file + ", or full_scale_V",
+  add_finding(out, "common_scale", "", "the link lengths in " + rig_file + ", full_scale_V, or the recording's sample rate",
               "the rig's nominal motion (factor 1)",
               "every accelerometer reads " + format_number(1 + mean, 3) + " x it (" + each +
-                  "); a cause common to all sensors: a wrong rig file or recording scale",
+                  "); a cause common to all sensors: a wrong rig file, recording scale or sample rate (the file says " +
+                  format_number(sample_rate_hz, 6) + " Hz; a DAQ that really sampled at about " +
+                  format_number(sample_rate_hz * std::sqrt(1 + mean), 5) + " Hz would read so)",
               confidence);
 }
 

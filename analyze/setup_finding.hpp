@@ -26,12 +26,16 @@ void add_corner_finding(SetupCheck& out, const ChannelSpec& channel, double data
 /// Every judged accelerometer (at least two) reads the rig's nominal motion
 /// at a common factor beyond `tolerance` (same side, e.g. 0.05: 5 %): one
 /// sensor's calibration rarely errs like all the others', so the cause is
-/// common to all — the rig file's link lengths, or the recording's
-/// full_scale_V. The finding's confidence is 1 − (the factors' spread /
-/// their mean distance from 1): how well the channels agree on one factor.
-/// `scales`: |A| of each judged channel (1: as the manifest says).
+/// common to all — the rig file's link lengths, the recording's
+/// full_scale_V, or its sample rate: a file that says fs while the DAQ
+/// sampled at fs·q reads every speed 1/q and every nominal acceleration 1/q²
+/// of the truth, so the sensors read q² × the nominal motion (the finding
+/// names the q that its factor gives). The finding's confidence is
+/// 1 − (the factors' spread / their mean distance from 1): how well the
+/// channels agree on one factor. `scales`: |A| of each judged channel (1: as
+/// the manifest says); `sample_rate_hz`: the file's.
 void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales, double tolerance,
-                              const std::string& rig_file, double min_confidence);
+                              const std::string& rig_file, double sample_rate_hz, double min_confidence);
 
 /// A channel whose scale (|A| with the manifest's position, 1: as the
 /// manifest says) lies beyond 1 ± `tolerance` while the scale factor 1.5

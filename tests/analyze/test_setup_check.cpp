@@ -8,6 +8,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <iterator>
+#include <fstream>
+#include <cstdint>
 
 #include "setup_mistakes.hpp"
 
@@ -75,6 +79,52 @@ INSTANTIATE_TEST_SUITE_P(
              std::to_string(static_cast<int>(c.snr_db)) + "dB" + (c.ac_coupled ? "AC" : "DC") +
              (c.coupler_only ? "CouplerOnly" : "");
     });
+
+// A file whose header gives the wrong sample rate (an export at another rate
+// than the DAQ's): every speed reads fs_file/fs_true of the truth and every
+// sensor fs_true²/fs_file² × the nominal motion at that speed. The common
+// scale names the sample rate among its causes, with the rate the data give.
+TEST(SetupCheck, WrongSampleRateInTheFileIsNamedWithTheDataRate) {
+  VirtualSetup v(350);
+  SetupCase c;
+  c.clearance = true;
+  c.snr_db = 30;
+  c.revolutions = 12;
+  const auto rec = testing::write_setup_case(v, c, "rec.wav");
+  // The WAV header's sample rate (bytes 24-27) and byte rate (28-31), little-endian.
+  std::string bytes;
+  {
+    std::ifstream in(rec, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  ASSERT_EQ(bytes.compare(0, 4, "RIFF"), 0);
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t v32 = 0;
+    for (int i = 3; i >= 0; --i) v32 = (v32 << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
+    return v32;
+  };
+  auto put32 = [&](std::size_t at, std::uint32_t v32) {
+    for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<char>((v32 >> (8 * i)) & 0xFF);
+  };
+  ASSERT_EQ(u32(24), static_cast<std::uint32_t>(c.sample_rate_hz));
+  const std::uint32_t wrong = 9600, frame_bytes = u32(28) / u32(24);
+  put32(24, wrong), put32(28, wrong * frame_bytes);
+  std::ofstream(rec, std::ios::binary | std::ios::trunc) << bytes;
+
+  const SetupCheck k = analyse(rec, Mistake::none).check;
+  const double q2 = (c.sample_rate_hz / wrong) * (c.sample_rate_hz / wrong);  // 1.138
+  for (const ChannelSetupEstimate& e : k.channels) EXPECT_NEAR(e.scale, q2, 0.03) << describe(k);
+  const SetupFinding* f = nullptr;
+  for (const SetupFinding& g : k.findings)
+    if (g.item == "common_scale") f = &g;
+  ASSERT_NE(f, nullptr) << describe(k);
+  EXPECT_NE(f->key.find("sample rate"), std::string::npos) << f->key;
+  EXPECT_NE(f->data.find("the file says 9600 Hz"), std::string::npos) << f->data;
+  const std::string at = "really sampled at about ";
+  const std::size_t p = f->data.find(at);
+  ASSERT_NE(p, std::string::npos) << f->data;
+  EXPECT_NEAR(std::stod(f->data.substr(p + at.size())), c.sample_rate_hz, 0.01 * c.sample_rate_hz) << f->data;
+}
 
 // What the data say is the truth, within the estimate's resolution: the
 // finding tells the technician the value to write, not only that one is wrong.
