@@ -181,6 +181,13 @@ VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, st
   const bool spectral = in.a_spectral && !in.orders_used.empty();
   const bool chaotic = in.effect_to_floor.value_or(0) < kEffectSeen && scatter_of(in) >= kScatterSeen && in.spread_rms > 0;
   std::string from;
+  if (chaotic && in.model_revolutions > 0 && in.model_revolutions < kMinModelTurnsForScatter)
+    return {VerdictLevel::attention, "too few model turns",
+            "The clearance effect is chaotic (in the scatter between turns), so the model is compared by its own "
+            "turn-to-turn scatter; the theory averaged " + std::to_string(in.model_revolutions) +
+                (in.model_revolutions == 1 ? " turn" : " turns") + ", too few for one (at least " +
+                std::to_string(kMinModelTurnsForScatter) + "): set [theory] averaged_revolutions = 20 in session.toml." +
+                fit_sentence(in)};
   if (chaotic) {
     a = in.model_spread_rms / in.spread_rms;
     if (in.scatter_relative_error) a_se = *a * *in.scatter_relative_error;
@@ -304,6 +311,7 @@ VerdictInputs verdict_inputs(const json& r, const json* fit, const std::string& 
   in.model_spread_rms = rms_of(path(r, {"series", "alpha3_rad_s2", "clearance_std"}));
   in.scatter_relative_error = opt(path(mg, {"scatter_relative_error"}));
   in.restitution = num_or(path(r, {"theory", "settings", "restitution"}), 0);
+  in.model_revolutions = static_cast<std::size_t>(num_or(path(r, {"theory", "settings", "averaged_revolutions"}), 0));
   const json& contact = path(r, {"theory", "settings", "contact"});
   in.contact = contact.is_string() ? contact.get<std::string>() : "";
   if (fit && fit->is_object() && path(*fit, {"parameters", "restitution", "value"}).is_number()) {

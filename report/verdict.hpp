@@ -53,6 +53,10 @@ inline constexpr double kAgreeLow = 0.8, kAgreeHigh = 1.25, kAgreeProblemLow = 0
 /// judged by a (scatter) = model scatter / measured scatter: the averages of
 /// chaotic turns compare chance residues.
 inline constexpr double kTimeSpectralApart = 1.5;
+/// a (scatter) compares the model's turn-to-turn scatter with the measured
+/// one: a theory averaged over fewer turns has no scatter to compare (one
+/// turn: none at all, a = 0), so the agreement then asks for more turns.
+inline constexpr std::size_t kMinModelTurnsForScatter = 8;
 
 struct VerdictFinding {
   std::string item, channel, key, manifest, data;
@@ -93,6 +97,7 @@ struct VerdictInputs {
   std::optional<double> a_time, a_spectral;
   std::vector<int> orders_used;
   double restitution = 0;               ///< e of the theory in the report
+  std::size_t model_revolutions = 0;    ///< turns the theory averaged ([theory] averaged_revolutions; 0: unknown)
   std::string contact;
   std::optional<VerdictFit> fit;
 };

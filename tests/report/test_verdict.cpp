@@ -210,6 +210,28 @@ TEST(Verdict, ScatterRatioCarriesItsErrorAndSaysWhatItResolves) {
   EXPECT_TRUE(verdict_json(v)["a_standard_error"].is_null());
 }
 
+// A theory averaged over one turn has no scatter (a (scatter) = 0 would
+// read "the model is infinitely gentler"): the agreement asks for turns.
+TEST(Verdict, ScatterNeedsTheModelsTurns) {
+  VerdictInputs in = clean();
+  in.effect_to_floor = 1.2, in.spread_rms = 40, in.model_spread_rms = 0;
+  in.model_revolutions = 1;
+  Verdict v = verdict_of(in);
+  EXPECT_FALSE(v.a);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::attention);
+  EXPECT_EQ(v.agreement.words, "too few model turns");
+  EXPECT_NE(v.agreement.sentence.find("averaged 1 turn, too few"), std::string::npos) << v.agreement.sentence;
+  EXPECT_NE(v.agreement.sentence.find("averaged_revolutions = 20"), std::string::npos);
+  in.model_revolutions = kMinModelTurnsForScatter, in.model_spread_rms = 44;
+  v = verdict_of(in);
+  ASSERT_TRUE(v.a);
+  EXPECT_EQ(v.a_from, "scatter");
+  // Not chaotic (the effect stands in the order lines): the model's turns do not matter.
+  in = clean();
+  in.model_revolutions = 1;
+  EXPECT_EQ(verdict_of(in).a_from, "spectral");
+}
+
 TEST(Verdict, FitParametersAreNamed) {
   VerdictInputs in = clean();
   in.a_spectral = 1.6;
@@ -228,7 +250,7 @@ json record() {
               {"setup_check", {{"status", "ok"}, {"findings", json::array()}, {"fit", 0.99}}},
               {"operating_point", {{"speed_rpm", 300.0}, {"clearance_mm", 0.254}, {"revolutions_averaged", 30}}},
               {"acquisition", {{"revolutions_clipped", 1}, {"clipping_checked", true}, {"speed_rpm", {{"mean", 300.0}, {"std", 0.6}}}}},
-              {"theory", {{"settings", {{"restitution", 0.5}, {"contact", "smooth"}}}}},
+              {"theory", {{"settings", {{"restitution", 0.5}, {"contact", "smooth"}, {"averaged_revolutions", 20}}}}},
               {"series", {{"alpha3_rad_s2", {{"measured_std", {3.0, 4.0}}, {"clearance_std", {6.0, 8.0}}}}}},
               {"metrics",
                {{"alpha3_rad_s2",
@@ -258,6 +280,7 @@ TEST(VerdictInputs, ReadFromTheRecordAndTheFit) {
   EXPECT_EQ(in.orders_used, (std::vector<int>{6, 8}));
   EXPECT_EQ(*in.effect_to_floor, 7.0);
   EXPECT_EQ(*in.scatter_relative_error, 0.12);
+  EXPECT_EQ(in.model_revolutions, 20u);
   ASSERT_TRUE(in.fit);
   EXPECT_DOUBLE_EQ(in.fit->restitution, 0.4);
   EXPECT_FALSE(in.fit->restitution_identifiable);
