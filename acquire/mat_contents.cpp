@@ -405,16 +405,6 @@ class MatLoader {
 
 }  // namespace
 
-unsigned mat_header_version(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  unsigned char h[128];
-  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return 0;
-  const bool im = h[126] == 'I' && h[127] == 'M', mi = h[126] == 'M' && h[127] == 'I';
-  // The version is written in the file's byte order, as the mark is ("IM" read on this machine).
-  const unsigned version = im ? h[124] | h[125] << 8 : h[124] << 8 | h[125];
-  return (im || mi) && (version == 0x0100 || version == 0x0200) ? version : 0;
-}
-
 MatContents read_mat_contents(const std::filesystem::path& file, const ReaderOptions& options) {
   return MatLoader(file, options).take();
 }

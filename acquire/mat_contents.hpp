@@ -1,10 +1,11 @@
 #pragma once
 // A MATLAB file read whole with libmatio, in this process: the recording's
 // description and its channels (mat_reader.hpp says which variables become
-// channels and where the sample rate comes from). Safe for v5 files, whose
-// structure is checked before libmatio reads them. A damaged v7.3 (HDF5)
-// file can corrupt memory inside libhdf5, so open_mat_reader reads those in
-// a child process and calls this there.
+// channels and where the sample rate comes from). A v5 file's structure is
+// checked before libmatio reads it; a damaged v7.3 (HDF5) file can corrupt
+// memory inside libhdf5. fourbar itself never calls this: open_mat_reader
+// runs fourbar-read-mat (acquire/read_mat_main.cpp), which does; the library
+// fourbar_mat_contents holds it (and libmatio) apart from fourbar_acquire.
 
 #include <filesystem>
 #include <vector>

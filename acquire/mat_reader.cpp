@@ -1,15 +1,22 @@
 #include "acquire/mat_reader.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <new>
 #include <optional>
-#include <string_view>
+#include <string>
+#include <vector>
 
 #include "acquire/mat_contents.hpp"
+#include "acquire/mat_wire.hpp"
 #include "common/child_process.hpp"
 #include "common/error.hpp"
 
@@ -37,159 +44,63 @@ class MatRecording final : public Reader {
   std::uint64_t position_ = 0;
 };
 
-// What the child sends back: a tag, then the contents or an error message.
-// Numbers as their bytes (doubles bit for bit), strings and vectors as a
-// count then their elements.
-enum Tag : std::uint8_t { kContents = 'C', kInputError = 'I', kRunError = 'R', kNoMemory = 'M', kOther = 'X' };
-
-struct WireOut {
-  std::string s;
-  void u64(std::uint64_t v) { s.append(reinterpret_cast<const char*>(&v), sizeof v); }
-  void f64(double v) { s.append(reinterpret_cast<const char*>(&v), sizeof v); }
-  void str(const std::string& v) { u64(v.size()), s += v; }
-  void strs(const std::vector<std::string>& v) {
-    u64(v.size());
-    for (const auto& x : v) str(x);
+/// fourbar-read-mat: FOURBAR_READ_MAT when set, else beside this program
+/// (build/cli/ holds both), else where the build put it (for the test
+/// programs, which live elsewhere in the build tree).
+std::filesystem::path reader_program() {
+  if (const char* env = std::getenv("FOURBAR_READ_MAT"); env && *env) {
+    if (::access(env, X_OK) == 0) return env;
+    throw RunError(std::string("cannot read MATLAB files: FOURBAR_READ_MAT=") + env +
+                   " is not an executable program; point it at fourbar-read-mat (built beside fourbar), or unset it");
   }
-};
-
-/// Reads what WireOut wrote; any read past the end sets `bad` (the data are then garbled).
-struct WireIn {
-  std::string_view s;
-  std::size_t at = 0;
-  bool bad = false;
-  bool take(void* out, std::size_t n) {
-    if (bad || n > s.size() - at) return !(bad = true);
-    std::memcpy(out, s.data() + at, n);
-    at += n;
-    return true;
-  }
-  std::uint64_t u64() {
-    std::uint64_t v = 0;
-    take(&v, sizeof v);
-    return v;
-  }
-  double f64() {
-    double v = 0;
-    take(&v, sizeof v);
-    return v;
-  }
-  std::string str() {
-    const std::uint64_t n = u64();
-    if (bad || n > s.size() - at) return (bad = true), std::string();
-    std::string v(s.substr(at, n));
-    at += n;
-    return v;
-  }
-  std::vector<std::string> strs() {
-    std::vector<std::string> v;
-    for (std::uint64_t n = u64(); !bad && n > 0; --n) v.push_back(str());
-    return v;
-  }
-};
-
-// A field added to RecordingInfo must be sent from the child too (encode,
-// decode) — or the v7.3 path would drop it silently. (Size on x86-64 with
-// libstdc++, the platform fourbar builds on.)
-static_assert(sizeof(RecordingInfo) == 248, "RecordingInfo changed: send the new field in encode() and decode()");
-
-std::string encode(const MatContents& c) {
-  WireOut w;
-  w.s.push_back(static_cast<char>(kContents));
-  const RecordingInfo& i = c.info;
-  w.str(i.format), w.str(i.sample_format);
-  w.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(i.integer_bits)));
-  w.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(i.channels)));
-  w.f64(i.sample_rate_hz), w.u64(i.frames), w.f64(i.start_time_s);
-  w.strs(i.channel_names), w.strs(i.channel_units);
-  w.u64(i.rate_variable ? 1 : 0);
-  if (i.rate_variable) w.str(*i.rate_variable);
-  w.strs(i.notes);
-  w.u64(c.columns.size());
-  for (const auto& col : c.columns) {
-    w.u64(col.size());
-    w.s.append(reinterpret_cast<const char*>(col.data()), col.size() * sizeof(double));
-  }
-  return w.s;
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  std::vector<std::filesystem::path> tried;
+  if (!ec) tried.push_back(self.parent_path() / "fourbar-read-mat");
+#ifdef FOURBAR_READ_MAT_BUILD_PATH
+  tried.emplace_back(FOURBAR_READ_MAT_BUILD_PATH);
+#endif
+  for (const auto& p : tried)
+    if (::access(p.c_str(), X_OK) == 0) return p;
+  std::string where;
+  for (const auto& p : tried) where += (where.empty() ? "" : ", ") + p.string();
+  throw RunError("cannot read MATLAB files: the program fourbar-read-mat that reads them is not installed (looked for " +
+                 where + "); build it with fourbar, or set FOURBAR_READ_MAT to its path");
 }
 
-/// The contents, or nothing when the bytes are not exactly one encoded,
-/// self-consistent MatContents.
-std::optional<MatContents> decode(std::string_view bytes, const std::filesystem::path& file) {
-  WireIn r{bytes.substr(1)};
-  MatContents c;
-  RecordingInfo& i = c.info;
-  i.file = file;
-  i.format = r.str(), i.sample_format = r.str();
-  i.integer_bits = static_cast<int>(static_cast<std::int64_t>(r.u64()));
-  i.channels = static_cast<int>(static_cast<std::int64_t>(r.u64()));
-  i.sample_rate_hz = r.f64(), i.frames = r.u64(), i.start_time_s = r.f64();
-  i.channel_names = r.strs(), i.channel_units = r.strs();
-  if (r.u64() == 1) i.rate_variable = r.str();
-  i.notes = r.strs();
-  for (std::uint64_t n = r.u64(); !r.bad && n > 0; --n) {
-    const std::uint64_t len = r.u64();
-    if (r.bad || len > (r.s.size() - r.at) / sizeof(double)) return std::nullopt;
-    std::vector<double> col(len);
-    r.take(col.data(), len * sizeof(double));
-    c.columns.push_back(std::move(col));
-  }
-  if (r.bad || r.at != r.s.size() || i.channels < 1 || c.columns.size() != static_cast<std::size_t>(i.channels) ||
-      i.channel_names.size() != c.columns.size())
-    return std::nullopt;
-  for (const auto& col : c.columns)
-    if (col.size() != i.frames) return std::nullopt;
-  return c;
+std::string exact(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
 }
 
-/// The child's side: read the file, send the contents or the error.
-std::string read_and_encode(const std::filesystem::path& file, const ReaderOptions& options) {
-  auto error = [](Tag tag, const char* what) { return static_cast<char>(tag) + std::string(what); };
-  try {
-    return encode(read_mat_contents(file, options));
-  } catch (const InputError& e) {
-    return error(kInputError, e.what());
-  } catch (const RunError& e) {
-    return error(kRunError, e.what());
-  } catch (const std::bad_alloc&) {
-    return error(kNoMemory, "");
-  } catch (const std::exception& e) {
-    return error(kOther, e.what());
-  }
-}
-
-/// A v7.3 file, read in a child process (common/child_process.hpp). libhdf5
-/// 1.10 (Debian 12) overflows heap blocks on damaged files (fuzzing:
+/// The file read by fourbar-read-mat, a process of its own. libhdf5 1.10
+/// (Debian 12) overflows heap blocks on damaged v7.3 files (fuzzing:
 /// tests/fuzz/regressions/mat/v73_attribute_heap_overflow_in_libhdf5.mat.bin)
 /// and fourbar cannot check an HDF5 file's structure before it as it does a
-/// v5 file's; in the child, a crash, a hang or corrupted memory ends there.
-/// Errors the reading raises in the child are raised here unchanged; the
-/// contents arrive bit for bit.
-MatContents read_v73_isolated(const std::filesystem::path& file, const ReaderOptions& options) {
+/// v5 file's; there a crash, a hang or corrupted memory ends in that
+/// process. It keeps libmatio and libhdf5 (and the ~40 libraries they load)
+/// out of fourbar itself: every command starts faster. Errors the reading
+/// raises there are raised here unchanged; the contents arrive bit for bit.
+MatContents read_in_reader_program(const std::filesystem::path& file, const ReaderOptions& options) {
+  std::vector<std::string> argv{reader_program().string(), file.string()};
+  if (options.rate_variable) argv.insert(argv.end(), {"--rate-variable", *options.rate_variable});
+  if (options.sample_rate_hz) argv.insert(argv.end(), {"--sample-rate", exact(*options.sample_rate_hz)});
+  if (options.time_column) argv.insert(argv.end(), {"--time-column", *options.time_column});
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(file, ec);
   // A minute, and a second more per MB: reading and sending a valid file
   // takes a small part of that even on a loaded machine.
   const std::chrono::milliseconds limit(60'000 + (ec ? 0 : static_cast<std::int64_t>(bytes / 1000)));
-  const ChildResult res = run_in_child_process([&] { return read_and_encode(file, options); }, limit);
+  const ChildResult res = run_program(argv, limit);
   const std::string f = file.string();
   const auto damaged = [&](const std::string& how) {
-    return InputError(f + ": reading this MATLAB v7.3 (HDF5) file went wrong inside libmatio/libhdf5 — the reading "
-                          "process " + how + ": the file is damaged; copy the file again, or re-save it from MATLAB "
-                          "(save -v7.3, or -v7)");
+    return InputError(f + ": reading this MATLAB file went wrong inside libmatio/libhdf5 — the reading process " + how +
+                      ": the file is damaged; copy the file again, or re-save it from MATLAB (save -v7, or -v7.3)");
   };
   if (!res.ok) throw damaged(res.failure);
   if (res.bytes.empty()) throw damaged("sent nothing");
-  const std::string message = res.bytes.substr(1);
-  switch (static_cast<Tag>(res.bytes[0])) {
-    case kContents:
-      if (auto c = decode(res.bytes, file)) return std::move(*c);
-      throw damaged("sent garbled data");
-    case kInputError: throw InputError(message);
-    case kRunError: throw RunError(message);
-    case kNoMemory: throw std::bad_alloc();
-    case kOther: throw std::runtime_error(message);
-  }
+  if (auto c = decode_mat_result(res.bytes, file)) return std::move(*c);
   throw damaged("sent garbled data");
 }
 
@@ -204,15 +115,17 @@ bool mat_claims(const std::filesystem::path& file, std::span<const unsigned char
 }
 
 std::unique_ptr<Reader> open_mat_reader(const std::filesystem::path& file, const ReaderOptions& options) {
-  // v5 (and the v4 refusal) stay in this process: what fuzzing found in
-  // libmatio's v5 code (sizes the file cannot hold, read as gigabytes to
-  // allocate) is refused before libmatio reads the file — v5_damage in
-  // mat_contents.cpp walks every element and inflates each compressed
-  // variable's header with zlib — and the campaigns since found no memory
-  // error there. An HDF5 file's object headers cannot be checked so
-  // without a second HDF5 parser: v7.3 goes to a child process (above).
-  if (mat_header_version(file) == 0x0200) return std::make_unique<MatRecording>(read_v73_isolated(file, options));
-  return std::make_unique<MatRecording>(read_mat_contents(file, options));
+  return std::make_unique<MatRecording>(read_in_reader_program(file, options));
+}
+
+unsigned mat_header_version(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char h[128];
+  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return 0;
+  const bool im = h[126] == 'I' && h[127] == 'M', mi = h[126] == 'M' && h[127] == 'I';
+  // The version is written in the file's byte order, as the mark is ("IM" read on this machine).
+  const unsigned version = im ? h[124] | h[125] << 8 : h[124] << 8 | h[125];
+  return (im || mi) && (version == 0x0100 || version == 0x0200) ? version : 0;
 }
 
 }  // namespace fourbar

@@ -13,7 +13,10 @@
 // else its `sample_rate_hz`, else the time variable, else a scalar named
 // `fs`, `Fs`, `sample_rate`, `sample_rate_hz`, `samplerate`, `SampleRate`
 // or `rate`. Variables set aside (other lengths, structs, complex) are listed
-// in RecordingInfo::notes. The file is read whole into memory at open.
+// in RecordingInfo::notes. The file is read whole into memory at open, by
+// the program fourbar-read-mat in a process of its own (mat_reader.cpp:
+// a damaged file can corrupt libhdf5's memory; FOURBAR_READ_MAT in the
+// environment names the program when it is not beside fourbar).
 
 #include <span>
 
@@ -25,6 +28,8 @@ namespace fourbar {
 /// or the extension .mat.
 bool mat_claims(const std::filesystem::path& file, std::span<const unsigned char> head);
 
+/// InputError naming the file when it is not a recording fourbar can use or
+/// is damaged; RunError when fourbar-read-mat cannot be found or started.
 std::unique_ptr<Reader> open_mat_reader(const std::filesystem::path& file, const ReaderOptions& options);
 
 }  // namespace fourbar

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,19 +11,14 @@
 #include <csignal>
 #include <cstdint>
 #include <cstring>
-#include <mutex>
+#include <string>
+#include <vector>
 
 #include "common/error.hpp"
-
-// Set by AddressSanitizer and friends (libFuzzer registers its crash report
-// here); absent in a normal build.
-extern "C" void __sanitizer_set_death_callback(void (*)(void)) __attribute__((weak));
 
 namespace fourbar {
 
 namespace {
-
-std::mutex g_fork_mutex;  // pipe creation, fork and closing the parent's write end
 
 bool write_all(int fd, const char* p, std::size_t n) {
   while (n > 0) {
@@ -35,51 +31,65 @@ bool write_all(int fd, const char* p, std::size_t n) {
   return true;
 }
 
-[[noreturn]] void run_child(int fd, const std::function<std::string()>& work) {
-  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGABRT, SIGILL, SIGFPE, SIGPIPE})
-    std::signal(sig, SIG_DFL);
-  if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
-  std::string out;
-  try {
-    out = work();
-  } catch (...) {
-    ::_exit(3);
-  }
-  const std::uint64_t n = out.size();
-  char head[sizeof n];
-  std::memcpy(head, &n, sizeof n);
-  if (!write_all(fd, head, sizeof head) || !write_all(fd, out.data(), out.size())) ::_exit(4);
-  ::_exit(0);
-}
-
 std::string seconds_text(std::chrono::milliseconds limit) {
   const auto ms = limit.count();
   return ms % 1000 == 0 ? std::to_string(ms / 1000) + " s" : std::to_string(ms) + " ms";
 }
 
+/// Starts argv[0] with its stdout on `out_fd`: the pid.
+pid_t spawn(const std::vector<std::string>& argv, int out_fd, int other_fd) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t files;
+  posix_spawnattr_t attr;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_adddup2(&files, out_fd, STDOUT_FILENO);
+  posix_spawn_file_actions_addopen(&files, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addclose(&files, other_fd);
+  posix_spawnattr_init(&attr);
+  // The parent's handlers (interrupt cleanup, a fuzzer's crash report) are
+  // gone after exec anyway; ignored signals would stay ignored: reset them.
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGABRT, SIGILL, SIGFPE, SIGPIPE}) sigaddset(&defaults, sig);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  pid_t pid = -1;
+  const int err = ::posix_spawn(&pid, args[0], &files, &attr, args.data(), environ);
+  posix_spawnattr_destroy(&attr);
+  posix_spawn_file_actions_destroy(&files);
+  if (err != 0) throw RunError("cannot run " + argv[0] + ": " + std::strerror(err));
+  return pid;
+}
+
 }  // namespace
 
-ChildResult run_in_child_process(const std::function<std::string()>& work, std::chrono::milliseconds limit) {
-  using Clock = std::chrono::steady_clock;
-  int fds[2];
-  pid_t pid = -1;
-  {
-    const std::lock_guard lock(g_fork_mutex);
-    if (::pipe2(fds, O_CLOEXEC) != 0)
-      throw RunError(std::string("cannot start a child process: pipe: ") + std::strerror(errno));
-    pid = ::fork();
-    if (pid == 0) {
-      ::close(fds[0]);
-      run_child(fds[1], work);
-    }
-    const int fork_errno = errno;
-    ::close(fds[1]);
-    if (pid < 0) {
-      ::close(fds[0]);
-      throw RunError(std::string("cannot start a child process: fork: ") + std::strerror(fork_errno));
-    }
-  }
+bool write_framed_result(int fd, std::string_view bytes) {
+  const std::uint64_t n = bytes.size();
+  char head[sizeof n];
+  std::memcpy(head, &n, sizeof n);
+  return write_all(fd, head, sizeof head) && write_all(fd, bytes.data(), bytes.size());
+}
 
+ChildResult run_program(const std::vector<std::string>& argv, std::chrono::milliseconds limit) {
+  using Clock = std::chrono::steady_clock;
+  if (argv.empty()) throw RunError("run_program: no program");
+  int fds[2];
+  // O_CLOEXEC: no other child started meanwhile (from another thread)
+  // inherits this pipe's write end, which would delay the end of data.
+  if (::pipe2(fds, O_CLOEXEC) != 0)
+    throw RunError(std::string("cannot start a child process: pipe: ") + std::strerror(errno));
+  pid_t pid = -1;
+  try {
+    pid = spawn(argv, fds[1], fds[0]);
+  } catch (...) {
+    ::close(fds[0]), ::close(fds[1]);
+    throw;
+  }
+  ::close(fds[1]);
   const auto deadline = Clock::now() + limit;
   std::string got;
   bool timed_out = false;
