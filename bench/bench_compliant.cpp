@@ -12,11 +12,13 @@
 // beside it. --integrators adds the compliant model under CVODE's Adams
 // modes (fixed-point and Newton iteration, orders up to 12) beside BDF, at
 // tolerances 1e-9 … 1e-11 (docs/compliant.md "Why BDF"; slow: the Adams
-// modes need 10⁵–10⁶ steps).
+// modes need 10⁵–10⁶ steps), and the 3-stage Radau IIA (radau_integrator.hpp)
+// at tolerances 1e-8 … 1e-15, all against the BDF reference.
 //
 //   bench_compliant [--quick] [--integrators] [--stiffness K] [--csv FILE]
-//   bench_compliant [--stiffness K] --profile TOL N   (N runs of one case, for a profiler; prints the
-//                                                      integrator's counters)
+//   bench_compliant --radau [--quick] [--stiffness K] [--csv FILE]   (BDF and Radau IIA only)
+//   bench_compliant [--stiffness K] [--radau] --profile TOL N   (N runs of one case, for a profiler; prints
+//                                                               the integrator's counters)
 
 #include <algorithm>
 #include <ctime>
@@ -121,7 +123,7 @@ double rel_rms(const std::vector<double>& a, const std::vector<double>& ref, std
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false, integrators = false;
+  bool quick = false, integrators = false, radau = false;
   double stiffness = 1e10;
   std::string csv_path = "bench_compliant.csv";
   double profile_tol = 0;
@@ -129,6 +131,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--integrators")) integrators = true;
+    else if (!std::strcmp(argv[i], "--radau")) radau = true;
     else if (!std::strcmp(argv[i], "--stiffness") && i + 1 < argc) stiffness = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv_path = argv[++i];
     else if (!std::strcmp(argv[i], "--profile") && i + 2 < argc) {
@@ -138,21 +141,27 @@ int main(int argc, char** argv) {
     }
   }
   if (profile_runs > 0) {
+    const double c0 = cpu_seconds();
     Trial t;
-    for (int r = 0; r < profile_runs; ++r) t = simulate(true, stiffness, profile_tol, false);
-    std::printf("%d runs of 2 turns, %zu steps each; %s\n", profile_runs, t.steps, t.counters.c_str());
+    for (int r = 0; r < profile_runs; ++r) t = simulate(true, stiffness, profile_tol, false, radau ? StiffMethod::radau5 : StiffMethod::bdf);
+    std::printf("%d runs of 2 turns, %zu steps each; %s; %.2f ms CPU per turn\n", profile_runs, t.steps,
+                t.counters.c_str(), 1e3 * (cpu_seconds() - c0) / (2 * profile_runs));
     return 0;
   }
   const std::vector<double> tols =
       quick ? std::vector<double>{1e-6, 1e-8}
             : std::vector<double>{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
   const std::vector<double> adams_tols = quick ? std::vector<double>{1e-8} : std::vector<double>{1e-9, 1e-10, 1e-11};
+  const std::vector<double> radau_tols =
+      quick ? std::vector<double>{1e-8} : std::vector<double>{1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15};
   std::vector<Path> paths{{"compliant", true, StiffMethod::bdf, true}};
   if (integrators) {
     paths.push_back({"adams-fp", true, StiffMethod::adams_fixed_point, false});
     paths.push_back({"adams-newt", true, StiffMethod::adams_newton, false});
+    paths.push_back({"radau5", true, StiffMethod::radau5, false});
   }
-  paths.push_back({"three-mode", false, StiffMethod::bdf, true});
+  if (radau && !integrators) paths.push_back({"radau5", true, StiffMethod::radau5, false});
+  if (!radau) paths.push_back({"three-mode", false, StiffMethod::bdf, true});
   const int repeats = quick ? 1 : 3;
   const std::size_t short_n = kSamplesPerTurn / 12;
   std::ofstream csv(csv_path);
@@ -175,8 +184,9 @@ int main(int argc, char** argv) {
       ref = simulate(p.compliant, stiffness, 1e-13, true);
       std::printf("%s: reference at tolerance 1e-13 (%zu impacts, %zu steps)\n", p.name, ref.impacts, ref.steps);
     }
-    const bool adams = p.method != StiffMethod::bdf;
-    for (double tol : adams ? adams_tols : tols) {
+    const bool adams = p.method == StiffMethod::adams_fixed_point || p.method == StiffMethod::adams_newton;
+    const bool radau5 = p.method == StiffMethod::radau5;
+    for (double tol : adams ? adams_tols : radau5 ? radau_tols : tols) {
       const Trial t = simulate(p.compliant, stiffness, tol, true, p.method);
       const double err = rel_rms(t.alpha3, ref.alpha3, kSamplesPerTurn);
       const double err_short = rel_rms(t.alpha3, ref.alpha3, short_n);

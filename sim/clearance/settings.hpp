@@ -24,13 +24,15 @@ enum class IntegratorKind {
   odeint  ///< Boost.Odeint, Dormand–Prince 5(4) with dense output
 };
 
-/// Which CVODE mode advances the compliant model. BDF with Newton iteration
-/// is the product's (the contact is stiff: docs/compliant.md "Why BDF"); the
-/// two Adams modes exist for bench_compliant's comparison and have no scene key.
+/// Which method advances the compliant model. CVODE's BDF with Newton
+/// iteration is the product's (the contact is stiff: docs/compliant.md "Why
+/// BDF"); the two Adams modes and Radau IIA exist for bench_compliant's
+/// comparison and have no scene key.
 enum class StiffMethod {
   bdf,                ///< BDF orders 1–5, Newton iteration, dense Jacobian
   adams_fixed_point,  ///< Adams–Moulton orders 1–12, fixed-point (functional) iteration
-  adams_newton        ///< Adams–Moulton orders 1–12, Newton iteration, dense Jacobian
+  adams_newton,       ///< Adams–Moulton orders 1–12, Newton iteration, dense Jacobian
+  radau5              ///< Radau IIA, 3 stages, order 5 (not CVODE: radau_integrator.hpp)
 };
 
 /// Which clearance model: the thesis's three modes with instantaneous

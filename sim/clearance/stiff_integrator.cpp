@@ -13,6 +13,7 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "sim/clearance/radau_integrator.hpp"
 
 namespace fourbar {
 
@@ -96,6 +97,10 @@ int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector,
 StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size, StiffMethod method)
     : cv_(std::make_unique<Cvode>()), coupled_(coupled), size_(size) {
   if (!(coupled <= size && size <= kStiffSize)) throw std::logic_error("StiffIntegrator: size out of range");
+  if (method == StiffMethod::radau5) {
+    radau_ = std::make_unique<RadauIntegrator>(tolerance, coupled, size);
+    return;
+  }
   Cvode& c = *cv_;
   c.tol = tolerance;
   check(SUNContext_Create(nullptr, &c.ctx), "context");
@@ -114,6 +119,7 @@ StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::siz
 }
 
 StiffIntegrator::~StiffIntegrator() {
+  if (radau_) return;
   Cvode& c = *cv_;
   CVodeFree(&c.mem);
   if (c.fixed_point) SUNNonlinSolFree(c.fixed_point);
@@ -125,6 +131,10 @@ StiffIntegrator::~StiffIntegrator() {
 }
 
 void StiffIntegrator::reset(StiffSystem& system, double t0, const StiffState& y0) {
+  if (radau_) {
+    system_ = &system;
+    return radau_->reset(system, t0, y0);
+  }
   Cvode& c = *cv_;
   system_ = &system;
   copy_out(y0, c.y);
@@ -152,6 +162,10 @@ void StiffIntegrator::reset(StiffSystem& system, double t0, const StiffState& y0
 }
 
 StiffIntegrator::Step StiffIntegrator::step(double t_stop) {
+  if (radau_) {
+    ++steps_;
+    return radau_->step(t_stop);
+  }
   Cvode& c = *cv_;
   check(CVodeSetStopTime(c.mem, t_stop), "stop time");
   double t = t_;
@@ -175,6 +189,7 @@ StiffIntegrator::Step StiffIntegrator::step(double t_stop) {
 }
 
 StiffIntegrator::Counters StiffIntegrator::counters() const {
+  if (radau_) return radau_->counters();
   Counters c = since_reset();
   c.rhs += before_reset_.rhs;
   c.jacobians += before_reset_.jacobians;
@@ -194,6 +209,7 @@ StiffIntegrator::Counters StiffIntegrator::since_reset() const {
 }
 
 void StiffIntegrator::interpolate(double t, StiffState& y) {
+  if (radau_) return radau_->interpolate(t, y);
   if (!stepped_) {
     y = y0_;
     return;

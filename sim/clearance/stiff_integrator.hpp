@@ -22,6 +22,8 @@ namespace fourbar {
 inline constexpr std::size_t kStiffSize = 10;
 using StiffState = std::array<double, kStiffSize>;
 
+class RadauIntegrator;
+
 class StiffSystem {
  public:
   virtual ~StiffSystem() = default;
@@ -35,7 +37,7 @@ class StiffIntegrator {
   /// `tolerance` relative and absolute on the scaled state; the Jacobian
   /// differences the first `coupled` components.
   /// `size` ≤ kStiffSize: the components integrated (the rest read as 0).
-  /// `method`: BDF (the default) or one of the Adams modes (settings.hpp).
+  /// `method`: BDF (the default), one of the Adams modes or Radau IIA (settings.hpp).
   StiffIntegrator(double tolerance, std::size_t coupled, std::size_t size = kStiffSize,
                   StiffMethod method = StiffMethod::bdf);
   ~StiffIntegrator();
@@ -73,6 +75,7 @@ class StiffIntegrator {
  private:
   struct Cvode;
   std::unique_ptr<Cvode> cv_;
+  std::unique_ptr<RadauIntegrator> radau_;  ///< StiffMethod::radau5 (radau_integrator.hpp), else null
   StiffSystem* system_ = nullptr;
   std::size_t coupled_;
   std::size_t size_;
