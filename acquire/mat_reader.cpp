@@ -6,7 +6,6 @@
 #include <cctype>
 #include <chrono>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -19,6 +18,7 @@
 #include "acquire/mat_wire.hpp"
 #include "common/child_process.hpp"
 #include "common/error.hpp"
+#include "common/number_text.hpp"
 
 namespace fourbar {
 
@@ -68,12 +68,6 @@ std::filesystem::path reader_program() {
                  where + "); build it with fourbar, or set FOURBAR_READ_MAT to its path");
 }
 
-std::string exact(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 /// The file read by fourbar-read-mat, a process of its own. libhdf5 1.10
 /// (Debian 12) overflows heap blocks on damaged v7.3 files (fuzzing:
 /// tests/fuzz/regressions/mat/v73_attribute_heap_overflow_in_libhdf5.mat.bin)
@@ -85,7 +79,7 @@ std::string exact(double v) {
 MatContents read_in_reader_program(const std::filesystem::path& file, const ReaderOptions& options) {
   std::vector<std::string> argv{reader_program().string(), file.string()};
   if (options.rate_variable) argv.insert(argv.end(), {"--rate-variable", *options.rate_variable});
-  if (options.sample_rate_hz) argv.insert(argv.end(), {"--sample-rate", exact(*options.sample_rate_hz)});
+  if (options.sample_rate_hz) argv.insert(argv.end(), {"--sample-rate", format_double(*options.sample_rate_hz)});
   if (options.time_column) argv.insert(argv.end(), {"--time-column", *options.time_column});
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(file, ec);

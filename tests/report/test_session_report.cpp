@@ -235,22 +235,14 @@ TEST_F(SessionReport, ScatterRatioAtTheTruthIsOneWithinItsError) {
   EXPECT_GT(rel, 0.01);
   EXPECT_LT(rel, 0.5);
   // The two scatters from the series file beside the report (the per-angle standard deviations).
-  std::ifstream csv(dir_->path() / "out" / "series" / "clearance.csv");
-  std::string line;
-  ASSERT_TRUE(std::getline(csv, line));
-  std::vector<std::string> head;
-  for (std::stringstream h(line); std::getline(h, line, ',');) head.push_back(line);
+  const testing::Csv csv = testing::read_csv(dir_->path() / "out" / "series" / "clearance.csv");
   const auto col = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+    return static_cast<std::size_t>(std::find(csv.header.begin(), csv.header.end(), name) - csv.header.begin());
   };
   const std::size_t ms = col("alpha3_measured_std_rad_s2"), cs = col("alpha3_clearance_std_rad_s2");
-  ASSERT_LT(std::max(ms, cs), head.size());
+  ASSERT_LT(std::max(ms, cs), csv.header.size());
   double m2 = 0, c2 = 0;
-  while (std::getline(csv, line)) {
-    std::vector<double> v;
-    for (std::stringstream r(line); std::getline(r, line, ',');) v.push_back(std::stod(line));
-    m2 += v[ms] * v[ms], c2 += v[cs] * v[cs];
-  }
+  for (const auto& v : csv.rows) m2 += v[ms] * v[ms], c2 += v[cs] * v[cs];
   const double a = std::sqrt(c2 / m2);
   EXPECT_LT(std::abs(a - 1), 3 * rel * a) << "a (scatter) " << a << " ± " << rel * a;
   const json& v = c["verdict"];
