@@ -12,8 +12,28 @@
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
+#include <vector>
 
 namespace fourbar {
+
+namespace {
+
+/// A spare from `spare` (under `m`), else a new one from `make`.
+template <class T, class Make>
+std::unique_ptr<T> take_spare(std::mutex& m, std::vector<std::unique_ptr<T>>& spare, Make make) {
+  {
+    const std::lock_guard lock(m);
+    if (!spare.empty()) {
+      auto p = std::move(spare.back());
+      spare.pop_back();
+      return p;
+    }
+  }
+  return make();
+}
+
+}  // namespace
 
 std::unique_ptr<ChunkedAnalysis::ChunkWorkspace> ChunkedAnalysis::make_workspace() const {
   auto w = std::make_unique<ChunkWorkspace>();
@@ -27,15 +47,7 @@ std::unique_ptr<ChunkedAnalysis::ChunkWorkspace> ChunkedAnalysis::make_workspace
 }
 
 std::unique_ptr<ChunkedAnalysis::ChunkWorkspace> ChunkedAnalysis::take_workspace() {
-  {
-    const std::lock_guard lock(workspace_mutex_);
-    if (!spare_workspaces_.empty()) {
-      auto w = std::move(spare_workspaces_.back());
-      spare_workspaces_.pop_back();
-      return w;
-    }
-  }
-  return make_workspace();
+  return take_spare(workspace_mutex_, spare_workspaces_, [this] { return make_workspace(); });
 }
 
 void ChunkedAnalysis::give_back(std::unique_ptr<ChunkWorkspace> w) {
@@ -44,15 +56,7 @@ void ChunkedAnalysis::give_back(std::unique_ptr<ChunkWorkspace> w) {
 }
 
 std::unique_ptr<ChunkedAnalysis::ChunkOutcome> ChunkedAnalysis::take_outcome() {
-  {
-    const std::lock_guard lock(workspace_mutex_);
-    if (!spare_outcomes_.empty()) {
-      auto out = std::move(spare_outcomes_.back());
-      spare_outcomes_.pop_back();
-      return out;
-    }
-  }
-  return std::make_unique<ChunkOutcome>();
+  return take_spare(workspace_mutex_, spare_outcomes_, [] { return std::make_unique<ChunkOutcome>(); });
 }
 
 ChunkedAnalysis::ChunkJob ChunkedAnalysis::make_job(std::size_t rb, bool segment_end) const {
