@@ -25,7 +25,9 @@ void print_usage(std::ostream& os) {
   }
   os << "\n  --help, -h      show this help\n  --version       print the version\n\n"
         "exit status: 0 success, 1 the run failed (report: some recordings failed,\n"
-        "the report names them), 2 bad arguments or input\n";
+        "the report names them), 2 bad arguments or input\n\n"
+        "environment: FOURBAR_READ_MAT  path of fourbar-read-mat, the program that reads\n"
+        "MATLAB recordings, when it is not beside fourbar\n";
 }
 
 /// Optimal string alignment distance (Damerau–Levenshtein with adjacent
