@@ -58,7 +58,7 @@ std::filesystem::path reader_program() {
   std::vector<std::filesystem::path> tried;
   if (!ec) tried.push_back(self.parent_path() / "fourbar-read-mat");
 #ifdef FOURBAR_READ_MAT_BUILD_PATH
-  tried.emplace_back(FOURBAR_READ_MAT_BUILD_PATH);
+  if (tried.empty() || tried.front() != FOURBAR_READ_MAT_BUILD_PATH) tried.emplace_back(FOURBAR_READ_MAT_BUILD_PATH);
 #endif
   for (const auto& p : tried)
     if (::access(p.c_str(), X_OK) == 0) return p;
