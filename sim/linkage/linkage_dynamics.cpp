@@ -1,0 +1,177 @@
+#include "sim/linkage/linkage_dynamics.hpp"
+
+#include <cmath>
+
+namespace fourbar {
+
+namespace {
+
+Vec2 rotate(Vec2 u, Vec2 local) { return local.x * u + local.y * u.perp(); }
+
+/// Jacobian of a point r (world, from the origin) on a body: Jp + r⊥·Jw.
+ZJac point_jacobian(const BodyFrame& b, Vec2 r) {
+  ZJac J = b.Jp;
+  J.row(0) += -r.y * b.Jw;
+  J.row(1) += r.x * b.Jw;
+  return J;
+}
+
+Vec2 point_bias(const BodyFrame& b, Vec2 r) { return b.a_bias + b.alpha_bias * r.perp() - b.omega * b.omega * r; }
+
+BodyFrame ground_frame(int size) {
+  BodyFrame g;
+  g.u = {1, 0};
+  g.Jw = ZRow::Zero(size);
+  g.Jp = ZJac::Zero(2, size);
+  return g;
+}
+
+}  // namespace
+
+Vec2 site_position(const LinkageWorkspace& w, const Site& s) {
+  if (s.body == kGround) return s.local_m;
+  const BodyFrame& b = w.body[static_cast<std::size_t>(s.body)];
+  return b.p + rotate(b.u, s.local_m);
+}
+
+void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w) {
+  const int n = m.coordinates(), nz = n + 1;
+  const BodyFrame ground = ground_frame(nz);
+  auto frame = [&](int b) -> const BodyFrame& { return b == kGround ? ground : w.body[static_cast<std::size_t>(b)]; };
+  // The crank: origin O2, angle z[n].
+  BodyFrame& cr = w.body[0];
+  cr = ground;
+  cr.u = c.u2;
+  cr.omega = c.crank.speed_rad_s;
+  cr.Jw(n) = 1.0;
+  // Placed bodies, parents first.
+  for (const Placement& pl : m.placements()) {
+    const BodyFrame& parent = frame(pl.parent.body);
+    const Vec2 rp = rotate(parent.u, pl.parent.local_m);
+    Vec2 q_pos = parent.p + rp;
+    ZJac Jq = point_jacobian(parent, rp);
+    const Vec2 aq = point_bias(parent, rp);
+    if (pl.offset_index >= 0) {
+      const auto k = pl.offset_index;
+      q_pos += Vec2{c.q_offsets(k), c.q_offsets(k + 1)};
+      Jq(0, k) += 1.0;
+      Jq(1, k + 1) += 1.0;
+    }
+    BodyFrame& b = w.body[static_cast<std::size_t>(pl.body)];
+    b.u = c.u[static_cast<std::size_t>(pl.body - 1)];
+    b.Jw = ZRow::Zero(nz);
+    b.Jw(pl.angle_index) = 1.0;
+    b.omega = c.z_rate(pl.angle_index);
+    b.alpha_bias = 0;
+    const Vec2 rc = rotate(b.u, pl.child.local_m);
+    b.p = q_pos - rc;
+    b.Jp = Jq;
+    b.Jp.row(0) -= -rc.y * b.Jw;
+    b.Jp.row(1) -= rc.x * b.Jw;
+    b.a_bias = aq + b.omega * b.omega * rc;
+  }
+  // Pairs.
+  for (int j : m.clearance_joints()) {
+    const JointData& jd = m.joint(j);
+    PairState& ps = w.pair[static_cast<std::size_t>(j)];
+    ps.joint = j;
+    const BodyFrame &pin = frame(jd.pin.body), &bush = frame(jd.bushing.body);
+    const Vec2 r_pin = rotate(pin.u, jd.pin.local_m);
+    Vec2 e;
+    const Placement* placed = nullptr;
+    for (const Placement& pl : m.placements())
+      if (pl.joint == j) placed = &pl;
+    if (placed) {
+      e = placed->offset_sign * Vec2{c.q_offsets(placed->offset_index), c.q_offsets(placed->offset_index + 1)};
+    } else {
+      const Vec2 pin_pos = pin.p + r_pin;
+      const Vec2 bush_pos = bush.p + rotate(bush.u, jd.bushing.local_m);
+      e = {pin_pos.x - bush_pos.x, pin_pos.y - bush_pos.y};
+    }
+    ps.eccentricity_m = e;
+    const double r = std::sqrt(dot(e, e));
+    ps.gap_m = jd.clearance_m - r;
+    ps.penetration_m = -ps.gap_m;
+    ps.normal = r > 0 ? e * (1.0 / r) : Vec2{1.0, 0.0};
+    // The bushing's material point at the pin: bushing origin to pin centre.
+    const Vec2 r_bp = (pin.p + r_pin) - bush.p;
+    ps.J_rel = point_jacobian(pin, r_pin) - point_jacobian(bush, r_bp);
+    const Eigen::Vector2d v = ps.J_rel * c.z_rate;
+    const Vec2 vv{v(0), v(1)};
+    ps.normal_speed_m_s = dot(vv, ps.normal);
+    ps.tangential_speed_m_s = dot(vv, ps.normal.perp());
+    ps.omega_pin_rad_s = pin.omega;
+    ps.omega_bushing_rad_s = bush.omega;
+  }
+}
+
+void pair_forces(const LinkageModel& m, const std::array<double, kJoints>& chi, LinkageWorkspace& w) {
+  const LinkageSpec& s = m.spec();
+  for (int j : m.clearance_joints()) {
+    const JointData& jd = m.joint(j);
+    PairState& ps = w.pair[static_cast<std::size_t>(j)];
+    ps.normal_force_N = ps.friction_force_N = 0;
+    ps.film = {};
+    ps.damping_power_W = ps.friction_power_W = ps.film_power_W = ps.elastic_energy_J = 0;
+    if (ps.penetration_m > 0) {
+      ps.normal_force_N = normal_force_N(s.law, ps.penetration_m, ps.normal_speed_m_s, chi[static_cast<std::size_t>(j)]);
+      ps.friction_force_N = friction_force_N(s.friction, ps.normal_force_N, ps.tangential_speed_m_s);
+      ps.damping_power_W = (ps.normal_force_N - elastic_force_N(s.law, ps.penetration_m)) * ps.normal_speed_m_s;
+      ps.elastic_energy_J = elastic_energy_J(s.law, ps.penetration_m);
+    }
+    ps.friction_power_W = -ps.friction_force_N * ps.tangential_speed_m_s;
+    if (jd.film.viscosity_Pa_s > 0) {
+      const double xi = jd.clearance_m;
+      const double eps = (xi - ps.gap_m) / xi;
+      const double whirl =
+          eps * (ps.omega_pin_rad_s - ps.omega_bushing_rad_s) - 2.0 * ps.tangential_speed_m_s / xi;
+      ps.film = film_force(jd.film, eps, ps.normal_speed_m_s / xi, whirl);
+      ps.film_power_W = -(ps.film.radial_N * ps.normal_speed_m_s + ps.film.tangential_N * ps.tangential_speed_m_s);
+    }
+    ps.pin_force_N = (ps.film.radial_N - ps.normal_force_N) * ps.normal +
+                     (ps.friction_force_N + ps.film.tangential_N) * ps.normal.perp();
+  }
+}
+
+void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w) {
+  const int n = m.coordinates(), nz = n + 1;
+  w.M = ZMat::Zero(nz, nz);
+  w.Q = ZVec::Zero(nz);
+  const double g = m.rig().gravity_m_s2;
+  for (int k = 0; k < kBodies; ++k) {
+    const BodyData& bd = m.body(k);
+    const BodyFrame& b = w.body[static_cast<std::size_t>(k)];
+    const Vec2 rc = rotate(b.u, bd.centre_m);
+    const ZJac Jc = point_jacobian(b, rc);
+    const Vec2 ac = point_bias(b, rc);
+    w.M.noalias() += bd.mass_kg * Jc.transpose() * Jc;
+    w.M.noalias() += bd.inertia_cg_kg_m2 * b.Jw.transpose() * b.Jw;
+    const Eigen::Vector2d f{-bd.mass_kg * ac.x, bd.mass_kg * (-g - ac.y)};
+    w.Q.noalias() += Jc.transpose() * f;
+    w.Q.noalias() -= bd.inertia_cg_kg_m2 * b.alpha_bias * b.Jw.transpose();
+  }
+  for (int j : m.clearance_joints()) {
+    const PairState& ps = w.pair[static_cast<std::size_t>(j)];
+    w.Q.noalias() += ps.J_rel.transpose() * Eigen::Vector2d{ps.pin_force_N.x, ps.pin_force_N.y};
+  }
+  w.z_accel = ZVec::Zero(nz);
+  w.z_accel(n) = c.crank.accel_rad_s2;
+  const ZVec rhs = w.Q.head(n) - w.M.block(0, n, n, 1) * c.crank.accel_rad_s2;
+  w.z_accel.head(n) = w.M.topLeftCorner(n, n).llt().solve(rhs);
+  w.crank_torque_Nm = w.M.row(n).dot(w.z_accel) - w.Q(n);
+}
+
+double kinetic_energy_J(const LinkageWorkspace& w, const LinkageCoordinates& c) {
+  return 0.5 * c.z_rate.dot(w.M * c.z_rate);
+}
+
+double potential_energy_J(const LinkageModel& m, const LinkageWorkspace& w) {
+  double v = 0;
+  for (int k = 0; k < kBodies; ++k) {
+    const BodyFrame& b = w.body[static_cast<std::size_t>(k)];
+    v += m.body(k).mass_kg * (b.p + rotate(b.u, m.body(k).centre_m)).y;
+  }
+  return m.rig().gravity_m_s2 * v;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,95 @@
+#pragma once
+// The linkage model's stages at one instant, as free functions of the model
+// and a workspace (Pinocchio's f(model, data, …), MuJoCo's mj_fwdPosition /
+// mj_fwdVelocity / mj_fwdAcceleration): positions and Jacobians of every
+// body, the clearance pairs' geometry and relative velocity, the pair forces
+// (the shared compliant laws of sim/clearance/contact_force.hpp and
+// film_force.hpp), then M·z̈ = Q with the crank's row giving the motor torque.
+//
+// Full coordinates z = (q, θ2): the crank angle is z[n], so the drive's
+// inertia enters M like any coordinate and the motor torque is
+// τ = M[n,:]·z̈ − Q[n] once q̈ is solved from the first n rows with z̈[n] = α2.
+// Bias accelerations J̇·ż come from the same kinematics pass with z̈ = 0.
+// Every pair force lands in its own power entries (contact damping,
+// friction, film) so the energy books read each source (MuJoCo's qfrc_*).
+
+#include <array>
+
+#include <Eigen/Dense>
+
+#include "mechanism/kinematics.hpp"
+#include "sim/linkage/linkage_model.hpp"
+
+namespace fourbar {
+
+inline constexpr int kMaxFull = 8;  ///< n + 1 ≤ 7 (six coordinates and the crank)
+using ZVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxFull, 1>;
+using ZRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxFull>;
+using ZJac = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxFull>;
+using ZMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxFull, kMaxFull>;
+
+/// Positions and rates of the coordinates at one instant.
+struct LinkageCoordinates {
+  CrankState crank;
+  Vec2 u2;                   ///< (cos θ2, sin θ2)
+  std::array<Vec2, 2> u;     ///< coupler and rocker directions (u3, u4)
+  ZVec q_offsets;            ///< size n: the offsets d at their indices (angle entries unused)
+  ZVec z_rate;               ///< size n + 1: q̇ and ω2
+};
+
+/// A body frame: origin p, direction u, rates; linear in ż with biases.
+struct BodyFrame {
+  Vec2 u, p;
+  double omega = 0;
+  ZRow Jw;        ///< ω = Jw·ż
+  ZJac Jp;        ///< ṗ = Jp·ż
+  Vec2 a_bias;    ///< p̈ at z̈ = 0
+  double alpha_bias = 0;
+};
+
+/// One clearance joint at one instant.
+struct PairState {
+  int joint = 0;
+  Vec2 eccentricity_m;   ///< e = pin − bushing centre
+  double gap_m = 0;      ///< ξ − |e|
+  double penetration_m = 0;  ///< |e| − ξ
+  Vec2 normal;           ///< e/|e|
+  double normal_speed_m_s = 0, tangential_speed_m_s = 0;  ///< n·v, t·v, v = v_pin − v_bushing at the pin
+  double omega_pin_rad_s = 0, omega_bushing_rad_s = 0;
+  ZJac J_rel;            ///< v = J_rel·ż
+  // forces (pair_forces)
+  double normal_force_N = 0, friction_force_N = 0;
+  FilmForce film;
+  Vec2 pin_force_N;      ///< on the pin's body (−this on the bushing's)
+  double damping_power_W = 0, friction_power_W = 0, film_power_W = 0;  ///< dissipated (≥ 0 for contact, friction)
+  double elastic_energy_J = 0;
+};
+
+struct LinkageWorkspace {
+  // position and velocity stage
+  std::array<BodyFrame, kBodies> body;
+  std::array<PairState, kJoints> pair;  ///< valid for the clearance joints
+  // acceleration stage
+  ZMat M;
+  ZVec Q, z_accel;
+  double crank_torque_Nm = 0;
+};
+
+/// Frames of all bodies, the pairs' geometry and relative velocities.
+void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w);
+
+/// World position, Jacobian and bias acceleration of a site.
+Vec2 site_position(const LinkageWorkspace& w, const Site& s);
+
+/// Pair forces for the clearance joints; `chi` is each contact's damping
+/// coefficient χ = c(e)/v⁻ (s/m), by joint.
+void pair_forces(const LinkageModel& m, const std::array<double, kJoints>& chi, LinkageWorkspace& w);
+
+/// M, Q (gravity, pair forces, biases), z̈ with z̈[n] = α2, the motor torque.
+void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w);
+
+/// ½·żᵀ·M·ż (needs solve_accelerations' M) and the potential energy of gravity.
+double kinetic_energy_J(const LinkageWorkspace& w, const LinkageCoordinates& c);
+double potential_energy_J(const LinkageModel& m, const LinkageWorkspace& w);
+
+}  // namespace fourbar

@@ -1,0 +1,183 @@
+#include "sim/linkage/linkage_integrator.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "common/error.hpp"
+
+namespace fourbar {
+
+namespace {
+
+void check(int flag, const char* what) {
+  if (flag < 0) throw RunError(std::string("CVODE (BDF, linkage) ") + what + " failed (flag " + std::to_string(flag) + ")");
+}
+
+void silent_handler(int, const char*, const char*, char*, void*) {}
+
+int rhs_fn(double t, N_Vector y, N_Vector ydot, void* user) {
+  auto* self = static_cast<LinkageIntegrator*>(user);
+  self->ode().rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+  return 0;
+}
+
+int root_fn(double t, N_Vector y, double* g, void* user) {
+  static_cast<LinkageIntegrator*>(user)->ode().witnesses(t, N_VGetArrayPointer(y), g);
+  return 0;
+}
+
+/// Forward differences over the coupled columns, increment √u·max(|y_j|, 1e-3)
+/// (the state is scaled to order one), as stiff_integrator.cpp.
+int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
+  auto* self = static_cast<LinkageIntegrator*>(user);
+  const std::size_t n = self->size();
+  std::vector<double>& yy = self->scratch0;
+  std::vector<double>& f1 = self->scratch1;
+  const double* y0 = N_VGetArrayPointer(y);
+  const double* f0 = N_VGetArrayPointer(fy);
+  yy.assign(y0, y0 + n);
+  f1.resize(n);
+  SUNMatZero(J);
+  const double sqrt_u = std::sqrt(2.220446049250313e-16);
+  for (std::size_t j = 0; j < self->coupled(); ++j) {
+    const double yj = yy[j];
+    const double inc = sqrt_u * std::max(std::abs(yj), 1e-3);
+    yy[j] = yj + inc;
+    self->ode().rhs(t, yy.data(), f1.data());
+    yy[j] = yj;
+    double* col = SUNDenseMatrix_Column(J, static_cast<sunindextype>(j));
+    for (std::size_t i = 0; i < n; ++i) col[i] = (f1[i] - f0[i]) / inc;
+  }
+  return 0;
+}
+
+}  // namespace
+
+struct LinkageIntegrator::Cvode {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr, dky = nullptr;
+  SUNMatrix jac = nullptr;
+  SUNLinearSolver ls = nullptr;
+  void* mem = nullptr;
+  double tol = 0;
+  bool initialised = false;
+};
+
+LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::size_t coupled, std::size_t roots)
+    : cv_(std::make_unique<Cvode>()), size_(size), coupled_(coupled), roots_(roots) {
+  if (!(coupled <= size && size > 0)) throw std::logic_error("LinkageIntegrator: size out of range");
+  Cvode& c = *cv_;
+  c.tol = tolerance;
+  check(SUNContext_Create(nullptr, &c.ctx), "context");
+  const auto n = static_cast<sunindextype>(size);
+  c.y = N_VNew_Serial(n, c.ctx);
+  c.dky = N_VNew_Serial(n, c.ctx);
+  N_VConst(0.0, c.y);
+  c.mem = CVodeCreate(CV_BDF, c.ctx);
+  if (!c.mem) throw RunError("CVODE (BDF, linkage): cannot create the integrator");
+  c.jac = SUNDenseMatrix(n, n, c.ctx);
+  c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
+}
+
+LinkageIntegrator::~LinkageIntegrator() {
+  Cvode& c = *cv_;
+  CVodeFree(&c.mem);
+  SUNLinSolFree(c.ls);
+  SUNMatDestroy(c.jac);
+  N_VDestroy(c.y);
+  N_VDestroy(c.dky);
+  SUNContext_Free(&c.ctx);
+}
+
+void LinkageIntegrator::reset(LinkageOde& ode, double t0, const std::vector<double>& y0) {
+  Cvode& c = *cv_;
+  ode_ = &ode;
+  std::copy(y0.begin(), y0.begin() + static_cast<std::ptrdiff_t>(size_), N_VGetArrayPointer(c.y));
+  y0_ = y0;
+  t_ = t0;
+  stepped_ = false;
+  if (!c.initialised) {
+    check(CVodeInit(c.mem, rhs_fn, t0, c.y), "init");
+    check(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
+    check(CVodeSetUserData(c.mem, this), "user data");
+    check(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
+    check(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
+    check(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
+    check(CVodeSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
+    check(CVodeRootInit(c.mem, static_cast<int>(roots_), root_fn), "root finding");
+    c.initialised = true;
+  } else {
+    const Counters k = counters();
+    before_reset_ = k;
+    check(CVodeReInit(c.mem, t0, c.y), "reinit");
+  }
+}
+
+LinkageIntegrator::Step LinkageIntegrator::step(double t_stop) {
+  Cvode& c = *cv_;
+  check(CVodeSetStopTime(c.mem, t_stop), "stop time");
+  double t = t_;
+  const int flag = CVode(c.mem, t_stop, c.y, &t, CV_ONE_STEP);
+  if (flag < 0)
+    throw RunError("CVODE (BDF) could not advance the linkage model past t = " + std::to_string(t_) + " s (flag " +
+                   std::to_string(flag) + "); try a looser [linkage] tolerance or a lower contact stiffness");
+  Step s;
+  s.start = t_;
+  s.end = t;
+  s.roots.assign(roots_, 0);
+  if (flag == CV_ROOT_RETURN) {
+    std::vector<int> found(roots_, 0);
+    check(CVodeGetRootInfo(c.mem, found.data()), "root info");
+    for (std::size_t i = 0; i < roots_; ++i) s.roots[i] = found[i] > 0 ? 1 : (found[i] < 0 ? -1 : 0);
+    s.any_root = true;
+  }
+  t_ = t;
+  const double* p = N_VGetArrayPointer(c.y);
+  y_end_.assign(p, p + size_);
+  ++steps_;
+  stepped_ = true;
+  return s;
+}
+
+void LinkageIntegrator::interpolate(double t, std::vector<double>& y) {
+  if (!stepped_) {
+    y = y0_;
+    return;
+  }
+  if (t == t_) {
+    y = y_end_;
+    return;
+  }
+  check(CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
+  const double* p = N_VGetArrayPointer(cv_->dky);
+  y.assign(p, p + size_);
+}
+
+LinkageIntegrator::Counters LinkageIntegrator::since_reset() const {
+  Counters c;
+  if (!cv_->initialised) return c;
+  CVodeGetNumRhsEvals(cv_->mem, &c.rhs);
+  CVodeGetNumJacEvals(cv_->mem, &c.jacobians);
+  CVodeGetNumErrTestFails(cv_->mem, &c.error_failures);
+  CVodeGetNumNonlinSolvConvFails(cv_->mem, &c.newton_failures);
+  return c;
+}
+
+LinkageIntegrator::Counters LinkageIntegrator::counters() const {
+  Counters c = since_reset();
+  c.rhs += before_reset_.rhs;
+  c.jacobians += before_reset_.jacobians;
+  c.error_failures += before_reset_.error_failures;
+  c.newton_failures += before_reset_.newton_failures;
+  return c;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,72 @@
+#pragma once
+// SUNDIALS CVODE BDF (Newton, dense direct solver) for the linkage model: the
+// stiff integrator the compliant model uses (sim/clearance/stiff_integrator.hpp),
+// with the problem size set at reset instead of at compile time and several
+// witnesses at once (one per clearance joint), each root reported with its
+// direction (SIM-DESIGN-NOTES §3.1, §5 OdeProblem). As there, the Jacobian
+// differences only the first `coupled` components: the rest are quadratures
+// (work, dissipation, impulses) that no right-hand side reads.
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace fourbar {
+
+class LinkageOde {
+ public:
+  virtual ~LinkageOde() = default;
+  virtual void rhs(double t, const double* y, double* dydt) = 0;
+  /// The witnesses g[0..roots) at (t, y): a zero ends a step.
+  virtual void witnesses(double t, const double* y, double* g) = 0;
+};
+
+class LinkageIntegrator {
+ public:
+  /// Scalar relative and absolute `tolerance` on the scaled state; `size`
+  /// components, the first `coupled` differenced for the Jacobian; `roots` witnesses.
+  LinkageIntegrator(double tolerance, std::size_t size, std::size_t coupled, std::size_t roots);
+  ~LinkageIntegrator();
+  LinkageIntegrator(const LinkageIntegrator&) = delete;
+  LinkageIntegrator& operator=(const LinkageIntegrator&) = delete;
+
+  /// (Re)starts at (t0, y0): order 1, history dropped.
+  void reset(LinkageOde& ode, double t0, const std::vector<double>& y0);
+
+  struct Step {
+    double start = 0, end = 0;  ///< interpolate() is valid on [start, end]
+    /// Per witness: +1 / −1 it crossed zero upward / downward at `end`, else 0.
+    std::vector<int> roots;
+    bool any_root = false;
+  };
+  /// One step, never past `t_stop`; ends early at a root of any witness.
+  Step step(double t_stop);
+  void interpolate(double t, std::vector<double>& y);
+
+  std::size_t size() const { return size_; }
+  std::size_t coupled() const { return coupled_; }
+  std::size_t steps() const { return steps_; }
+  LinkageOde& ode() { return *ode_; }
+  /// Right-hand sides, Jacobians, error-test and Newton failures since construction.
+  struct Counters {
+    long rhs = 0, jacobians = 0, error_failures = 0, newton_failures = 0;
+  };
+  Counters counters() const;
+
+ private:
+  Counters since_reset() const;
+  struct Cvode;
+  std::unique_ptr<Cvode> cv_;
+  LinkageOde* ode_ = nullptr;
+  std::size_t size_, coupled_, roots_;
+  std::size_t steps_ = 0;
+  double t_ = 0;
+  bool stepped_ = false;
+  std::vector<double> y0_, y_end_;
+  Counters before_reset_;
+
+ public:
+  std::vector<double> scratch0, scratch1, scratch2;  ///< Jacobian work vectors (used by the CVODE callbacks)
+};
+
+}  // namespace fourbar

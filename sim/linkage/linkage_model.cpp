@@ -1,0 +1,100 @@
+#include "sim/linkage/linkage_model.hpp"
+
+#include <cmath>
+
+#include "common/error.hpp"
+
+namespace fourbar {
+
+const char* to_string(LinkJoint j) {
+  switch (j) {
+    case LinkJoint::crank_coupler: return "crank_coupler";
+    case LinkJoint::coupler_rocker: return "coupler_rocker";
+    case LinkJoint::rocker_ground: return "rocker_ground";
+  }
+  return "?";
+}
+
+namespace {
+
+BodyData body_of(const Link& l) { return {l.mass_kg, l.inertia_cg_kg_m2, l.length_m, {l.mass_centre_m, 0.0}}; }
+
+}  // namespace
+
+LinkageModel build_linkage(const Rig& rig, const LinkageSpec& spec) {
+  LinkageModel m;
+  m.rig_ = rig;
+  m.spec_ = spec;
+  const int crank = static_cast<int>(LinkBody::crank), coupler = static_cast<int>(LinkBody::coupler),
+            rocker = static_cast<int>(LinkBody::rocker);
+  m.bodies_ = {body_of(rig.crank), body_of(rig.coupler), body_of(rig.rocker)};
+  const double l2 = rig.crank.length_m, l3 = rig.coupler.length_m, l4 = rig.rocker.length_m;
+  m.joints_[0] = {LinkJoint::crank_coupler, {crank, {l2, 0}}, {coupler, {0, 0}}, spec.clearance_m[0], spec.film};
+  m.joints_[1] = {LinkJoint::coupler_rocker, {coupler, {l3, 0}}, {rocker, {l4, 0}}, spec.clearance_m[1], spec.film};
+  m.joints_[2] = {LinkJoint::rocker_ground, {rocker, {0, 0}}, {kGround, {rig.ground_length_m, 0}}, spec.clearance_m[2],
+                  spec.film};
+  const char* keys[kJoints] = {"crank_coupler_radial_mm", "coupler_rocker_radial_mm", "rocker_ground_radial_mm"};
+  for (int j = 0; j < kJoints; ++j) {
+    JointData& jd = m.joints_[static_cast<std::size_t>(j)];
+    if (!(std::isfinite(jd.clearance_m) && jd.clearance_m >= 0))
+      throw InputError(std::string("[linkage] ") + keys[j] + " must be >= 0 (0 = an ideal joint)");
+    jd.film.clearance_m = jd.clearance_m;
+    if (jd.clearance_m > 0) m.clearance_joints_.push_back(j);
+    m.xi_ref_ = std::max(m.xi_ref_, jd.clearance_m);
+  }
+  if (m.clearance_joints_.empty())
+    throw InputError(
+        "[linkage]: no joint has a clearance; give one of crank_coupler_radial_mm, coupler_rocker_radial_mm, "
+        "rocker_ground_radial_mm > 0 (or use model = \"nominal\" for the ideal linkage)");
+  if (!(spec.law.stiffness > 0))
+    throw InputError("[linkage]: no contact stiffness; give contact_stiffness_N_per_m_n > 0");
+  if (spec.film.viscosity_Pa_s > 0 && !(spec.film.radius_m > 0 && spec.film.length_m > 0))
+    throw InputError("[linkage]: a lubricant needs the bearing's radius and length (rig [clearance] pin_radius_mm, "
+                     "bearing_length_mm)");
+  m.cut_ = m.joints_[1].clearance_m > 0 ? 1 : (m.joints_[0].clearance_m > 0 ? 0 : 2);
+  // The tree: see the header. Parent site first, child (placed body) second.
+  int next_offset = 2;
+  auto place = [&](int body, int joint, bool child_holds_pin, int angle_index) {
+    const JointData& jd = m.joints_[static_cast<std::size_t>(joint)];
+    Placement p;
+    p.body = body;
+    p.joint = joint;
+    p.parent = child_holds_pin ? jd.bushing : jd.pin;
+    p.child = child_holds_pin ? jd.pin : jd.bushing;
+    p.angle_index = angle_index;
+    p.offset_sign = child_holds_pin ? 1.0 : -1.0;
+    return p;
+  };
+  if (m.cut_ == 1) {
+    m.placements_ = {place(coupler, 0, false, 0), place(rocker, 2, true, 1)};
+  } else if (m.cut_ == 0) {
+    m.placements_ = {place(rocker, 2, true, 1), place(coupler, 1, true, 0)};
+  } else {
+    m.placements_ = {place(coupler, 0, false, 0), place(rocker, 1, false, 1)};
+  }
+  // Offsets in joint order.
+  for (int j = 0; j < kJoints; ++j)
+    for (Placement& p : m.placements_)
+      if (p.joint == j && m.joints_[static_cast<std::size_t>(j)].clearance_m > 0) {
+        p.offset_index = next_offset;
+        next_offset += 2;
+      }
+  m.n_ = next_offset;
+  m.hysteresis_ = hysteresis_factor(spec.law.damping, spec.law.restitution, spec.law.exponent);
+  return m;
+}
+
+double LinkageModel::force_scale_N(double w2) const {
+  const double g = rig_.gravity_m_s2;
+  return rig_.coupler.mass_kg * (g + rig_.crank.length_m * w2 * w2) + rig_.rocker.mass_kg * g + 1e-300;
+}
+
+double LinkageModel::energy_scale_J(double w2) const {
+  // As ClearanceModel::energy_scale_J: crank and coupler-end motion at ω2 plus the potential energy range.
+  const double m3 = rig_.coupler.mass_kg, l2 = rig_.crank.length_m;
+  return 0.5 * (rig_.crank.inertia_about_joint() + m3 * l2 * l2) * w2 * w2 +
+         rig_.gravity_m_s2 * (rig_.crank.mass_kg * rig_.crank.mass_centre_m + m3 * (l2 + rig_.coupler.mass_centre_m) +
+                              rig_.rocker.mass_kg * rig_.rocker.mass_centre_m);
+}
+
+}  // namespace fourbar
