@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -87,6 +88,66 @@ TEST(Linkage, RigidLinksWithClearanceAtBAgreeWithTheCompliantModel) {
     for (std::size_t i = 0; i < std::min(sim.contacts().size(), ref.impacts().size()); ++i)
       EXPECT_NEAR(sim.contacts()[i].time_s, ref.impacts()[i].time_s, 1e-9);
   }
+}
+
+TEST(Linkage, EnergyBalanceWithClearanceInAnyJoint) {
+  // Motor work = contact damping + friction dissipation + Δ(kinetic + potential
+  // + contact elastic energy), per configuration of clearances, over 3 turns
+  // of the thesis rig at 350 rpm (e = 0.5, K = 1e10, μ = 0.1), from centred pins.
+  const Rig rig = thesis_rig();
+  const double w = units::rpm_to_rad_s(350), T = units::kTwoPi / w;
+  const ConstantSpeedCrank crank(0.0, w);
+  const std::array<std::array<double, 3>, 4> cases{{{kXi, 0, 0}, {0, 0, kXi}, {kXi, kXi, kXi}, {0.1e-3, kXi, 0.05e-3}}};
+  for (const auto& xi : cases) {
+    LinkageSpec s = spec_b(0.5, 1e10, 0.1, 1e-11);
+    s.clearance_m = xi;
+    const LinkageModel lm = build_linkage(rig, s);
+    LinkageSimulator sim(lm, crank);
+    sim.start_centred(0.0);
+    sim.advance_to(3 * T);
+    const LinkageDiagnostics d = sim.diagnostics();
+    SCOPED_TRACE("clearances " + std::to_string(xi[0]) + ", " + std::to_string(xi[1]) + ", " + std::to_string(xi[2]));
+    std::printf("    xi = (%.3g, %.3g, %.3g) mm: work %.6e J, dissipated %.6e J, residual %.2e of E, counters %s\n",
+                xi[0] * 1e3, xi[1] * 1e3, xi[2] * 1e3, d.crank_work_J, d.dissipated_J,
+                d.energy_residual_J / d.energy_scale_J, sim.integrator_counters().c_str());
+    EXPECT_LT(std::abs(d.energy_residual_J) / d.energy_scale_J, 1e-8);
+    EXPECT_LT(d.max_energy_residual_J / d.energy_scale_J, 1e-8);
+    double sum = 0;
+    for (int j = 0; j < kJoints; ++j) {
+      const LinkageJointBooks& b = d.joint[static_cast<std::size_t>(j)];
+      sum += b.contact_loss_J + b.friction_loss_J + b.film_loss_J;
+      if (xi[static_cast<std::size_t>(j)] == 0) {
+        EXPECT_EQ(b.contact_time_s + b.free_time_s, 0.0);
+        continue;
+      }
+      EXPECT_GT(b.contact_loss_J, 0.0) << to_string(static_cast<LinkJoint>(j));
+      EXPECT_GE(b.friction_loss_J, 0.0);
+      EXPECT_NEAR(b.contact_time_s + b.free_time_s, 3 * T, 1e-9);
+      EXPECT_GT(b.max_penetration_m, 0.0);
+      EXPECT_LT(b.max_penetration_m, 0.2 * xi[static_cast<std::size_t>(j)]);
+    }
+    EXPECT_NEAR(sum, d.dissipated_J, 1e-12 * d.energy_scale_J);
+    int seen[kJoints] = {0, 0, 0};
+    for (const LinkageContact& c : sim.contacts()) {
+      ++seen[c.joint];
+      EXPECT_GT(xi[static_cast<std::size_t>(c.joint)], 0.0);
+      EXPECT_GE(c.release_time_s, c.time_s);
+      EXPECT_GE(c.contact_impulse_Ns, c.impact_impulse_Ns * (1 - 1e-9));
+    }
+    for (int j = 0; j < kJoints; ++j)
+      if (xi[static_cast<std::size_t>(j)] > 0) EXPECT_GT(seen[j], 0) << to_string(static_cast<LinkJoint>(j));
+  }
+}
+
+TEST(Linkage, RejectsALinkageWithoutClearance) {
+  LinkageSpec s = spec_b(0.5, 1e10, 0.0, 1e-10);
+  s.clearance_m = {0, 0, 0};
+  EXPECT_THROW(build_linkage(thesis_rig(), s), InputError);
+  s.clearance_m = {-1e-4, kXi, 0};
+  EXPECT_THROW(build_linkage(thesis_rig(), s), InputError);
+  s.clearance_m = {0, kXi, 0};
+  s.law.stiffness = 0;
+  EXPECT_THROW(build_linkage(thesis_rig(), s), InputError);
 }
 
 }  // namespace
