@@ -7,10 +7,12 @@
 #include "cli/command.hpp"
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
+#include "common/number_text.hpp"
 #include "common/json_text.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 #include "sim/clearance/run.hpp"
+#include "sim/linkage/linkage_run.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/outputs.hpp"
 #include "mechanism/rig_report.hpp"
@@ -255,6 +257,99 @@ nlohmann::json clearance_json(const Scene& scene, const ClearanceRun& run) {
   return j;
 }
 
+/// Linkage contacts: one row per contact of any joint, onset to release.
+PendingFile write_linkage_contacts(const std::filesystem::path& path, const Provenance& prov, const LinkageRun& run) {
+  auto csv = std::make_unique<CsvWriter>(path, prov.csv_comment_lines(), std::vector<std::string>
+                {"joint", "time_s", "approach_speed_m_s", "crank_deg", "impact", "eta_deg", "slip_speed_m_s",
+                 "peak_force_N", "max_penetration_mm", "contact_duration_s", "normal_impulse_Ns", "contact_impulse_Ns",
+                 "energy_loss_J", "contact_lost", "release_time_s", "release_crank_deg", "release_eta_deg"});
+  for (const LinkageContact& r : run.contacts) {
+    const double v[] = {r.time_s, r.approach_speed_m_s, units::rad_to_deg(r.crank_angle_rad), r.impact ? 1.0 : 0.0,
+                        units::rad_to_deg(r.eta_rad), r.tangential_speed_m_s, r.peak_force_N,
+                        units::m_to_mm(r.max_penetration_m), r.duration_s, r.impact_impulse_Ns, r.contact_impulse_Ns,
+                        r.energy_loss_J, r.contact_lost ? 1.0 : 0.0, r.release_time_s,
+                        units::rad_to_deg(r.release_crank_angle_rad), units::rad_to_deg(r.release_eta_rad)};
+    std::vector<std::string> cells{to_string(static_cast<LinkJoint>(r.joint))};
+    for (double x : v) cells.push_back(format_double(x));
+    csv->text_row(cells);
+  }
+  return csv;
+}
+
+int write_linkage_run(const Scene& scene, const LinkageRun& run, const std::filesystem::path& dir,
+                      const Provenance& prov) {
+  std::vector<PendingFile> files;
+  files.push_back(write_series(dir / "series.csv", prov, run.series));
+  files.push_back(write_linkage_contacts(dir / "impacts.csv", prov, run));
+  const LinkageDiagnostics& d = run.diagnostics;
+  const LinkageSpec& spec = scene.linkage.spec;
+  nlohmann::json joints = nlohmann::json::object();
+  for (int j : run.clearance_joints) {
+    const LinkageJointBooks& b = d.joint[static_cast<std::size_t>(j)];
+    nlohmann::json lost = nlohmann::json::array();
+    int impacts = 0;
+    for (const LinkageContact& c : run.contacts)
+      if (c.joint == j && c.contact_lost)
+        lost.push_back({{"time_s", c.release_time_s}, {"crank_deg", units::rad_to_deg(c.release_crank_angle_rad)},
+                        {"eta_deg", units::rad_to_deg(c.release_eta_rad)}});
+    for (const LinkageContact& c : run.contacts) impacts += c.joint == j && c.impact;
+    const double span = b.free_time_s + b.contact_time_s;
+    joints[to_string(static_cast<LinkJoint>(j))] = {
+        {"radial_mm", units::m_to_mm(spec.clearance_m[static_cast<std::size_t>(j)])},
+        {"impacts", impacts},
+        {"touches_below_settle_speed", b.touches},
+        {"contact_losses", b.contact_losses},
+        {"free_flight_share", span > 0 ? b.free_time_s / span : 0.0},
+        {"contact_share", span > 0 ? b.contact_time_s / span : 0.0},
+        {"max_penetration_mm", units::m_to_mm(b.max_penetration_m)},
+        {"contact_damping_loss_J", b.contact_loss_J},
+        {"friction_loss_J", b.friction_loss_J},
+        {"film_loss_J", b.film_loss_J},
+        {"contact_lost_at", lost}};
+  }
+  nlohmann::json summary;
+  summary["provenance"] = prov.to_json();
+  summary["rig"] = to_json(*scene.rig, report_rig(*scene.rig));
+  summary["scene"] = {{"file", scene.source.string()},
+                      {"model", "linkage"},
+                      {"crank_speed_rpm", units::rad_s_to_rpm(scene.crank_speed_rad_s)},
+                      {"crank_motion", scene.linkage.crank_table.string()},
+                      {"duration_s", run.duration_s},
+                      {"revolutions", scene.revolutions},
+                      {"samples_per_revolution", scene.samples_per_revolution}};
+  summary["linkage"] = {{"settings",
+                         {{"restitution", spec.law.restitution},
+                          {"damping", to_string(spec.law.damping)},
+                          {"contact_stiffness_N_per_m_n", spec.law.stiffness},
+                          {"contact_exponent", spec.law.exponent},
+                          {"friction_coefficient", spec.friction.mu},
+                          {"tolerance", spec.tolerance},
+                          {"settle_speed_mm_s", spec.settle_speed_m_s * 1e3},
+                          {"integrator", "cvode-bdf"}}},
+                        {"joints", joints},
+                        {"energy",
+                         {{"start_J", d.energy_start_J},
+                          {"end_J", d.energy_end_J},
+                          {"crank_work_J", d.crank_work_J},
+                          {"dissipated_J", d.dissipated_J},
+                          {"residual_J", d.energy_residual_J},
+                          {"max_residual_J", d.max_energy_residual_J},
+                          {"scale_J", d.energy_scale_J},
+                          {"residual_rel", std::abs(d.energy_residual_J) / d.energy_scale_J}}},
+                        {"integrator_steps", d.steps},
+                        {"integrator_counters", run.integrator_counters}};
+  summary["series"] = {{"file", "series.csv"}, {"rows", run.series.rows()}, {"columns", column_stats(run.series)}};
+  const auto json_path = dir / "summary.json";
+  AtomicOutput json(json_path);
+  json.stream() << json_text(summary, 2) << "\n";
+  for (auto& f : files) f->commit();
+  json.commit();
+  std::cout << "wrote " << (dir / "series.csv").string() << " (" << run.series.rows() << " rows x "
+            << run.series.names.size() << " columns), impacts.csv (" << run.contacts.size() << " contacts) and "
+            << json_path.string() << "\n";
+  return 0;
+}
+
 int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::filesystem::path& dir,
                         const Provenance& prov) {
   const auto csv_path = dir / "series.csv";
@@ -322,6 +417,10 @@ int run_sim(const Invocation& inv) {
 
   Provenance prov{inv.command_line, {scene.source, scene.rig->source}, csv_comments};
   if (scene.model == Model::clearance) return write_clearance_run(scene, run_clearance(scene, true), out_dir, prov);
+  if (scene.model == Model::linkage) {
+    if (!scene.linkage.crank_table.empty()) prov.inputs.push_back(scene.linkage.crank_table);
+    return write_linkage_run(scene, run_linkage(scene), out_dir, prov);
+  }
 
   const SeriesTable table = run_nominal(scene);
 

@@ -25,12 +25,22 @@ Scene load_scene(const std::filesystem::path& file) {
     throw InputError(root.where("rig") + ": " + e.what());
   }
 
-  const std::string model = root.choice("model", {"nominal", "clearance"}, "nominal");
-  scene.model = model == "nominal" ? Model::nominal : Model::clearance;
+  const std::string model = root.choice("model", {"nominal", "clearance", "linkage"}, "nominal");
+  scene.model = model == "nominal" ? Model::nominal : model == "clearance" ? Model::clearance : Model::linkage;
+  const toml::node* linkage_table = doc.get("linkage");
+  const bool crank_table = scene.model == Model::linkage && linkage_table && linkage_table->is_table() &&
+                           linkage_table->as_table()->contains("crank_motion");
 
-  const double rpm = root.in_range("crank_speed_rpm", -1e5, 1e5);
-  if (rpm == 0) root.fail("crank_speed_rpm", "= 0: the crank must turn; give a speed (negative turns clockwise)");
-  scene.crank_speed_rad_s = units::rpm_to_rad_s(rpm);
+  if (crank_table) {
+    if (root.has("crank_speed_rpm"))
+      root.fail("crank_speed_rpm", "is not used: [linkage] crank_motion prescribes the crank; remove one of them");
+  } else {
+    const double rpm = root.in_range("crank_speed_rpm", -1e5, 1e5);
+    if (rpm == 0) root.fail("crank_speed_rpm", "= 0: the crank must turn; give a speed (negative turns clockwise)");
+    scene.crank_speed_rad_s = units::rpm_to_rad_s(rpm);
+  }
+  if (crank_table && root.has("start_angle_deg"))
+    root.fail("start_angle_deg", "is not used: [linkage] crank_motion gives the crank angle; remove it");
   scene.start_angle_rad = units::deg_to_rad(root.in_range("start_angle_deg", -360.0, 360.0, 0.0));
   scene.revolutions = static_cast<int>(root.integer("revolutions", 1, 1'000'000, 1));
   scene.samples_per_revolution = static_cast<int>(root.integer("samples_per_revolution", 4, 10'000'000, 360));
@@ -38,7 +48,7 @@ Scene load_scene(const std::filesystem::path& file) {
   // Requested outputs: each must be known, none twice.
   scene.outputs = root.strings("outputs");
   if (scene.outputs.empty()) root.fail("outputs", "is empty; name at least one output (see 'fourbar sim --help')");
-  const bool clearance = scene.model == Model::clearance;
+  const bool clearance = scene.model != Model::nominal;
   std::vector<std::string> known;
   if (clearance)
     for (const auto& o : clearance_outputs()) known.emplace_back(o.name);
@@ -63,7 +73,9 @@ Scene load_scene(const std::filesystem::path& file) {
   }
 
   if (auto sec = root.optional_section("clearance")) {
-    if (!clearance) root.fail("clearance", "is only used with model = \"clearance\"; remove the table or change model");
+    if (scene.model != Model::clearance)
+      root.fail("clearance", "is only used with model = \"clearance\"; remove the table or change model (model = "
+                             "\"linkage\" reads [linkage])");
     scene.clearance = read_clearance_settings(*sec, scene.rig->radial_clearance_m);
     if (const double margin = toggle_margin_m(*scene.rig); !(scene.clearance_m() < margin))
       sec->fail("radial_mm", "= " + format_double(units::m_to_mm(scene.clearance_m())) +
@@ -78,8 +90,18 @@ Scene load_scene(const std::filesystem::path& file) {
                          "(its [clearance] lubricant_viscosity_Pa_s); use model = \"compliant\" or remove the "
                          "viscosity from the rig for a dry bearing");
     sec->finish();
-  } else if (clearance) {
+  } else if (scene.model == Model::clearance) {
     root.fail("clearance", "is missing: model = \"clearance\" needs a [clearance] table (at least restitution)");
+  }
+
+  if (auto sec = root.optional_section("linkage")) {
+    if (scene.model != Model::linkage)
+      root.fail("linkage", "is only used with model = \"linkage\"; remove the table or change model");
+    scene.linkage = read_linkage_settings(*sec, *scene.rig);
+    sec->finish();
+  } else if (scene.model == Model::linkage) {
+    root.fail("linkage", "is missing: model = \"linkage\" needs a [linkage] table (at least restitution and "
+                         "contact_stiffness_N_per_m_n)");
   }
 
   if (auto rec = root.optional_section("recording")) scene.recording = *doc["recording"].as_table();

@@ -11,17 +11,18 @@
 #include <toml++/toml.h>
 
 #include "sim/clearance/settings.hpp"
+#include "sim/linkage/linkage_settings.hpp"
 #include "mechanism/rig.hpp"
 
 namespace fourbar {
 
-enum class Model { nominal, clearance };
+enum class Model { nominal, clearance, linkage };
 
 struct Scene {
   std::shared_ptr<const Rig> rig;
   std::filesystem::path source;       ///< the scene file (may be empty)
   Model model = Model::nominal;
-  double crank_speed_rad_s = 0;       ///< ω2, constant
+  double crank_speed_rad_s = 0;       ///< ω2, constant (0 with a linkage crank table)
   double start_angle_rad = 0;         ///< θ2 at t = 0
   int revolutions = 1;
   int samples_per_revolution = 360;   ///< output sampling (rows per turn)
@@ -30,6 +31,8 @@ struct Scene {
   /// `clearance.radial_clearance_m` or else the rig's.
   ClearanceSettings clearance;
   double clearance_m() const { return clearance.radial_clearance_m.value_or(rig->radial_clearance_m); }
+  /// `[linkage]` table (model = "linkage" only).
+  LinkageSettings linkage;
   /// The scene's `[recording]` table, kept unparsed: the virtual rig reads and
   /// validates it (sensors, noise, file format); `sim` ignores it.
   std::optional<toml::table> recording;

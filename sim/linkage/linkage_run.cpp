@@ -1,0 +1,91 @@
+#include "sim/linkage/linkage_run.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "common/units.hpp"
+#include "sim/clearance/run.hpp"
+#include "sim/linkage/tabulated_crank.hpp"
+#include "sim/outputs.hpp"
+
+namespace fourbar {
+
+std::unique_ptr<CrankMotion> linkage_crank(const Scene& scene) {
+  if (!scene.linkage.crank_table.empty()) return TabulatedCrank::from_csv(scene.linkage.crank_table);
+  return std::make_unique<ConstantSpeedCrank>(scene.start_angle_rad, scene.crank_speed_rad_s);
+}
+
+LinkageRun run_linkage(const Scene& scene) {
+  const LinkageModel model = build_linkage(*scene.rig, scene.linkage.spec);
+  const std::unique_ptr<CrankMotion> crank = linkage_crank(scene);
+  LinkageRun out;
+  const auto rows = static_cast<std::size_t>(scene.revolutions) * static_cast<std::size_t>(scene.samples_per_revolution);
+  std::vector<double> times(rows + 1);
+  if (scene.linkage.crank_table.empty()) {
+    const double T = units::kTwoPi / std::abs(scene.crank_speed_rad_s);
+    out.duration_s = scene.revolutions * T;
+    for (std::size_t i = 0; i <= rows; ++i) times[i] = out.duration_s * static_cast<double>(i) / static_cast<double>(rows);
+  } else {
+    const auto* table = dynamic_cast<const TabulatedCrank*>(crank.get());
+    out.duration_s = scene.linkage.duration_s.value_or(table->end_time_s());
+    for (std::size_t i = 0; i <= rows; ++i) times[i] = out.duration_s * static_cast<double>(i) / static_cast<double>(rows);
+  }
+  LinkageSimulator sim(model, *crank);
+  sim.set_sample_times(times);
+  sim.start_centred(0.0);
+  sim.advance_to(out.duration_s);
+  out.contacts = sim.contacts();
+  out.diagnostics = sim.diagnostics();
+  out.clearance_joints = model.clearance_joints();
+  out.integrator_counters = sim.integrator_counters();
+
+  // Columns: crank_deg, the scene's outputs, the per-joint columns.
+  std::vector<const ClearanceOutputSpec*> specs;
+  out.series.names.push_back("crank_deg");
+  for (const std::string& name : scene.outputs) {
+    specs.push_back(find_clearance_output(name));
+    out.series.names.push_back(name);
+  }
+  const char* per_joint[] = {"gap_mm", "penetration_mm", "contact_force_N", "fx_N", "fy_N"};
+  for (int j : out.clearance_joints)
+    for (const char* p : per_joint) out.series.names.push_back(std::string(to_string(static_cast<LinkJoint>(j))) + "_" + p);
+  out.series.columns.assign(out.series.names.size(), std::vector<double>(times.size()));
+  const std::vector<LinkageSample>& samples = sim.samples();
+  const auto main = static_cast<std::size_t>(model.cut_joint());
+  double th2 = 0, th3 = 0, th4 = 0, eta = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const LinkageSample& s = samples[i];
+    auto continuous = [&](double& acc, double a) { acc = i == 0 ? a : acc + std::remainder(a - acc, units::kTwoPi); };
+    continuous(th2, s.crank.angle_rad);
+    continuous(th3, s.theta3_rad);
+    continuous(th4, s.theta4_rad);
+    continuous(eta, s.joint[main].eta_rad);
+    ClearanceSample c;
+    c.time_s = s.time_s;
+    c.crank = s.crank;
+    c.crank.angle_rad = th2;
+    c.mode = s.in_contact ? ContactMode::following : ContactMode::free_flight;
+    c.links = {unit(s.theta3_rad), unit(s.theta4_rad), s.omega3_rad_s, s.omega4_rad_s};
+    c.alpha3_rad_s2 = s.alpha3_rad_s2;
+    c.alpha4_rad_s2 = s.alpha4_rad_s2;
+    c.crank_torque_Nm = s.crank_torque_Nm;
+    c.kinetic_energy_J = s.kinetic_energy_J;
+    c.potential_energy_J = s.potential_energy_J;
+    c.bearing_force_N = s.joint[main].pin_force_N;
+    c.normal_force_N = s.joint[main].normal_force_N;
+    c.gap_m = s.joint[main].gap_m;
+    c.penetration_m = s.joint[main].penetration_m;
+    std::size_t col = 0;
+    out.series.columns[col++][i] = units::rad_to_deg(th2);
+    for (const ClearanceOutputSpec* spec : specs) out.series.columns[col++][i] = clearance_column_value(*spec, c, th3, th4, eta);
+    for (int j : out.clearance_joints) {
+      const JointSample& js = s.joint[static_cast<std::size_t>(j)];
+      for (double v : {units::m_to_mm(js.gap_m), units::m_to_mm(js.penetration_m), js.normal_force_N, js.pin_force_N.x,
+                       js.pin_force_N.y})
+        out.series.columns[col++][i] = v;
+    }
+  }
+  return out;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,29 @@
+#pragma once
+// The scene's [linkage] table (model = "linkage"): the clearance of each
+// joint, the compliant contact law's keys (shared with [clearance]
+// model = "compliant": sim/clearance/compliant_settings.cpp reads them), the
+// tolerance, and optionally a tabulated crank motion. Keys in
+// docs/linkage-model.md.
+
+#include <filesystem>
+#include <optional>
+
+#include "common/toml_section.hpp"
+#include "mechanism/rig.hpp"
+#include "sim/linkage/linkage_model.hpp"
+
+namespace fourbar {
+
+struct LinkageSettings {
+  LinkageSpec spec;
+  /// `crank_motion`: a CSV time_s,crank_rad,crank_rad_s (resolved against the
+  /// scene's folder); empty: the scene's constant crank speed.
+  std::filesystem::path crank_table;
+  /// `duration_s` with a crank table (default: the table's length).
+  std::optional<double> duration_s;
+};
+
+/// Reads and validates the section; InputError naming the key otherwise.
+LinkageSettings read_linkage_settings(TomlSection& section, const Rig& rig);
+
+}  // namespace fourbar
