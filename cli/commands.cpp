@@ -15,7 +15,7 @@ std::span<const Command> commands() {
       Command{"acquire", "read a recording: calibrated channels, crank pulses, angle-tagged revolutions", run_acquire},
       Command{"analyze", "coupler and rocker angular acceleration and velocity from a recording, averaged",
               run_analyze},
-      Command{"sim", "simulate a scene (nominal or clearance model) and write CSV + JSON", run_sim},
+      Command{"sim", "simulate a scene (nominal, clearance or linkage model) and write CSV + JSON", run_sim},
       Command{"sweep", "run the clearance model over a clearance x rpm x e x mu grid, one table", run_sweep},
       Command{"virtual-rig", "write the recording (and manifest, truth) the sensors would give for a scene",
               run_virtual_rig},

@@ -73,6 +73,25 @@ std::string outputs_help() {
        "compression-restitution cycle), contact_impulse_Ns (whole contact), tangential_impulse_Ns, eta_deg,\n"
        "approach_speed_m_s, rebound_speed_m_s, peak_force_N, contact_duration_s, max_penetration_mm,\n"
        "energy_loss_J, mode_after (1: the pin stayed on the wall after the first cycle).\n";
+  s += "\nWith model = \"linkage\" (rigid links, clearance in any joint; docs/linkage-model.md) the outputs are\n"
+       "the clearance model's (single-bearing columns: the joint that closes the loop, coupler-rocker when it has\n"
+       "clearance; mode 1 while any joint is in contact), then per clearance joint J: J_gap_mm,\n"
+       "J_penetration_mm, J_contact_force_N, J_fx_N, J_fy_N. [linkage] table:\n";
+  s += help_line("crank_coupler_radial_mm", "radial clearance of the crank-coupler joint (default 0: ideal)");
+  s += help_line("coupler_rocker_radial_mm", "coupler-rocker joint (default: the rig's [clearance] radial_mm)");
+  s += help_line("rocker_ground_radial_mm", "rocker-ground joint (default 0: ideal)");
+  s += help_line("restitution", "e in [0, 1] (required)");
+  s += help_line("contact_stiffness_N_per_m_n", "K > 0 (required); damping, contact_exponent, friction_* and the\n"
+                 "                      film keys as with [clearance] model = \"compliant\"");
+  s += help_line("tolerance", "CVODE BDF tolerance on the scaled state (default 1e-10)");
+  s += help_line("settle_speed_mm_s", "an onset faster than this is an impact (default 0.001)");
+  s += help_line("crank_motion", "CSV time_s,crank_rad,crank_rad_s (uniform times) prescribing the crank,\n"
+                 "                      relative to the scene; replaces crank_speed_rpm and start_angle_deg");
+  s += help_line("duration_s", "with crank_motion: the run's length (default: the table's)");
+  s += "impacts.csv (linkage): one row per contact: joint (crank_coupler, coupler_rocker, rocker_ground),\n"
+       "time_s, approach_speed_m_s, crank_deg, impact, eta_deg, slip_speed_m_s, peak_force_N,\n"
+       "max_penetration_mm, contact_duration_s, normal_impulse_Ns, contact_impulse_Ns, energy_loss_J,\n"
+       "contact_lost, release_time_s, release_crank_deg, release_eta_deg.\n";
   return s;
 }
 

@@ -48,6 +48,9 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   if (!scene.recording)
     throw InputError(scene.source.string() + ": no [recording] table; the virtual rig needs one (see "
                      "'fourbar virtual-rig --help')");
+  if (scene.model == Model::linkage)
+    throw InputError(scene.source.string() + ": model = \"linkage\" is not a motion source of the virtual rig yet; "
+                     "use model = \"clearance\" (or \"nominal\") for a recording");
   // Re-read the table from the scene file when there is one: a copied TOML
   // table loses its line numbers, and errors should name the line.
   toml::table parsed, copy;

@@ -1,5 +1,6 @@
 #include "sim/linkage/linkage_settings.hpp"
 
+#include "common/number_text.hpp"
 #include "sim/clearance/settings.hpp"
 
 namespace fourbar {
@@ -19,10 +20,14 @@ LinkageSettings read_linkage_settings(TomlSection& s, const Rig& rig) {
   if (sum_mm == 0)
     s.fail("coupler_rocker_radial_mm", "and the other two joints' clearances are all 0; give at least one joint a "
                                        "clearance > 0 (or use model = \"nominal\")");
-  if (!(sum_mm < margin_mm))
-    s.fail("coupler_rocker_radial_mm", "and the other clearances add up to " + std::to_string(sum_mm) +
-                                           " mm, not below the rig's distance to a toggle (" +
-                                           std::to_string(margin_mm) + " mm); use smaller clearances");
+  if (!(sum_mm < margin_mm)) {
+    int largest = 0;
+    for (int j = 1; j < kJoints; ++j)
+      if (spec.clearance_m[static_cast<std::size_t>(j)] > spec.clearance_m[static_cast<std::size_t>(largest)]) largest = j;
+    s.fail(keys[largest], "makes the joints' clearances add up to " + format_double(sum_mm) +
+                              " mm, not below the rig's distance to a toggle (" + format_double(margin_mm) +
+                              " mm); use smaller clearances");
+  }
   // The compliant contact law, read by the compliant model's own reader.
   ClearanceSettings c;
   c.model = ClearanceKind::compliant;

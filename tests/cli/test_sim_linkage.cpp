@@ -1,0 +1,101 @@
+// `fourbar sim` with model = "linkage": series with per-joint columns,
+// impacts.csv with a joint column, per-joint summary; the Siconos scene with
+// its crank table read from shared/ beside the repository; bad [linkage]
+// values fail with exit status 2 naming the key.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_command.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::run_fourbar;
+using testing::TempDir;
+
+TEST(SimLinkageCommand, ThreeClearanceThesisSceneWritesPerJointTables) {
+  TempDir dir;
+  const auto r = run_fourbar("sim " FOURBAR_SOURCE_DIR "/data/scenes/thesis_linkage_three_clearances_350rpm.toml --out " +
+                             dir.path().string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string series = testing::read_file(dir.path() / "series.csv");
+  EXPECT_EQ(series.rfind("crank_deg,time_s,mode,alpha3_rad_s2", 0), 0u);
+  for (const char* c : {"crank_coupler_gap_mm", "coupler_rocker_contact_force_N", "rocker_ground_fy_N"})
+    EXPECT_NE(series.find(c), std::string::npos) << c;
+  EXPECT_EQ(testing::count_lines(series), 1 + 361);
+  const std::string impacts = testing::read_file(dir.path() / "impacts.csv");
+  EXPECT_EQ(impacts.rfind("joint,time_s,approach_speed_m_s,", 0), 0u);
+  for (const char* j : {"\ncrank_coupler,", "\ncoupler_rocker,", "\nrocker_ground,"})
+    EXPECT_NE(impacts.find(j), std::string::npos) << j;
+  std::ifstream in(dir.path() / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const auto& l = j.at("linkage");
+  EXPECT_LT(l.at("energy").at("residual_rel").get<double>(), 1e-8);
+  for (const char* name : {"crank_coupler", "coupler_rocker", "rocker_ground"}) {
+    const auto& jt = l.at("joints").at(name);
+    EXPECT_GT(jt.at("impacts").get<int>(), 0) << name;
+    const double free = jt.at("free_flight_share"), contact = jt.at("contact_share");
+    EXPECT_NEAR(free + contact, 1.0, 1e-9) << name;
+    EXPECT_GT(jt.at("contact_damping_loss_J").get<double>(), 0.0) << name;
+  }
+}
+
+TEST(SimLinkageCommand, SiconosSceneReadsTheSharedCrankTable) {
+  const std::filesystem::path table = std::filesystem::path(FOURBAR_SHARED_DIR) / "benchmarks/three-clearance-crank-motion.csv";
+  if (!std::filesystem::exists(table)) GTEST_SKIP() << "no " << table << " (shared/ beside the repository)";
+  // A checkout layout in a temporary folder: repo/data/{scenes,rigs} and shared/ beside repo.
+  TempDir dir;
+  const auto repo = dir.path() / "repo";
+  for (const char* f : {"data/scenes/siconos_three_clearance.toml", "data/rigs/siconos_three_clearance.toml"})
+    dir.write(std::string("repo/") + f, testing::read_file(std::filesystem::path(FOURBAR_SOURCE_DIR) / f));
+  std::filesystem::create_directory_symlink(std::filesystem::absolute(FOURBAR_SHARED_DIR), dir.path() / "shared");
+  const auto r = run_fourbar("sim " + (repo / "data/scenes/siconos_three_clearance.toml").string() + " --out " +
+                             (dir.path() / "out").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string impacts = testing::read_file(dir.path() / "out/impacts.csv");
+  EXPECT_EQ(impacts.rfind("joint,time_s,approach_speed_m_s,", 0), 0u);
+  std::ifstream in(dir.path() / "out/summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j.at("provenance").at("inputs").size(), 3u) << "scene, rig and crank table";
+  for (const char* name : {"crank_coupler", "coupler_rocker", "rocker_ground"})
+    EXPECT_GT(j.at("linkage").at("joints").at(name).at("impacts").get<int>(), 0) << name;
+}
+
+TEST(SimLinkageCommand, BadLinkageValuesExitTwoNamingTheKey) {
+  TempDir dir;
+  dir.write("rig.toml", testing::thesis_rig_toml());
+  const std::string base = R"(rig = "rig.toml"
+model = "linkage"
+crank_speed_rpm = 350.0
+outputs = ["time_s"]
+[linkage]
+restitution = 0.5
+contact_stiffness_N_per_m_n = 1e10
+)";
+  struct Case {
+    std::string extra, key;
+  };
+  for (const Case& c : {Case{"rocker_ground_radial_mm = -0.1\n", "rocker_ground_radial_mm"},
+                        Case{"coupler_rocker_radial_mm = 0.0\n", "coupler_rocker_radial_mm"},
+                        Case{"crank_coupler_radial_mm = 300.0\n", "crank_coupler_radial_mm"},
+                        Case{"contact = \"rough\"\n", "contact"},
+                        Case{"crank_motion = \"missing.csv\"\n", "crank_speed_rpm"}}) {
+    const auto scene = dir.write("scene.toml", base + c.extra);
+    const auto r = run_fourbar("sim " + scene.string() + " --out " + (dir.path() / "out").string());
+    EXPECT_EQ(r.status, 2) << c.extra;
+    EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.extra << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out/series.csv"));
+  }
+  const auto no_k = dir.write("scene.toml", testing::replace(base, "contact_stiffness_N_per_m_n = 1e10\n", ""));
+  const auto r = run_fourbar("sim " + no_k.string() + " --out " + (dir.path() / "out").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("contact_stiffness_N_per_m_n"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace fourbar
