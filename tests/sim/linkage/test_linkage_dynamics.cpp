@@ -1,0 +1,110 @@
+// The linkage model's stages at one instant against closed forms: the
+// thesis model's accelerations and motor torque (ClearanceModel, closed form,
+// thesis eqs. 4.1-20, 4.2-1, 3.3-1) with clearance at B and a pin force; and
+// free fall of coupler and rocker when every joint has clearance and no pin
+// touches its bushing.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "mechanism/kinematics.hpp"
+#include "sim/clearance/model.hpp"
+#include "sim/linkage/linkage_dynamics.hpp"
+
+namespace fourbar {
+namespace {
+
+LinkageSpec spec_with(const std::array<double, 3>& xi) {
+  LinkageSpec s;
+  s.clearance_m = xi;
+  s.law = {1e10, 1.5, DampingLaw::calibrated, 0.5};
+  return s;
+}
+
+TEST(LinkageDynamics, ClearanceAtBMatchesTheClosedFormModel) {
+  const Rig rig = thesis_rig();
+  const double xi = 0.254e-3;
+  const ClearanceModel cm(rig, xi);
+  const LinkageModel lm = build_linkage(rig, spec_with({0, xi, 0}));
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 50; ++k) {
+    const CrankState c{3.2 * u(gen), 40 * u(gen), 300 * u(gen)};
+    const NominalMotion nm = solve_motion(rig, c);
+    LinkageCoordinates q;
+    q.crank = c;
+    q.u2 = unit(c.angle_rad);
+    q.u = {unit(std::atan2(nm.pose.u3.y, nm.pose.u3.x) + 1e-3 * u(gen)),
+           unit(std::atan2(nm.pose.u4.y, nm.pose.u4.x) + 1e-3 * u(gen))};
+    q.q_offsets = ZVec::Zero(2);
+    q.z_rate = ZVec::Zero(3);
+    q.z_rate << nm.omega3_rad_s + u(gen), nm.omega4_rad_s + u(gen), c.speed_rad_s;
+    LinkageWorkspace w;
+    forward_kinematics(lm, q, w);
+    const Vec2 P{100 * u(gen), 100 * u(gen)};
+    w.pair[1].pin_force_N = P;
+    solve_accelerations(lm, q, w);
+    const LinkMotion m{q.u[0], q.u[1], q.z_rate(0), q.z_rate(1)};
+    double a3 = 0, a4 = 0;
+    cm.forced_accelerations(c, q.u2, m, P, a3, a4);
+    const double tau = cm.crank_torque_Nm(c, q.u2, m, a3, P);
+    EXPECT_NEAR(w.z_accel(0), a3, 1e-11 * (1 + std::abs(a3))) << k;
+    EXPECT_NEAR(w.z_accel(1), a4, 1e-11 * (1 + std::abs(a4))) << k;
+    EXPECT_NEAR(w.crank_torque_Nm, tau, 1e-11 * (1 + std::abs(tau))) << k;
+    // Bearing geometry and relative velocity as the closed-form model's.
+    const BearingState b = cm.bearing(c, q.u2, m);
+    EXPECT_NEAR(w.pair[1].gap_m, b.gap_m, 1e-15);
+    EXPECT_NEAR(w.pair[1].normal_speed_m_s, b.normal_speed_m_s, 1e-12 * (1 + std::abs(b.normal_speed_m_s)));
+    EXPECT_NEAR(w.pair[1].tangential_speed_m_s, b.tangential_speed_m_s,
+                1e-12 * (1 + std::abs(b.tangential_speed_m_s)));
+    // Kinetic and potential energy as the thesis model's.
+    EXPECT_NEAR(kinetic_energy_J(w, q), cm.kinetic_energy_J(c, m), 1e-12);
+    EXPECT_NEAR(potential_energy_J(lm, w), cm.potential_energy_J(c, m), 1e-12);
+  }
+}
+
+TEST(LinkageDynamics, CouplerAndRockerFallFreelyWithEveryPinInsideItsBushing) {
+  const Rig rig = thesis_rig();
+  const double xi = 0.254e-3;
+  const LinkageModel lm = build_linkage(rig, spec_with({xi, xi, xi}));
+  ASSERT_EQ(lm.coordinates(), 6);
+  const CrankState c{0.7, 36.6, 5.0};
+  const NominalMotion nm = solve_motion(rig, c);
+  LinkageCoordinates q;
+  q.crank = c;
+  q.u2 = unit(c.angle_rad);
+  q.u = {nm.pose.u3, nm.pose.u4};
+  q.q_offsets = ZVec::Zero(6);
+  q.q_offsets(2) = 0.3 * xi;  // the pins off-centre, but inside their bushings
+  q.q_offsets(5) = -0.2 * xi;
+  q.z_rate = ZVec::Zero(7);
+  q.z_rate << 2.0, -3.0, 0.01, -0.02, 0.005, 0.003, c.speed_rad_s;
+  LinkageWorkspace w;
+  forward_kinematics(lm, q, w);
+  std::array<double, kJoints> chi{};
+  pair_forces(lm, chi, w);
+  for (int j : lm.clearance_joints()) EXPECT_LT(w.pair[static_cast<std::size_t>(j)].penetration_m, 0.0);
+  solve_accelerations(lm, q, w);
+  for (int b : {1, 2}) {
+    const BodyFrame& f = w.body[static_cast<std::size_t>(b)];
+    const Vec2 r = lm.body(b).centre_m.x * f.u;
+    // Centre acceleration J_c·z̈ + bias = (0, −g); angular acceleration 0.
+    ZJac Jc = f.Jp;
+    Jc.row(0) += -r.y * f.Jw;
+    Jc.row(1) += r.x * f.Jw;
+    const Eigen::Vector2d a = Jc * w.z_accel;
+    const Vec2 bias = f.a_bias + f.alpha_bias * r.perp() - f.omega * f.omega * r;
+    EXPECT_NEAR(a(0) + bias.x, 0.0, 1e-10) << b;
+    EXPECT_NEAR(a(1) + bias.y, -rig.gravity_m_s2, 1e-10) << b;
+    EXPECT_NEAR(f.Jw.dot(w.z_accel) + f.alpha_bias, 0.0, 1e-10) << b;
+  }
+  // The motor holds the crank alone: τ = I_O2·α2 + m2·g·S2·cos θ2.
+  const double tau = rig.crank.inertia_about_joint() * c.accel_rad_s2 +
+                     rig.crank.mass_kg * rig.gravity_m_s2 * rig.crank.mass_centre_m * std::cos(c.angle_rad);
+  EXPECT_NEAR(w.crank_torque_Nm, tau, 1e-12 * (1 + std::abs(tau)));
+}
+
+}  // namespace
+}  // namespace fourbar
