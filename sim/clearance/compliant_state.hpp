@@ -12,7 +12,7 @@
 
 #include "mechanism/kinematics.hpp"
 #include "sim/clearance/compliant_simulator.hpp"
-#include "sim/clearance/contact_force.hpp"
+#include "sim/contact/contact_force.hpp"
 #include "sim/clearance/deviation_state.hpp"
 #include "sim/clearance/stiff_integrator.hpp"
 

@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "common/toml_section.hpp"
-#include "sim/clearance/contact_force.hpp"
-#include "sim/clearance/film_force.hpp"
+#include "sim/contact/contact_force.hpp"
+#include "sim/contact/film_force.hpp"
 
 namespace fourbar {
 

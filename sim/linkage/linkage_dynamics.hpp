@@ -3,7 +3,7 @@
 // and a workspace (Pinocchio's f(model, data, …), MuJoCo's mj_fwdPosition /
 // mj_fwdVelocity / mj_fwdAcceleration): positions and Jacobians of every
 // body, the clearance pairs' geometry and relative velocity, the pair forces
-// (the shared compliant laws of sim/clearance/contact_force.hpp and
+// (the shared compliant laws of sim/contact/contact_force.hpp and
 // film_force.hpp), then M·z̈ = Q with the crank's row giving the motor torque.
 //
 // Full coordinates z = (q, θ2): the crank angle is z[n], so the drive's

@@ -35,8 +35,8 @@
 
 #include "mechanism/rig.hpp"
 #include "mechanism/vec2.hpp"
-#include "sim/clearance/contact_force.hpp"
-#include "sim/clearance/film_force.hpp"
+#include "sim/contact/contact_force.hpp"
+#include "sim/contact/film_force.hpp"
 
 namespace fourbar {
 

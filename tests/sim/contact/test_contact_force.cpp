@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <functional>
 
-#include "sim/clearance/contact_force.hpp"
+#include "sim/contact/contact_force.hpp"
 #include "sim/clearance/contact_stiffness.hpp"
 #include "sim/clearance/stiff_integrator.hpp"
 

@@ -15,7 +15,7 @@
 //   Flores, Machado, Silva & Martins (2011):     c = 8(1 − e)/(5e)
 // (the two older ones from an energy balance valid for e near 1; Flores et
 // al.'s from an approximate integration of both phases, meant for any e.
-// tests/sim/clearance/test_contact_force.cpp measures the restitution each
+// tests/sim/contact/test_contact_force.cpp measures the restitution each
 // one really gives: with n = 1.5 Flores et al.'s gives 0.47 for e = 0.5 and
 // 0.26 for 0.3, which is why the calibrated law is the default.) The elastic part K·δⁿ stores
 // K·δⁿ⁺¹/(n + 1); everything else is dissipated: (F_n − K·δⁿ)·δ̇ ≥ 0.

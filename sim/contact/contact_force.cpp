@@ -1,9 +1,9 @@
-#include "sim/clearance/contact_force.hpp"
+#include "sim/contact/contact_force.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "sim/clearance/restitution_calibration.hpp"
+#include "sim/contact/restitution_calibration.hpp"
 
 namespace fourbar {
 

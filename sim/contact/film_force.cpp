@@ -1,4 +1,4 @@
-#include "sim/clearance/film_force.hpp"
+#include "sim/contact/film_force.hpp"
 
 #include <cmath>
 

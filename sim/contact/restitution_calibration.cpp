@@ -1,4 +1,4 @@
-#include "sim/clearance/restitution_calibration.hpp"
+#include "sim/contact/restitution_calibration.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common/units.hpp"
-#include "sim/clearance/film_force.hpp"
+#include "sim/contact/film_force.hpp"
 
 namespace fourbar {
 namespace {
