@@ -100,10 +100,13 @@ std::vector<std::string> range_warnings(const std::vector<RevolutionPlan>& plan,
                           " % of the median speed), set start_s = " + seconds(steady_from) + " and end_s = " +
                           seconds(steady_to) + " in the manifest, or pass --start-s " + seconds(steady_from) +
                           " --end-s " + seconds(steady_to);
-  const double outside = (to - from) - covered;
+  // Outside the turns beyond the partial turn that every recording has at
+  // each end (at most a turn before the first pulse, one after the last).
+  const double lead = std::max(0.0, plan.front().t_start - from), tail = std::max(0.0, to - plan.back().t_end);
+  const double outside = (to - from) - covered - std::min(lead, median) - std::min(tail, median);
   if (to > from && outside > kOutsideShareWarn * (to - from))
     w.push_back(format_number(outside, 3) + " s (" + format_number(100 * outside / (to - from), 3) + " %) " + what +
-                " lie outside the crank's turns (the turns run from " + seconds(plan.front().t_start) + " to " +
+                " lie outside the crank's turns, beyond a partial turn at each end (the turns run from " + seconds(plan.front().t_start) + " to " +
                 seconds(plan.back().t_end) + " s, " + seconds(from) + " to " + seconds(to) +
                 " s recorded): a run-up, a stall or the pickup off" + cut);
   if (change > kSpeedChangeWarn)

@@ -6,7 +6,8 @@
 // warnings say how to cut a recording whose crank did not turn steadily:
 //   • more than kOutsideShareWarn of the file (or of the range) lies outside
 //     the crank-pulse train: before its first turn, after its last, or in its
-//     gaps (a run-up, a stall, the pickup off);
+//     gaps (a run-up, a stall, the pickup off), beyond the partial turn each
+//     end of any recording has;
 //   • the turn speed changes by more than kSpeedChangeWarn over the turns
 //     kept (a coast-down at the end, a stall, a run-up).
 // Each names the steady part — the longest run of turns whose speed is
