@@ -14,7 +14,8 @@ IndexPlacement place_index_marks(const std::vector<double>& edges, const std::ve
   for (double m : marks) {
     const auto i = static_cast<std::size_t>(std::lower_bound(edges.begin(), edges.end(), m) - edges.begin());
     if (i == 0 || i == edges.size()) continue;
-    const double f = (m - edges[i - 1]) / (edges[i] - edges[i - 1]);  // (0, 1]
+    const double pitch = edges[i] - edges[i - 1];
+    const double f = pitch > 0 ? (m - edges[i - 1]) / pitch : 1.0;  // (0, 1]; A and B at one instant: on the edge
     place.push_back(static_cast<double>(i - 1) + f);
     c += std::cos(units::kTwoPi * f), s += std::sin(units::kTwoPi * f);
   }
