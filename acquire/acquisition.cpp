@@ -89,11 +89,15 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
 
   RevolutionSchedule schedule;
   SignalExcerpt excerpt;
+  TimeRange& range = report.range;
+  range.start_s = options.range.start_s ? options.range.start_s : manifest.start_s;
+  range.end_s = options.range.end_s ? options.range.end_s : manifest.end_s;
   if (manifest.multi_edge_angle()) {
     const WheelEdges edges = wheel_edge_pass(stream, manifest, report.thresholds);
     clock.lap(AcquirePass::pulses);
-    WheelSchedule wheel = plan_wheel_revolutions(number_edges(edges, manifest, info.file), manifest,
-                                                 info.sample_rate_hz, options.grid_points_per_rev);
+    NumberedEdges numbered = number_edges(edges, manifest, info.file);
+    trim_numbered_edges(numbered, range);
+    WheelSchedule wheel = plan_wheel_revolutions(numbered, manifest, info.sample_rate_hz, options.grid_points_per_rev);
     report.pulses = std::move(wheel.turns);
     report.wheel = std::move(wheel.report);
     append(report.warnings, std::move(wheel.warnings));
@@ -111,6 +115,7 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
     report.edges_debounced = edges.edges_debounced;
     report.edge_level_V = edges.edge_level_V;
     report.pulses = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
+    trim_pulse_train(report.pulses, range);
     report.pulse_width_deg = median_width_deg(edges.widths_s, report.pulses.typical_period_s);
     schedule = plan_revolutions(report.pulses, info.sample_rate_hz, options.grid_points_per_rev,
                                 manifest.pulse_channel().smoothing_period_turns);
@@ -120,7 +125,13 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   report.revolutions = report.pulses.revolutions();
   if (report.revolutions < 2)
     throw InputError(info.file.string() + ": " + std::to_string(report.revolutions) +
-                     " complete turns in the crank-angle channels; need at least 2: record longer or check them");
+                     " complete turns in the crank-angle channels" +
+                     (range.active() ? " between " + describe_range(range) : std::string()) +
+                     "; need at least 2: record longer, widen the range, or check them");
+  {
+    const double file_end_s = info.start_time_s + static_cast<double>(info.frames) / info.sample_rate_hz;
+    append(report.warnings, range_warnings(schedule.plan, info.start_time_s, file_end_s, range));
+  }
 
   require_smoothing_fits(schedule.smoothing, manifest, info.file);
   report.smoothing = schedule.smoothing;

@@ -38,6 +38,7 @@
 #include "acquire/revolution_plan.hpp"
 #include "acquire/signal_excerpt.hpp"
 #include "acquire/streaming_pass.hpp"
+#include "acquire/time_range.hpp"
 #include "acquire/wheel_plan.hpp"
 
 namespace fourbar {
@@ -54,6 +55,9 @@ struct AcquireOptions {
   /// own ahead of each pass, and the scan pass does the pulse channel on a
   /// second thread (the same numbers either way).
   unsigned threads = 1;
+  /// The part to analyse (--start-s/--end-s); each bound set here overrides
+  /// the manifest's start_s/end_s.
+  TimeRange range;
 };
 
 struct AcquisitionReport {
@@ -80,6 +84,7 @@ struct AcquisitionReport {
   std::size_t revolutions_in_gaps = 0;       ///< dropped: estimated turns inside pulse-train gaps
   SpeedStats speed;
   bool clipping_checked = false;             ///< false for float/text without adc_range_V
+  TimeRange range;                           ///< the part analysed (options over manifest; inactive: all)
   std::vector<std::string> warnings;
   std::array<double, kAcquirePasses> pass_seconds{};  ///< wall time of scan, pulses, samples passes
   std::optional<SignalExcerpt> excerpt;      ///< when AcquireOptions::excerpt_revolutions > 0

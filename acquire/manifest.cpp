@@ -241,6 +241,10 @@ Manifest load_manifest(const std::filesystem::path& file) {
   if (m.rate_variable && m.sample_rate_hz)
     root.fail("rate_variable", "and 'sample_rate_hz' both given; keep one of them");
   m.crank_direction = root.choice("crank_direction", {"ccw", "cw"}, "ccw") == "ccw" ? 1.0 : -1.0;
+  if (root.has("start_s")) m.start_s = root.number("start_s");
+  if (root.has("end_s")) m.end_s = root.number("end_s");
+  if (m.start_s && m.end_s && !(*m.end_s > *m.start_s))
+    root.fail("end_s", "must be after start_s (" + format_number(*m.start_s) + " s)");
   if (auto n = root.optional_string("notes")) m.notes = *n;
 
   auto sections = root.sections("channel");
@@ -331,6 +335,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
   if (m.time_column) os << "time_column = " << quoted(*m.time_column) << "\n";
   if (m.rate_variable) os << "rate_variable = " << quoted(*m.rate_variable) << "\n";
   os << "crank_direction = \"" << (m.crank_direction > 0 ? "ccw" : "cw") << "\"\n";
+  if (m.start_s) os << "start_s = " << num(*m.start_s) << "\n";
+  if (m.end_s) os << "end_s = " << num(*m.end_s) << "\n";
   if (!m.notes.empty()) os << "notes = " << quoted(m.notes) << "\n";
   for (const auto& c : m.channels) {
     os << "\n[[channel]]\n";

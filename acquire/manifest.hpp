@@ -98,6 +98,7 @@ struct Manifest {
   std::optional<double> sample_rate_hz;  ///< text recordings without a time column
   std::optional<std::string> time_column;
   std::optional<std::string> rate_variable;  ///< MATLAB recordings: the variable holding the rate in Hz
+  std::optional<double> start_s, end_s;  ///< the part to analyse (acquire/time_range.hpp); --start-s/--end-s override
   double crank_direction = 1;          ///< +1: the crank turns counter-clockwise (θ2 increases), −1 clockwise
   std::vector<ChannelSpec> channels;   ///< as listed, `[[channel]]`
   std::string notes;

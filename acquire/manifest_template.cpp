@@ -84,6 +84,8 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
   if (options.time_column) os << "time_column = " << toml_quoted(*options.time_column) << "\n";
   os << fill_in("crank_direction", "\"ccw\" when the crank angle increases counter-clockwise in the rig frame "
                                    "(README \"Sensor orientation\"), \"cw\" when it turns the other way");
+  os << "# start_s = 0    # optional: only the turns from this recording time (s) on; acquire/analyze warn with\n"
+        "# end_s = 60     # the values to type when a coast-down, a stall or a run-up should be cut\n";
   if (r.pulse_channel < 0)
     os << "\n# No channel looks like a crank-pulse train: give the pulse channel role = \"crank_pulse\"\n"
           "# (and polarity, crank_offset_deg), and delete its accelerometer keys.\n";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "acquire/index_marks.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 
@@ -65,17 +66,6 @@ std::vector<bool> check_counts(const std::vector<std::size_t>& starts, std::size
   return good;
 }
 
-/// The first edge at or after each mark; marks without an edge after them are dropped.
-std::vector<std::size_t> first_after(const std::vector<double>& edges, const std::vector<double>& marks) {
-  std::vector<std::size_t> s;
-  for (double m : marks) {
-    const auto it = std::lower_bound(edges.begin(), edges.end(), m);
-    if (it != edges.end()) s.push_back(static_cast<std::size_t>(it - edges.begin()));
-  }
-  s.erase(std::unique(s.begin(), s.end()), s.end());
-  return s;
-}
-
 void need_two_marks(std::size_t marks, const Manifest& m, const std::filesystem::path& rec) {
   if (marks >= 2) return;
   const ChannelSpec& idx = *m.channel_with(ChannelRole::crank_index);
@@ -88,7 +78,7 @@ void need_two_marks(std::size_t marks, const Manifest& m, const std::filesystem:
 void tooth_wheel_with_index(const WheelEdges& e, const Manifest& m, const std::filesystem::path& rec, NumberedEdges& out) {
   const ChannelSpec& p = m.pulse_channel();
   const auto P = static_cast<std::size_t>(p.pulses_per_rev);
-  const std::vector<std::size_t> starts = first_after(e.teeth_s, e.index_s);
+  const std::vector<std::size_t> starts = place_index_marks(e.teeth_s, e.index_s).reference_edges;
   need_two_marks(starts.size(), m, rec);
   const auto good = check_counts(starts, P, where(m, p, "pulses_per_rev"), "teeth",
                                  "set pulses_per_rev to the teeth counted between two index marks, or check the "
@@ -186,7 +176,7 @@ void quadrature(const WheelEdges& e, const Manifest& m, const std::filesystem::p
   // Reference edge: after each index mark, or the first edge.
   std::vector<std::size_t> starts;
   if (m.channel_with(ChannelRole::crank_index)) {
-    starts = first_after(time, e.index_s);
+    starts = place_index_marks(time, e.index_s).reference_edges;
     need_two_marks(starts.size(), m, rec);
   } else {
     for (std::size_t i = 0; i < time.size(); ++i)

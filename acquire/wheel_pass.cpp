@@ -21,8 +21,21 @@ std::string label(const ChannelSpec& c) {
 }
 
 /// Manual thresholds from the manifest or automatic ones from the histogram.
-PulseThresholds thresholds_of(const ChannelSpec& c, const LevelHistogram& h, const Manifest& m) {
-  const auto automatic = automatic_thresholds(h);
+/// An index high for one encoder state per turn (a Z gated to A/B: 1/4096 of
+/// a 1024-line turn, a sample or two) is too rare for its histogram to show
+/// two levels: it is read with the main channel's thresholds (encoder
+/// outputs share one logic level), and said so.
+PulseThresholds thresholds_of(const ChannelSpec& c, const LevelHistogram& h, const Manifest& m,
+                              const PulseThresholds& main, std::vector<std::string>& warnings) {
+  auto automatic = automatic_thresholds(h);
+  const ChannelSpec& primary = m.pulse_channel();
+  if (!automatic && !c.threshold_low_V && c.role == ChannelRole::crank_index && h.count() > 0) {
+    automatic = main;
+    warnings.push_back(label(c) + " is high too briefly for its own levels to show (an index gated to one "
+                       "encoder state); it is read with the thresholds of '" + primary.name + "' (" +
+                       format_number(main.low) + " V to " + format_number(main.high) +
+                       " V); set threshold_low_V/threshold_high_V on it if its levels differ");
+  }
   PulseThresholds t;
   if (automatic) t = *automatic;
   if (c.threshold_low_V) {
@@ -47,6 +60,7 @@ WheelEdges wheel_edge_pass(const BlockStream& stream, const Manifest& manifest, 
     if (const ChannelSpec* c = manifest.channel_with(r)) aux.push_back(c);
 
   // Thresholds of the channels beside the main one, from their levels.
+  WheelEdges e;
   std::vector<Source> sources{{&primary, main}};
   if (!aux.empty()) {
     std::vector<LevelHistogram> hist(aux.size());
@@ -56,7 +70,8 @@ WheelEdges wheel_edge_pass(const BlockStream& stream, const Manifest& manifest, 
         for (std::size_t f = 0; f < frames; ++f) hist[a].add(block[f * channels + idx] * vpu);
       }
     });
-    for (std::size_t a = 0; a < aux.size(); ++a) sources.push_back({aux[a], thresholds_of(*aux[a], hist[a], manifest)});
+    for (std::size_t a = 0; a < aux.size(); ++a)
+      sources.push_back({aux[a], thresholds_of(*aux[a], hist[a], manifest, main, e.warnings)});
   }
 
   // One detector per channel and edge direction wanted.
@@ -65,7 +80,6 @@ WheelEdges wheel_edge_pass(const BlockStream& stream, const Manifest& manifest, 
     std::unique_ptr<EdgeDetector> d;
     std::vector<double>* out;
   };
-  WheelEdges e;
   std::vector<Detector> det;
   auto add = [&](const Source& s, PulsePolarity pol, std::vector<double>* out) {
     det.push_back({static_cast<std::size_t>(*s.spec->index),

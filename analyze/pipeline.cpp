@@ -103,6 +103,7 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   acquire_options.progress = options.progress;
   acquire_options.excerpt_revolutions = options.excerpt_revolutions;
   acquire_options.threads = options.threads;
+  acquire_options.range = options.range;
   result.acquisition = acquire(*opened.reader, manifest, acquire_options, analysis);
   analysis.finish();
   // The analysis resamples on its own grid (acquire made none): report that one.

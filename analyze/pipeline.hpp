@@ -86,6 +86,8 @@ struct AnalyzeOptions {
   /// grown in steps of kGridPointsStep (360) until it holds the pass band
   /// (upper edge ≤ kGridMaxOrdersPerPoint (0.4)·N orders at the fastest revolution).
   std::size_t grid_points_per_rev = 0;
+  /// The part of the recording to analyse (--start-s/--end-s; over the manifest's start_s/end_s).
+  TimeRange range;
   FilterSettings filter;
   ConversionMethod conversion = ConversionMethod::full;
   IntegrationMethod integration = IntegrationMethod::spectral;

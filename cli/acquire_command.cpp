@@ -156,13 +156,14 @@ nlohmann::json stats_json(const ChannelStats& s, const char* unit) {
 
 /// `fourbar acquire REC` without --out: the whole acquisition, nothing written,
 /// a summary on stdout and the warnings on stderr.
-int check_recording(Reader& reader, const Manifest& m, int samples_per_rev, bool quiet) {
+int check_recording(Reader& reader, const Manifest& m, int samples_per_rev, const TimeRange& range, bool quiet) {
   struct Discard final : AcquisitionSink {
     bool wants_grid() const override { return false; }
   } discard;
   AcquireOptions options;
   options.grid_points_per_rev = samples_per_rev;
   options.progress = !quiet;
+  options.range = range;
   const AcquisitionReport rep = acquire(reader, m, options, discard);
   const RecordingInfo& ri = rep.recording;
   std::cout << ri.file.string() << ": " << ri.format << " " << ri.sample_format << ", " << ri.channels << " channels, "
@@ -195,6 +196,7 @@ int check_recording(Reader& reader, const Manifest& m, int samples_per_rev, bool
 int run_acquire(const Invocation& inv) {
   std::string recording, manifest_file, out_dir;
   int samples_per_rev = 0;
+  double start_s = 0, end_s = 0;
   bool no_samples = false, binary = false, csv_comments = false, quiet = false;
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, CSV)")(
@@ -206,13 +208,15 @@ int run_acquire(const Invocation& inv) {
       "per revolution)")("no-samples", po::bool_switch(&no_samples), "do not write samples.csv (long recordings)")(
       "binary", po::bool_switch(&binary),
       "write samples.f64 and revolutions.f64 (float64 little-endian rows, columns as the CSV; listed in "
-      "summary.json) instead of CSV");
+      "summary.json) instead of CSV")(
+      "start-s", po::value(&start_s), "only the turns from this recording time on (s; over the manifest's start_s)")(
+      "end-s", po::value(&end_s), "only the turns up to this recording time (s; over the manifest's end_s)");
   add_csv_comments_option(opts, csv_comments);
   add_quiet_option(opts, quiet);
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--no-samples] [--binary] [--csv-comments] [-q]", kDetails, opts, pos,
+  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--start-s T] [--end-s T] [--no-samples] [--binary] [--csv-comments] [-q]", kDetails, opts, pos,
                        inv, vm))
     return 0;
   const bool write = vm.count("out") > 0;
@@ -224,7 +228,12 @@ int run_acquire(const Invocation& inv) {
   // Check every input before creating anything.
   OpenedRecording opened = open_with_manifest(recording, manifest_file);
   const Manifest& m = opened.manifest;
-  if (!write) return check_recording(*opened.reader, m, samples_per_rev, quiet);
+  TimeRange range;
+  if (vm.count("start-s")) range.start_s = start_s;
+  if (vm.count("end-s")) range.end_s = end_s;
+  if (range.start_s && range.end_s && !(end_s > start_s))
+    throw InputError("acquire: --end-s " + format_number(end_s) + " must be after --start-s " + format_number(start_s));
+  if (!write) return check_recording(*opened.reader, m, samples_per_rev, range, quiet);
   ensure_output_dir(out_dir);
   const std::filesystem::path dir(out_dir);
   Provenance prov{inv.command_line, {recording, m.file, m.rig_file}, csv_comments};
@@ -232,6 +241,7 @@ int run_acquire(const Invocation& inv) {
   AcquireOptions options;
   options.grid_points_per_rev = samples_per_rev;
   options.progress = !quiet;
+  options.range = range;
   std::vector<AcquiredChannel> channels;
   for (const auto& c : m.channels)
     if (is_accelerometer(c.role)) channels.push_back({c.name, c.role, *c.index, c.position_m, c.offset_m, c.ac_coupled, c.highpass_hz});
@@ -333,6 +343,8 @@ int run_acquire(const Invocation& inv) {
                       {"repaired", rep.revolutions_repaired},
                       {"clipped", rep.revolutions_clipped},
                       {"dropped_in_gaps", rep.revolutions_in_gaps},
+                      {"range", {{"start_s", rep.range.start_s ? nlohmann::json(*rep.range.start_s) : nlohmann::json()},
+                                 {"end_s", rep.range.end_s ? nlohmann::json(*rep.range.end_s) : nlohmann::json()}}},
                       {"dropped_partial_s", {first_pulse - ri.start_time_s, ri.start_time_s + ri.duration_s() - last_pulse}},
                       {"samples_per_revolution", rep.grid_points_per_rev},
                       {"recorded_samples_per_revolution", rep.frames_per_rev}};

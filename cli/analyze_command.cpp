@@ -184,6 +184,7 @@ nlohmann::json filter_json(const FilterSpec& f) {
 int run_analyze(const Invocation& inv) {
   std::string recording, manifest_file, out_dir, band = "bandpass", window, integration;
   double low = 0, high = 0, mains = 0, mains_width = 1, transition = 0;
+  double start_s = 0, end_s = 0;
   std::size_t points = 0, guard = 0, spectrum_segment = 0, chunk = 0;
   int jobs = 0;
   bool thesis = false, per_revolution = false, strict = false, csv_comments = false, quiet = false;
@@ -224,7 +225,9 @@ int run_analyze(const Invocation& inv) {
       "chunk-revolutions", po::value(&chunk), chunk_help.c_str())(
       "jobs,j", po::value(&jobs), "chunks analysed at once, one per core (default 0: every core); the outputs do not "
                                   "depend on it")(
-      "thesis", po::bool_switch(&thesis), "the thesis's processing, for comparison (see below)");
+      "thesis", po::bool_switch(&thesis), "the thesis's processing, for comparison (see below)")(
+      "start-s", po::value(&start_s), "analyse only the turns from this recording time on (s; over the manifest's start_s)")(
+      "end-s", po::value(&end_s), "analyse only the turns up to this recording time (s; over the manifest's end_s)");
   add_csv_comments_option(opts, csv_comments);
   add_quiet_option(opts, quiet);
   const std::string details = kDetailsBeforeDefaults + details_defaults() + kDetailsAfterDefaults;
@@ -244,6 +247,10 @@ int run_analyze(const Invocation& inv) {
   if (vm.count("transition-hz")) o.filter.transition_hz = transition;
   if (vm.count("integration")) o.integration = parse_integration(integration);
   o.grid_points_per_rev = points;
+  if (vm.count("start-s")) o.range.start_s = start_s;
+  if (vm.count("end-s")) o.range.end_s = end_s;
+  if (o.range.start_s && o.range.end_s && !(end_s > start_s))
+    throw InputError("analyze: --end-s " + format_number(end_s) + " must be after --start-s " + format_number(start_s));
   o.guard_revolutions = guard;
   o.spectrum_segment = spectrum_segment;
   o.chunk_revolutions = chunk;
@@ -328,6 +335,8 @@ int run_analyze(const Invocation& inv) {
                       {"revolutions_clipped", rep.revolutions_clipped},
                       {"revolutions_dropped_in_gaps", rep.revolutions_in_gaps},
                       {"segments", rep.pulses.segments.size()},
+                      {"range", {{"start_s", rep.range.start_s ? nlohmann::json(*rep.range.start_s) : nlohmann::json()},
+                                 {"end_s", rep.range.end_s ? nlohmann::json(*rep.range.end_s) : nlohmann::json()}}},
                       {"pulses_inserted", rep.pulses.inserted_s.size()},
                       {"pulses_removed", rep.pulses.removed_s.size()},
                       {"clipping_checked", rep.clipping_checked},

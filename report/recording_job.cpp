@@ -92,6 +92,8 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
                       {"revolutions_repaired", acq.revolutions_repaired},
                       {"revolutions_clipped", acq.revolutions_clipped},
                       {"revolutions_in_gaps", acq.revolutions_in_gaps},
+                      {"range", {{"start_s", acq.range.start_s ? json(*acq.range.start_s) : json()},
+                                 {"end_s", acq.range.end_s ? json(*acq.range.end_s) : json()}}},
                       {"clipping_checked", acq.clipping_checked},
                       {"speed_rpm", {{"mean", acq.speed.mean_rpm}, {"std", acq.speed.std_rpm}, {"min", acq.speed.min_rpm}, {"max", acq.speed.max_rpm}}}};
   r["analysis"] = {{"points_per_rev", a.grid_points_per_rev},

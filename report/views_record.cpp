@@ -162,8 +162,10 @@ json speed_json(const AcquisitionReport& acq) {
           {"repaired", repaired},
           {"mean_rpm", acq.speed.mean_rpm},
           {"std_rpm", acq.speed.std_rpm},
-          {"source", acq.wheel.positions_per_rev > 0 ? acq.wheel.source + ": one point per turn"
-                                                     : "once-per-turn pulses: 60 s / period"},
+          {"source", (acq.wheel.positions_per_rev > 0 ? acq.wheel.source + ": one point per turn"
+                                                      : std::string("once-per-turn pulses: 60 s / period")) +
+                         (acq.range.active() ? "; only the turns in the manifest's range " + describe_range(acq.range)
+                                             : std::string())},
           {"rule", k == 1 ? "one point per revolution, at its start"
                           : "one point per " + std::to_string(k) + " consecutive revolutions: mean, min and max"}};
 }

@@ -144,6 +144,14 @@ RecordingSpec read_recording_spec(const Scene& scene) {
     w.missing_teeth = static_cast<int>(wt->integer("missing_teeth", 0, 100000, 0));
     w.encoder_lines = static_cast<int>(wt->integer("encoder_lines", 0, 1 << 22, 0));
     w.index = wt->boolean("index", false);
+    if (wt->has("index_offset_pitch")) {
+      // The index names the edge it coincides with or the first after it:
+      // tooth (line) 0 within one pitch (an encoder's: one quadrature edge).
+      const bool enc = wt->has("encoder_lines");
+      w.index_offset_pitch = enc ? wt->in_range("index_offset_pitch", -0.1875, 0.0625)
+                                 : wt->in_range("index_offset_pitch", -0.75, 0.25);
+      if (!w.index) wt->fail("index_offset_pitch", "places the index channel: set index = true too");
+    }
     w.tooth_error_rad = units::deg_to_rad(wt->in_range("tooth_error_deg", 0, 10, 0.0));
     w.correct_tooth_spacing = wt->boolean("correct_tooth_spacing", false);
     if ((w.teeth > 0) == (w.encoder_lines > 0)) wt->fail("teeth", "and 'encoder_lines': give exactly one of them");

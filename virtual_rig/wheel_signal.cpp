@@ -46,7 +46,10 @@ std::vector<EdgeChannel> wheel_channels(const WheelSpec& w, const CrankDrive& dr
       if (encoder) out[1].pulses.push_back({time_at(a + 0.25 * pitch), time_at(a + 0.75 * pitch)});
     }
     if (w.index) {
-      const double lead = t0 - (encoder ? 0.125 : 0.25) * pitch;
+      // At offset 0 the leading edge is position 0's own edge time (the
+      // same number, as a gate driven by that edge gives).
+      const double offset = w.index_offset_pitch.value_or(encoder ? -0.125 : -0.25);
+      const double lead = t0 + offset * pitch;
       out.back().pulses.push_back({time_at(lead), time_at(lead + 0.25 * pitch)});
     }
   }

@@ -11,9 +11,14 @@
 //   • encoder: line k's A edges at angle_deg + k·pitch + e_k and half a pitch
 //     later, B's a quarter pitch after A's;
 //   • index (optional): once per turn, a quarter pitch wide, its leading
-//     edge a quarter pitch (encoder: an eighth) before position 0.
+//     edge index_offset_pitch pitches after position 0's edge (default a
+//     quarter pitch, encoder an eighth, before it). At 0 it rises with
+//     position 0's edge: a tooth wheel's index pickup rising with tooth 0,
+//     or an encoder's Z gated to one A/B state (high while A is high and B
+//     low, from line 0's A rising edge to B's), as standard encoders do.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +32,9 @@ struct WheelSpec {
   int missing_teeth = 0;
   int encoder_lines = 0;           ///< > 0: a quadrature encoder instead
   bool index = false;              ///< an index channel (once per turn)
+  /// Index leading edge after position 0's edge, in pitches (lines); unset:
+  /// −0.25 (encoder −0.125). 0: on the edge (Z gated to A high, B low).
+  std::optional<double> index_offset_pitch;
   double tooth_error_rad = 0;      ///< each tooth (line) off by up to ± this
   bool correct_tooth_spacing = false;  ///< written into the manifest
   bool active() const { return teeth > 0 || encoder_lines > 0; }

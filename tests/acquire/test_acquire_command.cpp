@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <regex>
+
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -279,6 +282,72 @@ TEST_F(TachoCommand, CrankSmoothingSteadyRunAndSpeedStep) {
   const auto r = acquire(step);
   expect_clean_failure(r, "crank_smoothing = \"spline\" with smoothing_period_turns = 10");
   EXPECT_NE(r.err.find("Lower smoothing_period_turns"), std::string::npos) << r.err;
+}
+
+/// The range a warning tells the user to type: "--start-s A --end-s B".
+std::pair<std::string, std::string> suggested_range(const std::string& err) {
+  static const std::regex re(R"(--start-s ([0-9.]+) --end-s ([0-9.]+))");
+  std::smatch m;
+  if (!std::regex_search(err, m, re)) return {};
+  return {m[1].str(), m[2].str()};
+}
+
+// A run at 352 rpm that coasts down to 156 rpm in its last second
+// (acquire/time_range.hpp). The user is told the speed changed, by how much,
+// and the exact range to type; with it, the coast-down's turns are left out
+// and nothing is warned about. The manifest's keys do the same.
+TEST_F(TachoCommand, CoastDownIsWarnedWithTheRangeToCut) {
+  const double steady = 352.0 / 60, low = 156.0 / 60;
+  const auto s = testing::tacho_signal({{0, 10, 11}, {steady, steady, low}}, 1000, 0.1, 0.3);
+  const auto rec = tacho_csv(dir, "coast", s);
+  const auto r = acquire(rec, "--no-samples");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::printf("%s", r.err.c_str());
+  EXPECT_NE(r.err.find("fourbar: warning: the crank speed changes by"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("a coast-down, a stall or a run-up"), std::string::npos) << r.err;
+  const auto [from, to] = suggested_range(r.err);
+  ASSERT_FALSE(from.empty()) << r.err;
+  EXPECT_NE(r.err.find("set start_s = " + from + " and end_s = " + to), std::string::npos) << r.err;
+  EXPECT_LE(std::stod(to), 10.05);  // the coast-down starts at 10 s
+  EXPECT_LE(std::stod(from), 0.3);  // nothing steady is cut
+  std::filesystem::remove_all(out());
+
+  const auto clean = acquire(rec, "--no-samples --start-s " + from + " --end-s " + to);
+  ASSERT_EQ(clean.status, 0) << clean.err;
+  EXPECT_EQ(clean.err.find("warning"), std::string::npos) << clean.err;
+  const std::string summary = read_file(out() / "summary.json");
+  EXPECT_NE(summary.find("\"start_s\": " + from), std::string::npos) << summary;
+  // Every steady turn kept: 58 turns at 352 rpm in 10 s, less a partial one at each end.
+  const std::size_t rows = data_rows(out() / "revolution_list.csv");
+  EXPECT_GE(rows, 56u);
+  EXPECT_LE(rows, 58u);
+  std::filesystem::remove_all(out());
+
+  edit_manifest(rec, "clearance_mm = 0.0254\n", "clearance_mm = 0.0254\nstart_s = " + from + "\nend_s = " + to + "\n");
+  const auto keyed = acquire(rec, "--no-samples");
+  ASSERT_EQ(keyed.status, 0) << keyed.err;
+  EXPECT_EQ(keyed.err.find("warning"), std::string::npos) << keyed.err;
+  EXPECT_EQ(data_rows(out() / "revolution_list.csv"), rows);
+}
+
+// A run at 352 rpm that stalls at 8 s and stands still for 3 s: over a
+// tenth of the file lies outside the turns. Told so, with the range; with
+// it, clean.
+TEST_F(TachoCommand, StallIsWarnedWithTheRangeToCut) {
+  const double steady = 352.0 / 60;
+  const auto s = testing::tacho_signal({{0, 8, 8.3, 11.3}, {steady, steady, 0, 0}}, 1000, 0.1, 0.3);
+  const auto rec = tacho_csv(dir, "stall", s);
+  const auto r = acquire(rec, "--no-samples");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::printf("%s", r.err.c_str());
+  EXPECT_NE(r.err.find("of the recording lie outside the crank's turns"), std::string::npos) << r.err;
+  const auto [from, to] = suggested_range(r.err);
+  ASSERT_FALSE(from.empty()) << r.err;
+  EXPECT_LE(std::stod(to), 8.05);
+  std::filesystem::remove_all(out());
+  const auto clean = acquire(rec, "--no-samples --start-s " + from + " --end-s " + to);
+  ASSERT_EQ(clean.status, 0) << clean.err;
+  EXPECT_EQ(clean.err.find("warning"), std::string::npos) << clean.err;
 }
 
 TEST_F(BadInput, VirtualRigUnknownExtension) {

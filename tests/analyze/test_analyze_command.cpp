@@ -177,6 +177,37 @@ TEST_F(AnalyzeCommand, RecordTooShortForTheFilter) {
   expect_clean_failure(analyze(rec, "--transition-hz 0.1"), "--transition-hz");
 }
 
+// A time range (acquire/time_range.hpp): --start-s/--end-s keep only the
+// turns wholly inside it, summary.json says which range; the manifest's
+// start_s/end_s do the same, and the options override them. At 350 rpm a
+// turn is 0.171 s: [1, 2] s holds 5 whole turns.
+TEST_F(AnalyzeCommand, TimeRangeFromOptionsOrManifest) {
+  const auto rec = recording();
+  const auto r = analyze(rec, "--start-s 1 --end-s 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(read_file(out() / "summary.json"));
+  EXPECT_EQ(j["revolutions"]["averaged"], 5) << r.out;
+  EXPECT_EQ(j["acquisition"]["range"]["start_s"], 1.0);
+  EXPECT_EQ(j["acquisition"]["range"]["end_s"], 2.0);
+  std::filesystem::remove_all(out());
+
+  edit_manifest(rec, "crank_direction", "start_s = 1\nend_s = 2\ncrank_direction");
+  ASSERT_EQ(analyze(rec).status, 0);
+  j = nlohmann::json::parse(read_file(out() / "summary.json"));
+  EXPECT_EQ(j["revolutions"]["averaged"], 5);
+  std::filesystem::remove_all(out());
+  const auto wider = analyze(rec, "--end-s 3");  // start_s from the manifest, end_s from the option
+  ASSERT_EQ(wider.status, 0) << wider.err;
+  j = nlohmann::json::parse(read_file(out() / "summary.json"));
+  EXPECT_EQ(j["revolutions"]["averaged"], 11);
+  EXPECT_EQ(j["acquisition"]["range"]["end_s"], 3.0);
+  std::filesystem::remove_all(out());
+
+  expect_clean_failure(analyze(rec, "--start-s 2 --end-s 1"), "--end-s 1 must be after --start-s 2");
+  edit_manifest(rec, "end_s = 2", "end_s = 0.5");
+  expect_clean_failure(analyze(rec), "'end_s'");
+}
+
 TEST_F(AnalyzeCommand, BadOptions) {
   const auto rec = recording();
   expect_clean_failure(analyze(rec, "--band notch"), "--band");

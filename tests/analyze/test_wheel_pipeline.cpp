@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "acquire/wheel_setup.hpp"
@@ -25,6 +26,7 @@ using testing::WheelKind;
 struct Errors {
   double alpha3 = 0, omega3 = 0, alpha4 = 0, omega4 = 0;
   std::size_t revolutions = 0;
+  std::size_t turns_cut = 0, segments = 0, turns_in_train = 0;  ///< the crank-angle source's turns
 };
 
 Errors analyse(const VirtualSetup& v, const std::string& name, VirtualRigResult* out = nullptr) {
@@ -36,10 +38,13 @@ Errors analyse(const VirtualSetup& v, const std::string& name, VirtualRigResult*
   const RecordingAnalysis a = analyze_recording(written.recording, {}, o);
   const testing::GridTruth t = testing::grid_truth(v, written, a, a.revolution_numbers);
   const std::size_t N = a.grid_points_per_rev;
+  std::size_t turns = 0;
+  for (const auto& seg : a.acquisition.pulses.segments) turns += seg.size() - 1;
   return {rel_rms_error(a.coupler->alpha_rad_s2.mean, row_mean(t.alpha3, N)),
           rel_rms_error(a.coupler->omega_rad_s.mean, row_mean(t.omega3, N)),
           rel_rms_error(a.rocker->alpha_rad_s2.mean, row_mean(t.alpha4, N)),
-          rel_rms_error(a.rocker->omega_rad_s.mean, row_mean(t.omega4, N)), a.revolutions};
+          rel_rms_error(a.rocker->omega_rad_s.mean, row_mean(t.omega4, N)), a.revolutions,
+          a.acquisition.wheel.turns_cut, a.acquisition.pulses.segments.size(), turns};
 }
 
 VirtualSetup lab(double revolutions) {
@@ -69,6 +74,54 @@ TEST(AnalyzeWheel, InTurnSpeedChangeAgainstVirtualRigTruth) {
     EXPECT_LE(e.alpha3, 0.005) << testing::wheel_name(kind);
     EXPECT_LE(e.omega3, 0.001) << testing::wheel_name(kind);
     EXPECT_LT(e.alpha3, once.alpha3) << testing::wheel_name(kind);
+  }
+}
+
+// An index that coincides with an edge (acquire/index_marks.hpp): a
+// 1024-line encoder's Z gated to one A/B state at 51.2 kHz, a 60-tooth
+// wheel's index rising with tooth 0 (also with ±0.2° tooth-spacing errors,
+// corrected), 20 to 40 dB SNR, with and without the change of speed within
+// the turn. Every turn is counted (none cut, as many averaged as complete
+// turns) and the averages meet the wheel targets.
+TEST(AnalyzeWheel, IndexOnAnEdgeAgainstVirtualRigTruth) {
+  struct Case {
+    const char* name;
+    bool encoder;
+    double snr_db, tooth_error_deg;
+    bool speed_change;
+  };
+  const Case cases[] = {
+      {"encoder Z gated 30 dB", true, 30, 0, true},      {"encoder Z gated 40 dB steady", true, 40, 0, false},
+      {"60 teeth index on edge 20 dB", false, 20, 0, true}, {"60 teeth index on edge 40 dB", false, 40, 0, true},
+      {"60 teeth index on edge 30 dB steady", false, 30, 0, false},
+      {"60 teeth +-0.2 deg corrected 30 dB", false, 30, 0.2, true},
+  };
+  std::printf("\n  averaged RMS error / RMS of truth, index on an edge\n");
+  for (const Case& c : cases) {
+    VirtualSetup v = lab(c.encoder ? 12 : 40);
+    if (!c.speed_change) v.spec.speed_fluctuation = 0, v.spec.speed_harmonics.clear();
+    v.spec.noise_snr_db = c.snr_db;
+    v.spec.pulse.noise_V = 2.5 / std::pow(10.0, c.snr_db / 20);
+    WheelSpec& w = v.spec.wheel;
+    w.index = true;
+    w.index_offset_pitch = 0.0;
+    if (c.encoder) {
+      w.encoder_lines = 1024;
+      v.spec.sample_rate_hz = 51200;
+      v.spec.pulse.rise_s = 1.0 / v.spec.sample_rate_hz;
+    } else {
+      w.teeth = 60;
+      w.tooth_error_rad = units::deg_to_rad(c.tooth_error_deg);
+      w.correct_tooth_spacing = c.tooth_error_deg > 0;
+    }
+    const Errors e = analyse(v, "index.wav");
+    print(c.name, e);
+    EXPECT_EQ(e.turns_cut, 0u) << c.name;
+    EXPECT_EQ(e.segments, 1u) << c.name;
+    EXPECT_EQ(e.revolutions, e.turns_in_train) << c.name;
+    EXPECT_GE(e.revolutions, c.encoder ? 10u : 38u) << c.name;
+    EXPECT_LE(e.alpha3, 0.005) << c.name;
+    EXPECT_LE(e.omega3, 0.001) << c.name;
   }
 }
 

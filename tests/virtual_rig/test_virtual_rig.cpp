@@ -153,5 +153,26 @@ TEST_F(RecordingSpecErrors, NameTheKey) {
             std::string::npos);
 }
 
+// [recording.wheel] index_offset_pitch: read within one pitch (an encoder's:
+// one quadrature edge) so that tooth 0 is the edge the index names; an index
+// is needed.
+TEST_F(RecordingSpecErrors, IndexOffsetPitch) {
+  const std::string head = "[recording]\nsample_rate_hz = 1000\nduration_s = 1\n[recording.pulse]\n[recording.wheel]\n";
+  dir.write("rig.toml", testing::thesis_rig_toml());
+  const auto f = dir.write("ok.toml", "rig = \"rig.toml\"\ncrank_speed_rpm = 300\noutputs = [\"time_s\"]\n" + head +
+                                          "teeth = 60\nindex = true\nindex_offset_pitch = 0\n");
+  const RecordingSpec spec = read_recording_spec(load_scene(f));
+  ASSERT_TRUE(spec.wheel.index_offset_pitch.has_value());
+  EXPECT_EQ(*spec.wheel.index_offset_pitch, 0.0);
+  EXPECT_EQ(error_of(head + "encoder_lines = 256\nindex = true\nindex_offset_pitch = 0\n"), "");
+  EXPECT_NE(error_of(head + "teeth = 60\nindex = true\nindex_offset_pitch = 0.5\n").find("index_offset_pitch"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + "encoder_lines = 256\nindex = true\nindex_offset_pitch = 0.2\n").find("index_offset_pitch"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + "teeth = 60\nmissing_teeth = 2\nindex_offset_pitch = 0\n").find("set index = true"),
+            std::string::npos)
+      << error_of(head + "teeth = 60\nmissing_teeth = 2\nindex_offset_pitch = 0\n");
+}
+
 }  // namespace
 }  // namespace fourbar
