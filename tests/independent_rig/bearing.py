@@ -191,8 +191,11 @@ class ClearanceLinkage:
         inside = self.gap_event(t, y) > 0.0
         k = 0
         while t < t1:
-            def ev(tt, yy):
-                return self.gap_event(tt, yy)
+            # a hysteresis of 1e-11 m keeps each phase's start off its own root
+            band = 1e-11 if inside else -1e-11
+
+            def ev(tt, yy, band=band):
+                return self.gap_event(tt, yy) + band
             ev.terminal, ev.direction = True, (-1.0 if inside else 1.0)
             if inside:
                 v = self.approach_speed(t, y)
@@ -202,9 +205,14 @@ class ClearanceLinkage:
                     self.stats.impacts += 1
                     self.stats.approach_speeds.append(v)
                 self.stats.max_approach_m_s = max(self.stats.max_approach_m_s, v)
-            sol = solve_ivp(self.rhs, (t, t1), y, method="LSODA" if inside else "DOP853",
-                            events=ev, dense_output=out is not None, rtol=rtol, atol=atol,
-                            max_step=np.inf if inside else 1e-3)
+            try:
+                sol = solve_ivp(self.rhs, (t, t1), y, method="LSODA" if inside else "DOP853",
+                                events=ev, dense_output=out is not None, rtol=rtol, atol=atol,
+                                max_step=np.inf if inside else 1e-3)
+            except ValueError:  # scipy's event bracketing failed at a grazing touch: step past it
+                sol = solve_ivp(self.rhs, (t, min(t + 1e-6, t1)), y, method="LSODA",
+                                dense_output=out is not None, rtol=rtol, atol=atol)
+                sol.status = 1 if (self.gap_event(sol.t[-1], sol.y[:, -1]) > 0.0) != inside else 0
             if sol.status < 0:
                 raise RuntimeError(sol.message)
             t_end = sol.t[-1]

@@ -94,7 +94,8 @@ def one_recording(args, rig, rpm, clearance_m, index, out_dir):
     }
     sensors = default_sensors(args)
     g = rig.gravity_m_s2
-    columns, stats_sensors = [], {}
+    columns, twin_columns, stats_sensors = [], [], {}
+    clipped = 0
     skip = n_pre
     for ch, s in enumerate(sensors):
         th, w, a = (th3, w3, a3) if s.link == "coupler" else (th4, w4, a4)
@@ -105,12 +106,13 @@ def one_recording(args, rig, rpm, clearance_m, index, out_dir):
             bend = modes[s.link].acceleration(force, h, s.position_m)
         v_rigid = to_samples(condition(rigid, s, fs_fine), daq, ch)[skip:skip + n_out]
         v_bend = to_samples(condition(bend, s, fs_fine), daq, ch)[skip:skip + n_out] if args.vibration else 0 * v_rigid
-        v = v_rigid + v_bend
-        rms = float(np.sqrt(np.mean((v - v.mean()) ** 2)))
         t_out = t_rec + np.arange(n_out) / fs + ch * daq.multiplexed_skew_s
-        noisy = v + hum(t_out, daq, rng) + rng.normal(0.0, rms * 10 ** (-daq.snr_db / 20), n_out)
-        q, clipped = adc(noisy, daq)
-        columns.append(q)
+        mains, white = hum(t_out, daq, rng), rng.normal(0.0, 10 ** (-daq.snr_db / 20), n_out)
+        for v, cols in ((v_rigid + v_bend, columns), (v_rigid, twin_columns)):
+            rms = float(np.sqrt(np.mean((v - v.mean()) ** 2)))
+            q, clipped_here = adc(v + mains + rms * white, daq)
+            cols.append(q)
+            clipped = clipped_here if cols is columns else clipped
         r_full = float(np.sqrt(np.mean((v_rigid - v_rigid.mean()) ** 2)))
         b_full = float(np.sqrt(np.mean((v_bend - np.mean(v_bend)) ** 2)))
         stats_sensors[s.name] = {
@@ -126,11 +128,15 @@ def one_recording(args, rig, rpm, clearance_m, index, out_dir):
     p += rng.normal(0.0, pulse.noise_mV * 1e-3, n_out)
     q, _ = adc(p, daq)
     columns.append(q)
+    twin_columns.append(q)
 
     name = f"indep_{int(round(rpm))}rpm_{clearance_m * 1e3:.4f}mm".replace(".", "p")
-    write_wav24(os.path.join(out_dir, name + ".wav"), np.stack(columns, axis=1), fs, daq.full_scale_V)
-    write_manifest(os.path.join(out_dir, name + ".toml"), args, rig_rel="rig/" + os.path.basename(rig.path),
-                   clearance_m=clearance_m, sensors=sensors, daq=daq, pulse=pulse)
+    for folder, cols in ((out_dir, columns), (args.twin_out, twin_columns)):
+        if folder is None:
+            continue
+        write_wav24(os.path.join(folder, name + ".wav"), np.stack(cols, axis=1), fs, daq.full_scale_V)
+        write_manifest(os.path.join(folder, name + ".toml"), args, rig_rel="rig/" + os.path.basename(rig.path),
+                       clearance_m=clearance_m, sensors=sensors, daq=daq, pulse=pulse)
     turns_recorded = duration / period
     speeds = np.array(model.stats.approach_speeds)
     return name, {
@@ -161,6 +167,7 @@ def parse_args(argv):
                    help="pin radius in the friction's slip speed and moments (0: a point pin, as the thesis)")
     p.add_argument("--prior", default="truth", help='session.toml [theory]: "truth" or e.g. "e=1" or "e=0.5,mu=0.2"')
     p.add_argument("--vibration", action="store_true", help="add the links' bending modes")
+    p.add_argument("--twin-out", help="also write the same session without the vibration (same motion and noise) here")
     p.add_argument("--coupler-mode-hz", type=float, default=600.0)
     p.add_argument("--rocker-mode-hz", type=float, default=520.0)
     p.add_argument("--damping-ratio", type=float, default=0.02)
@@ -185,9 +192,12 @@ def parse_args(argv):
 def main(argv):
     args = parse_args(argv)
     rig = load_rig(args.rig)
-    os.makedirs(os.path.join(args.out, "rig"), exist_ok=True)
-    os.makedirs(os.path.join(args.out, "truth"), exist_ok=True)
-    shutil.copyfile(args.rig, os.path.join(args.out, "rig", os.path.basename(args.rig)))
+    for folder in (args.out, args.twin_out):
+        if folder is None:
+            continue
+        os.makedirs(os.path.join(folder, "rig"), exist_ok=True)
+        os.makedirs(os.path.join(folder, "truth"), exist_ok=True)
+        shutil.copyfile(args.rig, os.path.join(folder, "rig", os.path.basename(args.rig)))
     recs = args.recording or ["250:0.0254", "250:0.254", "350:0.0254", "350:0.254"]
     truth = {"generator": "tests/independent_rig/make_session.py", "arguments": vars(args), "recordings": {}}
     for i, spec in enumerate(recs):
@@ -200,6 +210,17 @@ def main(argv):
     write_session_toml(os.path.join(args.out, "session.toml"), args)
     with open(os.path.join(args.out, "truth", "truth.json"), "w") as f:
         json.dump(truth, f, indent=1)
+    if args.twin_out:
+        args.vibration = False
+        write_session_toml(os.path.join(args.twin_out, "session.toml"), args)
+        truth["arguments"] = vars(args)
+        truth["twin_of"] = args.out
+        for info in truth["recordings"].values():
+            for sensor in info["sensors"].values():
+                sensor["vibration_rms_V"] = sensor["vibration_over_rigid_rms"] = 0.0
+                sensor["vibration_over_rigid_rms_below_1kHz"] = 0.0
+        with open(os.path.join(args.twin_out, "truth", "truth.json"), "w") as f:
+            json.dump(truth, f, indent=1)
     return 0
 
 

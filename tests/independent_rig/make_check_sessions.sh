@@ -1,0 +1,41 @@
+#!/bin/sh
+# Makes issue 28's check sessions with the independent generator into DIR
+# (default /tmp/indep), each with the true prior unless said: smooth
+# e = 0.2, 0.5, 0.8; stick-slip e = 0.5 with μ = 0.1, 0.2; e = 0.8 smooth
+# with link vibration and the wrong prior e = 1, and its twin without the
+# vibration (same motion and noise). Two recordings each (250 and 350 rpm at
+# 0.254 mm; RECS="250:0.254 350:0.254 ..." to change), 25 turns; JOBS
+# sessions at a time (default 2). About 4 CPU minutes per recording.
+set -eu
+dir=${1:-/tmp/indep}
+jobs=${JOBS:-2}
+recs=${RECS:-"250:0.254 350:0.254"}
+here=$(dirname "$0")
+py=/usr/bin/python3
+mkdir -p "$dir"
+rec_args=""
+for r in $recs; do rec_args="$rec_args --recording $r"; done
+run() {
+    name=$1; shift
+    if [ -f "$dir/$name/truth/truth.json" ]; then echo "$name: exists"; return; fi
+    # shellcheck disable=SC2086
+    nice "$py" "$here/make_session.py" --out "$dir/$name" $rec_args "$@" > "$dir/$name.log" 2>&1 \
+        && echo "$name: made" || { echo "$name: FAILED (see $dir/$name.log)"; return 1; }
+}
+{
+    echo "vib_e08_prior1 --restitution 0.8 --vibration --prior e=1 --seed 81 --twin-out $dir/novib_e08_prior1"
+    echo "clean_e08 --restitution 0.8 --seed 8"
+    echo "stick_e05_mu02 --restitution 0.5 --friction 0.2 --seed 52"
+    echo "clean_e02 --restitution 0.2 --seed 2"
+    echo "stick_e05_mu01 --restitution 0.5 --friction 0.1 --seed 51"
+    echo "clean_e05 --restitution 0.5 --seed 5"
+} | {
+    n=0
+    while read -r line; do
+        # shellcheck disable=SC2086
+        run $line &
+        n=$((n + 1))
+        if [ "$n" -ge "$jobs" ]; then wait; n=0; fi
+    done
+    wait
+}
