@@ -3,7 +3,10 @@
 # (default /tmp/indep), each with the true prior unless said: smooth
 # e = 0.2, 0.5, 0.8; stick-slip e = 0.5 with μ = 0.1, 0.2; e = 0.8 smooth
 # with link vibration and the wrong prior e = 1, and its twin without the
-# vibration (same motion and noise). Two recordings each (250 and 350 rpm at
+# vibration (same motion and noise); with FULL=1 also stick-slip e = 0.2, 0.8
+# with μ = 0.1, 0.2, and e = 0.5 through a sensor resonance (6 kHz), an
+# analog anti-alias filter (4th-order Butterworth, 8 kHz) and a multiplexed
+# ADC's skew (9.8 µs per channel). Two recordings each (250 and 350 rpm at
 # 0.254 mm; RECS="250:0.254 350:0.254 ..." to change), 25 turns; JOBS
 # sessions at a time (default 2). About 4 CPU minutes per recording.
 set -eu
@@ -29,6 +32,13 @@ run() {
     echo "clean_e02 --restitution 0.2 --seed 2"
     echo "stick_e05_mu01 --restitution 0.5 --friction 0.1 --seed 51"
     echo "clean_e05 --restitution 0.5 --seed 5"
+    if [ "${FULL:-0}" = 1 ]; then
+        echo "stick_e02_mu01 --restitution 0.2 --friction 0.1 --seed 21"
+        echo "stick_e02_mu02 --restitution 0.2 --friction 0.2 --seed 22"
+        echo "stick_e08_mu01 --restitution 0.8 --friction 0.1 --seed 81"
+        echo "stick_e08_mu02 --restitution 0.8 --friction 0.2 --seed 82"
+        echo "chain_e05 --restitution 0.5 --seed 55 --sensor-resonance-hz 6000 --anti-alias butterworth:4:8000 --skew-us 9.765625"
+    fi
 } | {
     n=0
     while read -r line; do
