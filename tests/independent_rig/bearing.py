@@ -41,6 +41,9 @@ class Contact:
     pin_radius_m: float = 0.0        # 0: a point pin (the thesis's contact geometry)
     v_floor_m_s: float = 1e-3        # least approach speed in the damping term
     v_reg_m_s: float = 1e-4          # friction regularisation speed
+    friction_at: str = "always"      # "always": every contact; "impacts": as the thesis's
+                                     # stick-slip model, during an impact's compression and
+                                     # restitution only (not while the pin then stays on the wall)
 
 
 def hertz_stiffness(clearance_m: float, pin_radius_m: float = 6.35e-3) -> float:
@@ -117,6 +120,9 @@ class ClearanceLinkage:
         self.chi = damping_factor(contact.restitution)
         self.v0 = contact.v_floor_m_s
         self.stats = Stats()
+        self.fric_active = True
+        if contact.friction_at not in ("always", "impacts"):
+            raise SystemExit('friction_at must be "always" or "impacts"')
         cp, rk = rig.coupler, rig.rocker
         self.IA3, self.IO4 = cp.inertia_about_joint_kg_m2, rk.inertia_about_joint_kg_m2
 
@@ -146,7 +152,7 @@ class ClearanceLinkage:
         ddot = nx * rvx + ny * rvy
         fn = self.K * delta ** 1.5 * max(1.0 + self.chi * ddot / self.v0, 0.0)
         f = 0.0
-        if self.c.friction > 0.0:
+        if self.c.friction > 0.0 and self.fric_active:
             rp = self.c.pin_radius_m
             vt = -ny * rvx + nx * rvy + rp * w3 - (rp + self.xi) * w4
             f = -self.c.friction * fn * vt / math.sqrt(vt * vt + self.c.v_reg_m_s ** 2)
@@ -190,6 +196,7 @@ class ClearanceLinkage:
         t = t0
         inside = self.gap_event(t, y) > 0.0
         k = 0
+        new_phase = True
         while t < t1:
             # a hysteresis of 1e-11 m keeps each phase's start off its own root
             band = 1e-11 if inside else -1e-11
@@ -197,7 +204,7 @@ class ClearanceLinkage:
             def ev(tt, yy, band=band):
                 return self.gap_event(tt, yy) + band
             ev.terminal, ev.direction = True, (-1.0 if inside else 1.0)
-            if inside:
+            if inside and new_phase:
                 v = self.approach_speed(t, y)
                 self.v0 = max(v, self.c.v_floor_m_s)
                 self.stats.contacts += 1
@@ -205,9 +212,16 @@ class ClearanceLinkage:
                     self.stats.impacts += 1
                     self.stats.approach_speeds.append(v)
                 self.stats.max_approach_m_s = max(self.stats.max_approach_m_s, v)
+                self.fric_active = self.c.friction_at == "always" or v > 1e-3
+            events = [ev]
+            if inside and self.fric_active and self.c.friction_at == "impacts" and self.c.friction > 0.0:
+                def restituted(tt, yy):      # δ̇ back from receding to 0: the pin stays on the wall
+                    return self.approach_speed(tt, yy)
+                restituted.terminal, restituted.direction = True, 1.0
+                events.append(restituted)
             try:
                 sol = solve_ivp(self.rhs, (t, t1), y, method="LSODA" if inside else "DOP853",
-                                events=ev, dense_output=out is not None, rtol=rtol, atol=atol,
+                                events=events, dense_output=out is not None, rtol=rtol, atol=atol,
                                 max_step=np.inf if inside else 1e-3)
             except ValueError:  # scipy's event bracketing failed at a grazing touch: step past it
                 sol = solve_ivp(self.rhs, (t, min(t + 1e-6, t1)), y, method="LSODA",
@@ -223,8 +237,13 @@ class ClearanceLinkage:
                 k = k2
             y = sol.y[:, -1].copy()
             t = t_end
+            new_phase = False
             if sol.status == 1:
-                inside = not inside
+                if len(events) > 1 and sol.t_events is not None and len(sol.t_events[1]):
+                    self.fric_active = False   # the impact is over; the pin follows the wall
+                else:
+                    inside = not inside
+                    new_phase = True
         if out is not None and k < len(nodes):
             out[k:] = y
         return y, out

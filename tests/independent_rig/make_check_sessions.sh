@@ -3,7 +3,8 @@
 # (default /tmp/indep), each with the true prior unless said: smooth
 # e = 0.2, 0.5, 0.8; stick-slip e = 0.5 with μ = 0.1, 0.2; e = 0.8 smooth
 # with link vibration and the wrong prior e = 1, and its twin without the
-# vibration (same motion and noise); with FULL=1 also stick-slip e = 0.2, 0.8
+# vibration (same motion and noise); stick-slip e = 0.5 with μ = 0.1, 0.2
+# acting at impacts only (stickimp_*, the thesis's choice); with FULL=1 also stick-slip e = 0.2, 0.8
 # with μ = 0.1, 0.2, and e = 0.5 through a sensor resonance (6 kHz), an
 # analog anti-alias filter (4th-order Butterworth, 8 kHz) and a multiplexed
 # ADC's skew (9.8 µs per channel). Two recordings each (250 and 350 rpm at
@@ -32,6 +33,8 @@ run() {
     echo "clean_e02 --restitution 0.2 --seed 2"
     echo "stick_e05_mu01 --restitution 0.5 --friction 0.1 --seed 51"
     echo "clean_e05 --restitution 0.5 --seed 5"
+    echo "stickimp_e05_mu01 --restitution 0.5 --friction 0.1 --friction-at impacts --seed 601"
+    echo "stickimp_e05_mu02 --restitution 0.5 --friction 0.2 --friction-at impacts --seed 602"
     if [ "${FULL:-0}" = 1 ]; then
         echo "stick_e02_mu01 --restitution 0.2 --friction 0.1 --seed 21"
         echo "stick_e02_mu02 --restitution 0.2 --friction 0.2 --seed 22"

@@ -55,7 +55,8 @@ def one_recording(args, rig, rpm, clearance_m, index, out_dir):
     h = 1.0 / fs_fine
     crank = CrankMotion(rpm, args.wander_pct, args.wander_period_s,
                         theta0_rad=rng.uniform(0, 2 * math.pi))
-    contact = Contact(args.restitution, args.friction, pin_radius_m=args.pin_radius_mm * 1e-3)
+    contact = Contact(args.restitution, args.friction, pin_radius_m=args.pin_radius_mm * 1e-3,
+                      friction_at=args.friction_at)
     model = ClearanceLinkage(rig, clearance_m, contact, crank)
     period = 60.0 / rpm
     t_rec = args.warmup_turns * period
@@ -163,6 +164,8 @@ def parse_args(argv):
                    help="sensor chain run before the recording starts (AC coupling settles; inside the warm-up)")
     p.add_argument("--restitution", type=float, default=0.5)
     p.add_argument("--friction", type=float, default=0.0, help="Coulomb μ in every contact (0: smooth)")
+    p.add_argument("--friction-at", choices=["always", "impacts"], default="always",
+                   help='"always": μ acts in every contact; "impacts": only during an impact, as the thesis (not while the pin stays on the wall)')
     p.add_argument("--pin-radius-mm", type=float, default=0.0,
                    help="pin radius in the friction's slip speed and moments (0: a point pin, as the thesis)")
     p.add_argument("--prior", default="truth", help='session.toml [theory]: "truth" or e.g. "e=1" or "e=0.5,mu=0.2"')
