@@ -8,7 +8,7 @@
 # with μ = 0.1, 0.2, and e = 0.5 through a sensor resonance (6 kHz), an
 # analog anti-alias filter (4th-order Butterworth, 8 kHz) and a multiplexed
 # ADC's skew (9.8 µs per channel). Two recordings each (250 and 350 rpm at
-# 0.254 mm; RECS="250:0.254 350:0.254 ..." to change), 25 turns; JOBS
+# 0.254 mm; clean_e05 four, at 0.0254 mm too; RECS="250:0.254 350:0.254 ..." to change), 25 turns; JOBS
 # sessions at a time (default 2). About 4 CPU minutes per recording.
 set -eu
 dir=${1:-/tmp/indep}
@@ -22,8 +22,10 @@ for r in $recs; do rec_args="$rec_args --recording $r"; done
 run() {
     name=$1; shift
     if [ -f "$dir/$name/truth/truth.json" ]; then echo "$name: exists"; return; fi
+    these=$rec_args
+    case "$*" in *--recording*) these="" ;; esac   # the session names its own recordings
     # shellcheck disable=SC2086
-    nice "$py" "$here/make_session.py" --out "$dir/$name" $rec_args "$@" > "$dir/$name.log" 2>&1 \
+    nice "$py" "$here/make_session.py" --out "$dir/$name" $these "$@" > "$dir/$name.log" 2>&1 \
         && echo "$name: made" || { echo "$name: FAILED (see $dir/$name.log)"; return 1; }
 }
 {
@@ -32,7 +34,7 @@ run() {
     echo "stick_e05_mu02 --restitution 0.5 --friction 0.2 --seed 52"
     echo "clean_e02 --restitution 0.2 --seed 2"
     echo "stick_e05_mu01 --restitution 0.5 --friction 0.1 --seed 51"
-    echo "clean_e05 --restitution 0.5 --seed 5"
+    echo "clean_e05 --restitution 0.5 --seed 5 --recording 250:0.0254 --recording 250:0.254 --recording 350:0.0254 --recording 350:0.254"
     echo "stickimp_e05_mu01 --restitution 0.5 --friction 0.1 --friction-at impacts --seed 601"
     echo "stickimp_e05_mu02 --restitution 0.5 --friction 0.2 --friction-at impacts --seed 602"
     if [ "${FULL:-0}" = 1 ]; then
