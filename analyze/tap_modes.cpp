@@ -129,8 +129,9 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
   const std::size_t pre = tap > 200 ? tap - static_cast<std::size_t>(std::ceil(0.002 * fs)) : 0;
   std::span<const double> before = pre > 100 ? samples.subspan(0, pre) : std::span<const double>();
   std::span<const double> tail = samples.subspan(n - n / 10);
-  const double offset = before.empty() ? std::accumulate(tail.begin(), tail.end(), 0.0) / static_cast<double>(tail.size())
-                                       : std::accumulate(before.begin(), before.end(), 0.0) / static_cast<double>(before.size());
+  const double offset = before.empty()
+                            ? std::accumulate(tail.begin(), tail.end(), 0.0) / static_cast<double>(tail.size())
+                            : std::accumulate(before.begin(), before.end(), 0.0) / static_cast<double>(before.size());
   auto centred_rms = [&](std::span<const double> x) {
     double s = 0;
     for (double v : x) s += (v - offset) * (v - offset);
@@ -175,8 +176,9 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
   //    make one hump in the spectrum come out as two).
   std::vector<std::pair<double, double>> peaks = spectrum_peaks(y, fs, kPeakOverMedian);
   if (peaks.empty())
-    throw InputError("shows no resonance peak in its decay (nothing rings above the noise); tap harder, or closer "
-                     "to the middle of the link");
+    throw InputError(
+        "shows no resonance peak in its decay (nothing rings above the noise); tap harder, or closer "
+        "to the middle of the link");
   const int wanted = options.modes > 0 ? options.modes : 4;
   Eigen::VectorXd theta(2);
   theta << 0.01 * peaks.front().first, peaks.front().first;  // ζ ≈ 1 % to start
@@ -225,7 +227,7 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
     mode.damping_ratio = sigma / wn;
     mode.amplitude = std::hypot(c(2 * j), c(2 * j + 1));
     const Eigen::Matrix2d cs = cov.block<2, 2>(4 * j + 2, 4 * j + 2);
-    const Eigen::Vector2d dwn(sigma / wn, omega / wn);                             // ∂ωn/∂(σ, ω)
+    const Eigen::Vector2d dwn(sigma / wn, omega / wn);                                          // ∂ωn/∂(σ, ω)
     const Eigen::Vector2d dz(omega * omega / (wn * wn * wn), -sigma * omega / (wn * wn * wn));  // ∂ζ/∂(σ, ω)
     mode.frequency_sigma_Hz = std::sqrt(std::max(0.0, dwn.dot(cs * dwn))) / (2 * pi);
     mode.damping_sigma = std::sqrt(std::max(0.0, dz.dot(cs * dz)));

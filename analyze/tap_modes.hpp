@@ -32,7 +32,7 @@ struct TapMode {
   double frequency_sigma_Hz = 0;  ///< its standard error
   double damping_ratio = 0;
   double damping_sigma = 0;
-  double amplitude = 0;           ///< at the start of the decay, recorded units
+  double amplitude = 0;  ///< at the start of the decay, recorded units
 };
 
 struct TapOptions {
@@ -40,12 +40,12 @@ struct TapOptions {
 };
 
 struct TapResult {
-  std::vector<TapMode> modes;     ///< lowest frequency first
-  double tap_time_s = 0;          ///< the largest |value|, from the first sample
+  std::vector<TapMode> modes;  ///< lowest frequency first
+  double tap_time_s = 0;       ///< the largest |value|, from the first sample
   double decay_start_s = 0, decay_duration_s = 0;
-  double noise_rms = 0;           ///< the floor the decay ends at
-  double residual_rms = 0;        ///< of the fit over the decay
-  double decay_db = 0;            ///< how far the envelope fell (dB)
+  double noise_rms = 0;     ///< the floor the decay ends at
+  double residual_rms = 0;  ///< of the fit over the decay
+  double decay_db = 0;      ///< how far the envelope fell (dB)
 };
 
 /// Throws InputError (message: what is wrong, without the file name; the

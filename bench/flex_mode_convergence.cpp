@@ -23,13 +23,15 @@ int main() {
   sec.depth_m = 25e-3;
   const double L = 0.309, ei = sec.youngs_modulus_Pa * sec.second_moment_m4;
   const double mu = sec.density_kg_m3 * sec.area_m2;
-  const double g = 9.81, load = mu * g;  // the bar's own weight, across it
+  const double g = 9.81, load = mu * g;        // the bar's own weight, across it
   const double p = 1.0, a = 0.185, b = L - a;  // 1 N at the mass centre (185 mm from A)
   // Closed forms (Euler–Bernoulli, simply supported):
   const double uniform_mid = 5 * load * std::pow(L, 4) / (384 * ei);
-  const double uniform_moment = load * L * L / 8;   // mid-span bending moment
+  const double uniform_moment = load * L * L / 8;  // mid-span bending moment
   const double point_at_load = p * a * a * b * b / (3 * ei * L);
-  std::printf("| modes | highest f (Hz) | f1 error | own weight: mid deflection (µm), error | mid moment error | 1 N at S3: deflection error |\n");
+  std::printf(
+      "| modes | highest f (Hz) | f1 error | own weight: mid deflection (µm), error | mid moment error | 1 N at S3: "
+      "deflection error |\n");
   std::printf("|---|---|---|---|---|---|\n");
   for (int n : {1, 2, 4, 8}) {
     const ElasticLink link = build_elastic_link(pinned_pinned_link(L, sec, n));

@@ -29,13 +29,13 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <iterator>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <iterator>
 #include <string>
 
 #include <Eigen/Dense>
@@ -55,7 +55,6 @@ constexpr double kE = 0.20e12, kB = 0.008, kH = 0.008, kRho = 7870.0;
 constexpr double kOmega = 150.0;
 constexpr int kModes = 4, kNq = 3 + kModes, kNy = 2 * kNq;
 
-
 ElasticLink rod_link(bool test_set_mass) {
   ElasticLinkSpec spec;
   spec.name = "connecting rod";
@@ -63,7 +62,9 @@ ElasticLink rod_link(bool test_set_mass) {
   spec.mass_per_length_kg_m = kRho * kB * kH;
   spec.bending_stiffness_N_m2 = kE * kB * kH * kH * kH / 12;  // bending in the plane: b·h³/12
   spec.axial_stiffness_N = kE * kB * kH;
-  spec.shapes = {{ShapeKind::lateral_sine, 1}, {ShapeKind::lateral_sine, 2}, {ShapeKind::axial_quadratic_mid, 0},
+  spec.shapes = {{ShapeKind::lateral_sine, 1},
+                 {ShapeKind::lateral_sine, 2},
+                 {ShapeKind::axial_quadratic_mid, 0},
                  {ShapeKind::axial_quadratic_tip, 0}};
   // The test set's rod: m2 = ρ·b·h·L2, centre at L2/2, J2 about the crank pin
   // (m2·(L2²/3 + h²/12)).
@@ -126,8 +127,8 @@ struct SliderCrank {
     m = t.transpose() * body.mass * t;
     m(0, 0) += kJ1;  // crank about its pivot
     m(2, 2) += kM3;  // slider
-    rhs.head(kNq) = t.transpose() * (body.quadratic_force + body.stiffness_force + body.damping_force -
-                                     body.mass * z_bias);
+    rhs.head(kNq) =
+        t.transpose() * (body.quadratic_force + body.stiffness_force + body.damping_force - body.mass * z_bias);
 
     // The slider joint at the rod's deformed tip.
     point_jacobian(rod, body, kL2, frame, modal);
@@ -197,9 +198,12 @@ int main(int argc, char** argv) {
   double rtol = 1e-11;
   bool adams = false, test_set_mass = true;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--rtol") && i + 1 < argc) rtol = std::stod(argv[++i]);
-    else if (!std::strcmp(argv[i], "--adams")) adams = true;
-    else if (!std::strcmp(argv[i], "--consistent-mass")) test_set_mass = false;
+    if (!std::strcmp(argv[i], "--rtol") && i + 1 < argc)
+      rtol = std::stod(argv[++i]);
+    else if (!std::strcmp(argv[i], "--adams"))
+      adams = true;
+    else if (!std::strcmp(argv[i], "--consistent-mass"))
+      test_set_mass = false;
     else {
       std::fprintf(stderr, "usage: flexible_slider_crank [--rtol X] [--adams] [--consistent-mass]\n");
       return 2;
@@ -209,9 +213,20 @@ int main(int argc, char** argv) {
 
   // The test set's start values (crank.f, INIT): close to the smooth motion,
   // consistent for the linear stiffness without damping.
-  const double y0[kNy] = {0.0, 0.0, 0.450016933, 0.0, 0.0, 0.103339863e-4, 0.169327969e-4,
-                          150.0, -74.9957670, -0.268938672e-5, 0.444896105, 0.463434311e-2,
-                          -0.178591076e-5, -0.268938672e-5};
+  const double y0[kNy] = {0.0,
+                          0.0,
+                          0.450016933,
+                          0.0,
+                          0.0,
+                          0.103339863e-4,
+                          0.169327969e-4,
+                          150.0,
+                          -74.9957670,
+                          -0.268938672e-5,
+                          0.444896105,
+                          0.463434311e-2,
+                          -0.178591076e-5,
+                          -0.268938672e-5};
 
   double start[kNy];
   std::copy(std::begin(y0), std::end(y0), start);
@@ -253,10 +268,12 @@ int main(int argc, char** argv) {
   std::printf(
       "{\"phi2\": %.16e, \"x3\": %.16e, \"q1\": %.16e, \"q2\": %.16e, \"q3\": %.16e, \"q4\": %.16e, "
       "\"lambda1\": %.16e, \"lambda2\": %.16e, \"lambda3\": %.16e, \"phi2_dot\": %.16e, \"x3_dot\": %.16e, "
-      "\"drift_m\": %.3e, \"start_velocity_residual_m_s\": %.3e, \"rtol\": %.1e, \"method\": \"%s\", \"steps\": %ld, \"rhs_calls\": %ld, "
+      "\"drift_m\": %.3e, \"start_velocity_residual_m_s\": %.3e, \"rtol\": %.1e, \"method\": \"%s\", \"steps\": %ld, "
+      "\"rhs_calls\": %ld, "
       "\"seconds\": %.4f}\n",
       yv[1], yv[2], yv[3], yv[4], yv[5], yv[6], sys.solution(kNq), sys.solution(kNq + 1), sys.solution(kNq + 2),
-      yv[kNq + 1], yv[kNq + 2], g.norm(), velocity_residual, rtol, adams ? "adams" : "bdf", steps, sys.rhs_calls, seconds);
+      yv[kNq + 1], yv[kNq + 2], g.norm(), velocity_residual, rtol, adams ? "adams" : "bdf", steps, sys.rhs_calls,
+      seconds);
 
   CVodeFree(&mem);
   SUNLinSolFree(ls);

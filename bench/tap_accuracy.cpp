@@ -54,8 +54,8 @@ int main() {
           ++total;
         }
       }
-      std::printf("| %s | %.0f | %.2e | %.1f %% | %d/%d, %d/%d | %.0f |\n", c.name.c_str(), snr, worst_f,
-                  100 * worst_z, inside_f, total, inside_z, total, ms / kSeeds);
+      std::printf("| %s | %.0f | %.2e | %.1f %% | %d/%d, %d/%d | %.0f |\n", c.name.c_str(), snr, worst_f, 100 * worst_z,
+                  inside_f, total, inside_z, total, ms / kSeeds);
     }
   return 0;
 }

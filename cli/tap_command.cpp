@@ -41,13 +41,15 @@ std::vector<double> read_channel(const std::string& file, const ReaderOptions& o
       throw InputError(file + ": no channel '" + channel + "' (it has " + std::to_string(info.channels) +
                        "); give --channel as a column name or a number from 1");
   }
-  channel_name = index < static_cast<int>(info.channel_names.size()) && !info.channel_names[static_cast<std::size_t>(index)].empty()
+  channel_name = index < static_cast<int>(info.channel_names.size()) &&
+                         !info.channel_names[static_cast<std::size_t>(index)].empty()
                      ? info.channel_names[static_cast<std::size_t>(index)]
                      : std::to_string(index + 1);
   sample_rate_hz = info.sample_rate_hz;
   std::vector<double> out, block(static_cast<std::size_t>(4096 * info.channels));
   while (const std::size_t frames = reader->read(block))
-    for (std::size_t f = 0; f < frames; ++f) out.push_back(block[f * static_cast<std::size_t>(info.channels) + static_cast<std::size_t>(index)]);
+    for (std::size_t f = 0; f < frames; ++f)
+      out.push_back(block[f * static_cast<std::size_t>(info.channels) + static_cast<std::size_t>(index)]);
   return out;
 }
 
@@ -68,7 +70,8 @@ int run_tap(const Invocation& inv) {
   po::variables_map vm;
   if (!parse_arguments("tap", "REC [--channel C] [--modes N] [--link coupler|rocker]", kDetails, opts, pos, inv, vm))
     return 0;
-  if (link != "coupler" && link != "rocker") throw InputError("tap: --link must be coupler or rocker, not '" + link + "'");
+  if (link != "coupler" && link != "rocker")
+    throw InputError("tap: --link must be coupler or rocker, not '" + link + "'");
   if (vm.count("modes") && (modes < 1 || modes > 8)) throw InputError("tap: --modes must be 1 to 8");
   ReaderOptions options;
   if (vm.count("sample-rate-hz")) {
@@ -95,9 +98,11 @@ int run_tap(const Invocation& inv) {
   }
   std::cout << "# paste into the rig file (the standard errors above are 1 sigma):\n[" << link << ".elastic]\n"
             << "mode_frequencies_Hz = [";
-  for (std::size_t k = 0; k < r.modes.size(); ++k) std::cout << (k ? ", " : "") << format_number(r.modes[k].frequency_Hz, 6);
+  for (std::size_t k = 0; k < r.modes.size(); ++k)
+    std::cout << (k ? ", " : "") << format_number(r.modes[k].frequency_Hz, 6);
   std::cout << "]\ndamping_ratios = [";
-  for (std::size_t k = 0; k < r.modes.size(); ++k) std::cout << (k ? ", " : "") << format_number(r.modes[k].damping_ratio, 3);
+  for (std::size_t k = 0; k < r.modes.size(); ++k)
+    std::cout << (k ? ", " : "") << format_number(r.modes[k].damping_ratio, 3);
   std::cout << "]\n";
   return 0;
 }

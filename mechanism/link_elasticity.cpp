@@ -56,7 +56,8 @@ LinkElasticity read_link_elasticity(TomlSection& t) {
   if (t.has("mode_frequencies_Hz")) {
     e.frequencies_Hz = t.numbers("mode_frequencies_Hz");
     if (e.frequencies_Hz.empty())
-      t.fail("mode_frequencies_Hz", "is empty; give the tap test's peaks in Hz, lowest first (fourbar tap prints them)");
+      t.fail("mode_frequencies_Hz",
+             "is empty; give the tap test's peaks in Hz, lowest first (fourbar tap prints them)");
     double previous = 0;
     for (std::size_t i = 0; i < e.frequencies_Hz.size(); ++i) {
       const double f = e.frequencies_Hz[i];
@@ -65,8 +66,8 @@ LinkElasticity read_link_elasticity(TomlSection& t) {
                                           " must be > 0 Hz; give the tap test's peaks in Hz, lowest first "
                                           "(fourbar tap REC prints them)");
       if (!(f > previous))
-        t.fail("mode_frequencies_Hz", "must increase (lowest mode first): " + format_number(previous) + " then " +
-                                          format_number(f) + " Hz");
+        t.fail("mode_frequencies_Hz",
+               "must increase (lowest mode first): " + format_number(previous) + " then " + format_number(f) + " Hz");
       previous = f;
     }
   } else {

@@ -16,7 +16,7 @@ class TomlSection;
 struct LinkElasticity {
   int modes = 0;  ///< pinned–pinned bending modes
   std::optional<double> youngs_modulus_Pa;
-  std::optional<double> density_kg_m3;     ///< absent: the link's mass_kg spread over its length
+  std::optional<double> density_kg_m3;  ///< absent: the link's mass_kg spread over its length
   std::optional<double> area_m2;
   std::optional<double> second_moment_m4;  ///< in-plane bending
   std::optional<double> depth_m;           ///< in-plane width (width_mm), for the rotary inertia

@@ -141,15 +141,15 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(link.modal_stiffness, link.modal_mass);
   if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0))
-    bad(spec, "its modes have no stiffness (an eigenvalue of K·ψ = ω²·M·ψ is <= 0); check E, the second moment "
-              "and the area, or the measured frequencies");
+    bad(spec,
+        "its modes have no stiffness (an eigenvalue of K·ψ = ω²·M·ψ is <= 0); check E, the second moment "
+        "and the area, or the measured frequencies");
   link.frequencies_rad_s = eig.eigenvalues().cwiseSqrt();
   link.mode_vectors = eig.eigenvectors();
 
   link.damping_ratios = Eigen::VectorXd::Zero(n);
   for (int k = 0; k < n && !spec.damping_ratios.empty(); ++k)
-    link.damping_ratios(k) =
-        spec.damping_ratios[std::min(static_cast<std::size_t>(k), spec.damping_ratios.size() - 1)];
+    link.damping_ratios(k) = spec.damping_ratios[std::min(static_cast<std::size_t>(k), spec.damping_ratios.size() - 1)];
   const Eigen::MatrixXd mpsi = link.modal_mass * link.mode_vectors;
   link.modal_damping =
       mpsi * (2 * link.damping_ratios.cwiseProduct(link.frequencies_rad_s)).asDiagonal() * mpsi.transpose();

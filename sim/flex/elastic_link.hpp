@@ -49,17 +49,17 @@ struct BeamSection {
 /// Only m, S0 and I0 change; the modal integrals stay the uniform beam's.
 struct RigidInertia {
   double mass_kg = 0;
-  double mass_centre_m = 0;            ///< along the axis from s = 0
-  double inertia_origin_kg_m2 = 0;     ///< about the frame origin (s = 0)
+  double mass_centre_m = 0;         ///< along the axis from s = 0
+  double inertia_origin_kg_m2 = 0;  ///< about the frame origin (s = 0)
 };
 
 struct ElasticLinkSpec {
   std::string name = "link";
   double length_m = 0;
-  double mass_per_length_kg_m = 0;   ///< μ = ρ·A
-  double bending_stiffness_N_m2 = 0; ///< EI (0 only with measured_frequencies_Hz)
-  double axial_stiffness_N = 0;      ///< EA (needed when an axial shape is used)
-  double depth_m = 0;                ///< see BeamSection::depth_m
+  double mass_per_length_kg_m = 0;    ///< μ = ρ·A
+  double bending_stiffness_N_m2 = 0;  ///< EI (0 only with measured_frequencies_Hz)
+  double axial_stiffness_N = 0;       ///< EA (needed when an axial shape is used)
+  double depth_m = 0;                 ///< see BeamSection::depth_m
   std::vector<ShapeFunction> shapes;
   /// ζ per eigenmode, lowest frequency first; empty: undamped; shorter than
   /// the modes: the last value repeats.
@@ -85,16 +85,16 @@ struct ElasticLink {
   double mass_kg = 0;
   Eigen::Vector2d first_moment_kg_m = Eigen::Vector2d::Zero();  ///< S0
   double inertia_origin_kg_m2 = 0;                              ///< I0
-  Eigen::Matrix2Xd shape_moment;   ///< S̄ (2×n), kg
-  Eigen::VectorXd axial_coupling;  ///< c_x (n), kg·m
-  Eigen::VectorXd bending_coupling;///< c_y (n), kg·m
-  Eigen::MatrixXd modal_mass;      ///< M_ff, kg
-  Eigen::MatrixXd gyroscopic;      ///< B, kg
-  Eigen::MatrixXd modal_stiffness; ///< K_ff, N/m
-  Eigen::MatrixXd modal_damping;   ///< D_ff, N·s/m
-  Eigen::VectorXd frequencies_rad_s;  ///< ω_k, ascending
-  Eigen::VectorXd damping_ratios;     ///< ζ_k
-  Eigen::MatrixXd mode_vectors;       ///< Ψ, mass-normalised (columns)
+  Eigen::Matrix2Xd shape_moment;                                ///< S̄ (2×n), kg
+  Eigen::VectorXd axial_coupling;                               ///< c_x (n), kg·m
+  Eigen::VectorXd bending_coupling;                             ///< c_y (n), kg·m
+  Eigen::MatrixXd modal_mass;                                   ///< M_ff, kg
+  Eigen::MatrixXd gyroscopic;                                   ///< B, kg
+  Eigen::MatrixXd modal_stiffness;                              ///< K_ff, N/m
+  Eigen::MatrixXd modal_damping;                                ///< D_ff, N·s/m
+  Eigen::VectorXd frequencies_rad_s;                            ///< ω_k, ascending
+  Eigen::VectorXd damping_ratios;                               ///< ζ_k
+  Eigen::MatrixXd mode_vectors;                                 ///< Ψ, mass-normalised (columns)
 
   int modes() const { return static_cast<int>(shapes.size()); }
 };

@@ -11,9 +11,10 @@ std::optional<ElasticLinkSpec> rig_elastic_spec(const Rig& rig, RigLink which) {
   ElasticLinkSpec spec;
   spec.name = (rig.source.empty() ? std::string("rig") : rig.source.string()) + " [" + to_string(which) + ".elastic]";
   spec.length_m = link.length_m;
-  spec.mass_per_length_kg_m = e->density_kg_m3 && e->area_m2 ? *e->density_kg_m3 * *e->area_m2
-                                                              : link.mass_kg / link.length_m;
-  if (e->youngs_modulus_Pa && e->second_moment_m4) spec.bending_stiffness_N_m2 = *e->youngs_modulus_Pa * *e->second_moment_m4;
+  spec.mass_per_length_kg_m =
+      e->density_kg_m3 && e->area_m2 ? *e->density_kg_m3 * *e->area_m2 : link.mass_kg / link.length_m;
+  if (e->youngs_modulus_Pa && e->second_moment_m4)
+    spec.bending_stiffness_N_m2 = *e->youngs_modulus_Pa * *e->second_moment_m4;
   if (e->youngs_modulus_Pa && e->area_m2) spec.axial_stiffness_N = *e->youngs_modulus_Pa * *e->area_m2;
   spec.depth_m = e->depth_m.value_or(0.0);
   for (int k = 1; k <= e->modes; ++k) spec.shapes.push_back({ShapeKind::lateral_sine, k});

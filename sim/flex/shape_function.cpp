@@ -39,10 +39,14 @@ bool is_lateral(const ShapeFunction& f) { return f.kind == ShapeKind::lateral_si
 std::string describe(const ShapeFunction& f) {
   const std::string k = std::to_string(f.index);
   switch (f.kind) {
-    case ShapeKind::lateral_sine: return "sin(" + k + "πξ) lateral";
-    case ShapeKind::axial_sine: return "sin(" + std::to_string(2 * f.index - 1) + "πξ/2) axial";
-    case ShapeKind::axial_quadratic_mid: return "4ξ(1−ξ) axial";
-    case ShapeKind::axial_quadratic_tip: return "ξ(2ξ−1) axial";
+    case ShapeKind::lateral_sine:
+      return "sin(" + k + "πξ) lateral";
+    case ShapeKind::axial_sine:
+      return "sin(" + std::to_string(2 * f.index - 1) + "πξ/2) axial";
+    case ShapeKind::axial_quadratic_mid:
+      return "4ξ(1−ξ) axial";
+    case ShapeKind::axial_quadratic_tip:
+      return "ξ(2ξ−1) axial";
   }
   return "?";
 }

@@ -29,9 +29,9 @@ struct ShapeFunction {
 
 /// One shape function's value and ξ-derivatives at a point (per unit η).
 struct ShapeValue {
-  double x = 0, y = 0;      ///< Φx, Φy
-  double dx = 0, dy = 0;    ///< dΦ/dξ
-  double ddy = 0;           ///< d²Φy/dξ² (bending curvature ×L²)
+  double x = 0, y = 0;    ///< Φx, Φy
+  double dx = 0, dy = 0;  ///< dΦ/dξ
+  double ddy = 0;         ///< d²Φy/dξ² (bending curvature ×L²)
 };
 
 ShapeValue evaluate(const ShapeFunction& f, double xi);

@@ -54,7 +54,8 @@ TEST(TapModes, TheThesisCouplersFirstTwoModes) {
 TEST(TapModes, ARecordWithoutADecayIsRefused) {
   auto rec = virtual_tap({{614.0, 0.02, 1.0, 0.0}}, 30, 1);
   // A steady tone (a shaker, mains hum): no decay.
-  for (std::size_t i = 0; i < rec.samples.size(); ++i) rec.samples[i] = std::sin(2 * 3.14159 * 600 * static_cast<double>(i) / 25600.0);
+  for (std::size_t i = 0; i < rec.samples.size(); ++i)
+    rec.samples[i] = std::sin(2 * 3.14159 * 600 * static_cast<double>(i) / 25600.0);
   EXPECT_THROW(identify_tap_modes(rec.samples, rec.sample_rate_hz), InputError);
   // Noise only.
   std::vector<double> noise(25600);

@@ -20,8 +20,11 @@ ElasticLink test_link() {
   spec.mass_per_length_kg_m = 0.5;
   spec.bending_stiffness_N_m2 = 60;
   spec.axial_stiffness_N = 1e7;
-  spec.shapes = {{ShapeKind::lateral_sine, 1}, {ShapeKind::lateral_sine, 2}, {ShapeKind::axial_quadratic_mid, 0},
-                 {ShapeKind::axial_quadratic_tip, 0}, {ShapeKind::axial_sine, 1}};
+  spec.shapes = {{ShapeKind::lateral_sine, 1},
+                 {ShapeKind::lateral_sine, 2},
+                 {ShapeKind::axial_quadratic_mid, 0},
+                 {ShapeKind::axial_quadratic_tip, 0},
+                 {ShapeKind::axial_sine, 1}};
   return build_elastic_link(spec);
 }
 
@@ -96,7 +99,7 @@ TEST(ElasticBody, PinnedEndsDoNotMoveInTheFrame) {
   const Eigen::VectorXd eta = Eigen::VectorXd::Constant(8, 1e-3);
   EXPECT_LT(deflection(link, 0.0, eta).norm(), 1e-18);
   EXPECT_LT(deflection(link, 0.309, eta).norm(), 1e-16);
-  EXPECT_NEAR(deflection(link, 0.309 / 2, eta).y, 1e-3 * (1 - 1 + 1 - 1), 1e-16);  // sin(kπ/2): 1,0,−1,0,…
+  EXPECT_NEAR(deflection(link, 0.309 / 2, eta).y, 1e-3 * (1 - 1 + 1 - 1), 1e-16);       // sin(kπ/2): 1,0,−1,0,…
   EXPECT_NEAR(slope_rad(link, 0.0, eta), 1e-3 * std::numbers::pi * 36 / 0.309, 1e-12);  // Σk = 36
 }
 

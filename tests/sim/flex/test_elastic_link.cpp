@@ -67,7 +67,9 @@ TEST(ElasticLink, QuadraticAxialIntegralsMatchTheTestSet) {
   spec.mass_per_length_kg_m = rho * A;
   spec.bending_stiffness_N_m2 = E * I;
   spec.axial_stiffness_N = E * A;
-  spec.shapes = {{ShapeKind::lateral_sine, 1}, {ShapeKind::lateral_sine, 2}, {ShapeKind::axial_quadratic_mid, 0},
+  spec.shapes = {{ShapeKind::lateral_sine, 1},
+                 {ShapeKind::lateral_sine, 2},
+                 {ShapeKind::axial_quadratic_mid, 0},
                  {ShapeKind::axial_quadratic_tip, 0}};
   const ElasticLink link = build_elastic_link(spec);
   const double facb = A * L, fack = E * A / L;
@@ -97,8 +99,7 @@ TEST(ElasticLink, ModalDampingIsTwoZetaOmegaM) {
   const ElasticLink link = build_elastic_link(pinned_pinned_link(0.309, coupler_section(), 3, {0.01, 0.02}));
   for (int k = 0; k < 3; ++k) {
     const double zeta = k == 0 ? 0.01 : 0.02;  // the last ratio repeats
-    EXPECT_NEAR(link.modal_damping(k, k) / (2 * zeta * link.frequencies_rad_s(k) * link.modal_mass(k, k)), 1.0,
-                1e-12);
+    EXPECT_NEAR(link.modal_damping(k, k) / (2 * zeta * link.frequencies_rad_s(k) * link.modal_mass(k, k)), 1.0, 1e-12);
   }
   EXPECT_NEAR(link.modal_damping(0, 1), 0.0, 1e-9);
 }
