@@ -65,6 +65,9 @@ LinkElasticity read_link_elasticity(TomlSection& t) {
         t.fail("mode_frequencies_Hz", "[" + std::to_string(i) + "] = " + format_number(f) +
                                           " must be > 0 Hz; give the tap test's peaks in Hz, lowest first "
                                           "(fourbar tap REC prints them)");
+      if (!(f < 1e6))
+        t.fail("mode_frequencies_Hz", "[" + std::to_string(i) + "] = " + format_number(f) +
+                                          " Hz is beyond any link's bending mode (< 1 MHz); give the peaks in Hz");
       if (!(f > previous))
         t.fail("mode_frequencies_Hz",
                "must increase (lowest mode first): " + format_number(previous) + " then " + format_number(f) + " Hz");

@@ -152,6 +152,8 @@ TEST(RigElastic, RejectsBadModes) {
   EXPECT_NE(msg.find("must be > 0 Hz"), std::string::npos) << msg;
   msg = elastic_error("mode_frequencies_Hz = [0]\n");
   EXPECT_NE(msg.find("[0] = 0 must be > 0 Hz"), std::string::npos) << msg;
+  msg = elastic_error("mode_frequencies_Hz = [600, 1e300]\n");
+  EXPECT_NE(msg.find("< 1 MHz"), std::string::npos) << msg;
   msg = elastic_error("mode_frequencies_Hz = [900, 600]\n");
   EXPECT_NE(msg.find("must increase"), std::string::npos) << msg;
   msg = elastic_error("mode_frequencies_Hz = [600]\ndamping_ratios = [1.0]\n");
