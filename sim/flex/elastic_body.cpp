@@ -45,6 +45,16 @@ double slope_rad(const ElasticLink& link, double s_m, const Eigen::VectorXd& eta
   return slope;
 }
 
+Vec2 axis_tangent(const ElasticLink& link, double s_m, const FrameState& frame, const ModalState& modal) {
+  Eigen::Vector2d d(1, 0);
+  const double xi = s_m / link.length_m;
+  for (int k = 0; k < link.modes(); ++k) {
+    const ShapeValue v = evaluate(link.shapes[static_cast<std::size_t>(k)], xi);
+    d += Eigen::Vector2d(v.dx, v.dy) * (modal.eta_m(k) / link.length_m);
+  }
+  return to_vec(rotation(frame.angle_rad) * d.normalized());
+}
+
 Vec2 point_position(const ElasticLink& link, double s_m, const FrameState& frame, const ModalState& modal) {
   const Eigen::Vector2d u = Eigen::Vector2d(s_m, 0) + shape_matrix(link, s_m) * modal.eta_m;
   return frame.origin_m + to_vec(rotation(frame.angle_rad) * u);

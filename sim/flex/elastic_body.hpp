@@ -46,6 +46,11 @@ ModalState zero_modal_state(const ElasticLink& link);
 Vec2 deflection(const ElasticLink& link, double s_m, const Eigen::VectorXd& eta);
 double slope_rad(const ElasticLink& link, double s_m, const Eigen::VectorXd& eta);
 
+/// The deformed axis's unit tangent at s, in the plane: A·(1 + Φx'η, Φy'η)
+/// normalised (' = d/ds). An accelerometer at s reads its acceleration minus
+/// gravity projected on this (tangential) and on its +90° turn (normal).
+Vec2 axis_tangent(const ElasticLink& link, double s_m, const FrameState& frame, const ModalState& modal);
+
 /// A point at arc length s (0 … L) on the link's axis, deformed.
 Vec2 point_position(const ElasticLink& link, double s_m, const FrameState& frame, const ModalState& modal);
 Vec2 point_velocity(const ElasticLink& link, double s_m, const FrameState& frame, const ModalState& modal);

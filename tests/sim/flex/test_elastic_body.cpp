@@ -90,6 +90,21 @@ TEST(ElasticBody, PointRatesAreDerivativesOfPosition) {
   EXPECT_LT((a - fd_a).norm(), 1e-4 * a.norm());
 }
 
+TEST(ElasticBody, AxisTangentIsTheDerivativeAlongTheLink) {
+  const ElasticLink link = test_link();
+  std::mt19937 rng(11);
+  const RandomState st = random_state(link, rng);
+  for (double s : {0.0, 0.07, 0.15, 0.3}) {
+    const double h = 1e-6;
+    const double a = std::max(0.0, s - h), b = std::min(link.length_m, s + h);
+    const Vec2 d = (point_position(link, b, st.frame, st.modal) - point_position(link, a, st.frame, st.modal));
+    const Vec2 t = axis_tangent(link, s, st.frame, st.modal);
+    EXPECT_NEAR(t.norm(), 1.0, 1e-15);
+    EXPECT_NEAR(cross(t, d * (1 / d.norm())), 0.0, 2e-6) << "s = " << s;
+    EXPECT_GT(dot(t, d), 0);
+  }
+}
+
 TEST(ElasticBody, PinnedEndsDoNotMoveInTheFrame) {
   ElasticLinkSpec spec;
   spec.length_m = 0.309;
