@@ -126,39 +126,42 @@ ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<
   }
   c.typical_ratio = median(ratios);
   c.checked = true;
-  // Each band's reference: the median ratio of the bands within
-  // kReferenceBands of it, leaving out itself and its direct neighbours (a
-  // resonance may straddle a band edge). A smooth trend of the ratio over
-  // frequency (another e, the measurement chain's roll-off) cancels; a band
-  // standing above its neighbours does not.
+  // Windows of kWindowBands bands, one band apart (a resonance may straddle
+  // a band edge), from the second band on (the first serves as reference
+  // only: the rigid mechanism's own response still reaches into it). Each
+  // window's reference: the median over the kReferenceBands bands on each
+  // side beyond its direct neighbours — a smooth trend of the ratio over
+  // frequency (another e, the measurement chain's roll-off) cancels, a
+  // window standing above its neighbours does not.
   const std::size_t nb = c.bands.size();
-  for (std::size_t b = 0; b < nb; ++b) {
-    std::vector<double> near;
-    for (std::size_t j = b > kReferenceBands ? b - kReferenceBands : 0; j < nb && j <= b + kReferenceBands; ++j)
-      if (j + 1 < b || j > b + 1) near.push_back(c.bands[j].ratio);
-    c.bands[b].reference = near.empty() ? c.typical_ratio : median(near);
-    std::vector<double> near_energy;
-    for (std::size_t j = b > kReferenceBands ? b - kReferenceBands : 0; j < nb && j <= b + kReferenceBands; ++j)
-      if (j + 1 < b || j > b + 1) near_energy.push_back(c.bands[j].measured_ms);
-    const double m = near_energy.empty() ? 0.0 : median(near_energy);
-    c.bands[b].prominence = m > 0 ? c.bands[b].measured_ms / m : 0.0;
+  for (std::size_t w = 1; w + kWindowBands <= nb; ++w) {
+    std::vector<double> near_ratio, near_energy;
+    for (std::size_t j = w >= kReferenceBands + 1 ? w - kReferenceBands - 1 : 0; j < nb && j <= w + kWindowBands + kReferenceBands; ++j)
+      if (j + 1 < w || j > w + kWindowBands) near_ratio.push_back(c.bands[j].ratio), near_energy.push_back(c.bands[j].measured_ms);
+    if (near_ratio.empty()) continue;
+    double em = 0, es = 0;
+    for (std::size_t j = w; j < w + kWindowBands; ++j) em += c.bands[j].measured_ms, es += c.bands[j].model_ms;
+    const double reference = median(near_ratio), energy = median(near_energy);
+    const double ratio = em / std::max(es, model_floor) / std::max(reference, 1e-300);
+    const double prominence = energy > 0 ? em / static_cast<double>(kWindowBands) / energy : 0.0;
+    const double excess = em - reference * es;
+    const bool unmodelled = ratio > kExcessRatio && prominence >= kMinProminence && measured_ms > 0 && excess > 0 &&
+                            std::sqrt(excess / measured_ms) >= kMinRmsShare;
+    for (std::size_t j = w; j < w + kWindowBands; ++j) {
+      FamilyBand& fb = c.bands[j];
+      if (ratio > fb.ratio_to_neighbours) fb.ratio_to_neighbours = ratio, fb.reference = reference;
+      fb.prominence = std::max(fb.prominence, prominence);
+      fb.unmodelled = fb.unmodelled || unmodelled;
+    }
   }
-  for (FamilyBand& fb : c.bands) {
-    const double excess = fb.measured_ms - fb.reference * fb.model_ms;
-    fb.unmodelled = fb.ratio > kExcessRatio * fb.reference && fb.prominence >= kMinProminence && measured_ms > 0 &&
-                    excess > 0 && std::sqrt(excess / measured_ms) >= kMinRmsShare;
-  }
-  // Adjacent unmodelled bands: one finding. (A band just short of the share
-  // but above the ratio joins its neighbour's finding.)
+  // Adjacent unmodelled bands: one finding.
   for (std::size_t b = 0; b < c.bands.size();) {
     if (!c.bands[b].unmodelled) {
       ++b;
       continue;
     }
     std::size_t lo = b, hi = b;
-    auto above = [&](std::size_t j) { return c.bands[j].ratio > kExcessRatio * c.bands[j].reference; };
-    while (lo > 0 && above(lo - 1)) --lo;
-    while (hi + 1 < c.bands.size() && above(hi + 1)) ++hi;
+    while (hi + 1 < c.bands.size() && c.bands[hi + 1].unmodelled) ++hi;
     UnmodelledEnergy u;
     u.low_hz = c.bands[lo].low_hz;
     u.high_hz = c.bands[hi].high_hz;
@@ -167,7 +170,7 @@ ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<
     for (std::size_t j = lo; j <= hi; ++j) {
       const FamilyBand& fb = c.bands[j];
       excess += std::max(0.0, fb.measured_ms - fb.reference * fb.model_ms);
-      u.excess_ratio = std::max(u.excess_ratio, fb.ratio / fb.reference);
+      u.excess_ratio = std::max(u.excess_ratio, fb.ratio_to_neighbours);
     }
     // The peak and the shape from the measured spectrum over the model's,
     // bin by bin (the model's bins interpolated onto the measured ones).

@@ -11,14 +11,15 @@
 //   over the whole record (turns one after another, Hann window: a ring that
 //   does not fit a turn does not leak); bins grouped into bands of
 //   band_width_hz from crank order kFirstCheckedOrder (order k at
-//   k·f_crank Hz); per band the ratio r_b = E_measured(b) / E_model(b).
+//   k·f_crank Hz); per band the ratio r_b = E_measured(b) / E_model(b);
+//   windows of kWindowBands adjacent bands, one band apart.
 //   Impacts are near-impulses in α, so both sides have broadband spectra and
 //   r_b changes only slowly with frequency whatever e is (measured: a
 //   smooth fall of up to 20× over 100–900 Hz from another e and the
-//   measurement chain's roll-off). Each band's reference r_ref(b) is the
-//   median ratio of its neighbours (kReferenceBands on each side, its direct
-//   neighbours left out). A band is unmodelled when its ratio exceeds
-//   kExcessRatio·r_ref(b), its measured energy stands kMinProminence times
+//   measurement chain's roll-off). Each window's reference r_ref is the
+//   median ratio of its neighbours (kReferenceBands bands on each side
+//   beyond its direct neighbours). A window is unmodelled when its ratio
+//   exceeds kExcessRatio·r_ref, its measured energy stands kMinProminence times
 //   above its neighbours' (the measured spectrum itself peaks there), AND
 //   its excess E_m − r_ref·E_s is at least kMinRmsShare of the measured
 //   signal's RMS (as an RMS share). Adjacent
@@ -40,17 +41,19 @@
 
 namespace fourbar {
 
-/// A band's ratio over its neighbours' above which its energy is unmodelled.
+/// A window's ratio over its neighbours' above which its energy is unmodelled.
 inline constexpr double kExcessRatio = 6.0;
+/// Bands per window (windows one band apart).
+inline constexpr std::size_t kWindowBands = 2;
 /// … and its measured energy at least this many times its neighbours' (the
 /// measured spectrum itself peaks there: a broad change of the ratio's
 /// trend by another e does not, docs/verdict.md "Model family").
-inline constexpr double kMinProminence = 12.0;
+inline constexpr double kMinProminence = 8.0;
 /// The agreement is judged below this share of the first finding's peak
 /// frequency (or its band, whichever is lower): of a mode rung by impulses
 /// at ζ = 0.02, 3.4 % of its energy up to 1.6 f lies below 0.75 f.
 inline constexpr double kCutShareOfPeak = 0.75;
-/// The neighbours: bands within this many of it, itself and the next ones left out.
+/// The neighbours: this many bands on each side beyond the window's direct neighbours.
 inline constexpr std::size_t kReferenceBands = 4;
 /// The check starts at this crank order: below it lies the rigid mechanism's
 /// own response (the nominal band, the free flights), where another e
@@ -64,7 +67,7 @@ inline constexpr double kNarrowShare = 0.15;
 inline constexpr double kMinJudgedOrders = 10;
 
 struct ModelFamilySettings {
-  double band_width_hz = 50;  ///< [model_family] band_width_hz
+  double band_width_hz = 20;  ///< [model_family] band_width_hz
   /// Highest frequency checked, Hz ([model_family] max_frequency_hz); 0: the
   /// grid's and the analysis filter's limit.
   double max_frequency_hz = 0;
@@ -74,8 +77,10 @@ struct FamilyBand {
   double low_hz = 0, high_hz = 0;
   double measured_ms = 0, model_ms = 0;  ///< mean square of the deviation in the band
   double ratio = 0;                       ///< measured over model
-  double reference = 0;                   ///< the median ratio of its neighbours
-  double prominence = 0;                  ///< measured energy over its neighbours' median
+  /// Of the window through this band that stands highest: its ratio over
+  /// its neighbours' median ratio (`reference`), and its measured energy
+  /// per band over its neighbours' median energy.
+  double ratio_to_neighbours = 0, reference = 0, prominence = 0;
   bool unmodelled = false;
 };
 

@@ -25,7 +25,7 @@ json model_family_json(const ModelFamilyCheck& c) {
   json bands = json::array(), found = json::array();
   for (const FamilyBand& b : c.bands)
     bands.push_back({{"low_hz", b.low_hz}, {"high_hz", b.high_hz}, {"measured_ms", b.measured_ms}, {"model_ms", b.model_ms},
-                     {"ratio_to_neighbours", b.reference > 0 ? b.ratio / b.reference : 0.0},
+                     {"ratio_to_neighbours", b.ratio_to_neighbours},
                      {"prominence", b.prominence}, {"unmodelled", b.unmodelled}});
   for (const UnmodelledEnergy& u : c.unmodelled)
     found.push_back({{"kind", u.kind}, {"low_hz", u.low_hz}, {"high_hz", u.high_hz}, {"peak_hz", u.peak_hz},
