@@ -48,7 +48,7 @@ inline constexpr std::size_t kWindowBands = 2;
 /// … and its measured energy at least this many times its neighbours' (the
 /// measured spectrum itself peaks there: a broad change of the ratio's
 /// trend by another e does not, docs/verdict.md "Model family").
-inline constexpr double kMinProminence = 8.0;
+inline constexpr double kMinProminence = 6.0;
 /// The agreement is judged below this share of the first finding's peak
 /// frequency (or its band, whichever is lower): of a mode rung by impulses
 /// at ζ = 0.02, 3.4 % of its energy up to 1.6 f lies below 0.75 f.
