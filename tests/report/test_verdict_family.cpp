@@ -70,7 +70,7 @@ TEST(VerdictFamily, AgreementBelowTheBandOnlyIsNeverGood) {
   in.family = ringing(1.05);
   const Verdict v = verdict_of(in);
   EXPECT_EQ(v.agreement.level, VerdictLevel::attention) << v.agreement.sentence;
-  EXPECT_EQ(v.agreement.words, "a 1.05 (below 575 Hz), partial");
+  EXPECT_EQ(v.agreement.words, "a 1.1 (below 575 Hz), partial");  // two digits
   EXPECT_NE(v.agreement.sentence.find("but only there"), std::string::npos) << v.agreement.sentence;
 }
 
