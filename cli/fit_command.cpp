@@ -18,6 +18,7 @@
 #include "fit/session_fit.hpp"
 #include "fit/simulation_cache.hpp"
 #include "report/session_settings.hpp"
+#include "report/verdict_family.hpp"
 
 namespace po = boost::program_options;
 
@@ -141,6 +142,7 @@ int run_fit(const Invocation& inv) {
   analysis.progress = false;
   analysis.threads = mpi.distributed() ? 1 : o.threads;  // (before the search: the cores are free)
   std::vector<RecordingTarget> targets;
+  std::vector<std::vector<double>> measured_turns;  // α3 (else α4) per target: the model-family check
   std::size_t max_turns = 0;
   Progress bar("fit: analysing", files.recordings.size(), !quiet);
   for (const auto& rec : files.recordings) {
@@ -148,15 +150,19 @@ int run_fit(const Invocation& inv) {
     manifest.replace_extension(".toml");
     bar.set_label("fit: analysing " + rec.filename().string());
     bar.update(static_cast<std::uint64_t>(&rec - files.recordings.data()));
+    double sample_rate_hz = 0;
     try {
       const RecordingAnalysis a = analyze_recording(rec, manifest, analysis);
+      sample_rate_hz = a.acquisition.recording.sample_rate_hz;
       std::optional<RecordingAnalysis> band;
       if (const auto bo = band_analysis_options(a, analysis)) band = analyze_recording(rec, manifest, *bo);
       targets.push_back(make_recording_target(a, band ? &*band : nullptr, rec.filename().string()));
+      measured_turns.push_back(a.coupler ? a.coupler->alpha_grid : a.rocker ? a.rocker->alpha_grid : std::vector<double>{});
       max_turns = std::max(max_turns, targets.back().turns);
     } catch (const std::exception& e) {
       if (mpi.leader()) std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
     }
+    check_band_limit(settings, rec.filename().string(), sample_rate_hz);
   }
   bar.finish();
   if (targets.empty()) throw RunError("fit: no recording of " + session.string() + " could be analysed");
@@ -183,7 +189,24 @@ int run_fit(const Invocation& inv) {
   const TheorySettings& t = settings.theory;
   const ContactParameters prior{t.restitution, t.contact, t.friction_coefficient};
   nlohmann::json result;
+  // The model-family check at the fitted parameters (compare/model_family.hpp):
+  // a recording with energy the model lacks rejects the family.
+  auto check_family = [&](FitResult& f, const std::vector<std::size_t>& which) {
+    for (std::size_t r : which) {
+      if (measured_turns[r].empty()) continue;
+      const ModelFamilyCheck c = family_check_at(targets[r], measured_turns[r], f.best, o.warmup_turns,
+                                                 std::max(20, static_cast<int>(targets[r].turns)), settings.model_family);
+      if (!c.unmodelled.empty())
+        reject_model_family(f, targets[r].name + " holds energy the model lacks: " + unmodelled_text(c.unmodelled.front()), o);
+    }
+  };
   auto report = [&](const std::string& label, const FitResult& f) {
+    if (f.model_family.rejected) {
+      std::cout << "model family rejected: " << f.model_family.reasons.front()
+                << (f.model_family.reasons.size() > 1 ? " (and " + std::to_string(f.model_family.reasons.size() - 1) + " more reasons in fit.json)" : std::string())
+                << "; no parameter is identifiable, the values are effective ones and the intervals are widened by the model error ("
+                << format_number(f.model_family.error_scale, 3) << "x)\n";
+    }
     std::cout << label << ": ";
     for (const ParameterEstimate& p : f.parameters)
       std::cout << p.name << " = " << format_number(p.value, 3) << " [" << format_number(p.low, 3) << ", "
@@ -208,14 +231,22 @@ int run_fit(const Invocation& inv) {
     result["per_recording"] = nlohmann::json::array();
     for (const RecordingTarget& tg : targets) {
       const std::vector<RecordingTarget> one{tg};
-      const FitResult f = fit_contact_parameters(one, prior, o);
+      FitResult f = fit_contact_parameters(one, prior, o);
+      check_family(f, {static_cast<std::size_t>(&tg - targets.data())});
       report(tg.name, f);
       nlohmann::json j = fit_to_json(f, one, prior, o);
       j["file"] = tg.name;
+      if (f.model_family.rejected) {
+        if (!result.contains("model_family")) result["model_family"] = {{"verdict", "rejected"}, {"reasons", nlohmann::json::array()}};
+        for (const std::string& why : f.model_family.reasons) result["model_family"]["reasons"].push_back(tg.name + ": " + why);
+      }
       result["per_recording"].push_back(j);
     }
   } else {
-    const FitResult f = fit_contact_parameters(targets, prior, o);
+    FitResult f = fit_contact_parameters(targets, prior, o);
+    std::vector<std::size_t> all(targets.size());
+    for (std::size_t r = 0; r < all.size(); ++r) all[r] = r;
+    check_family(f, all);
     report("session", f);
     result = fit_to_json(f, targets, prior, o);
   }
@@ -226,7 +257,13 @@ int run_fit(const Invocation& inv) {
   result["command_line"] = inv.command_line;
   const std::filesystem::path out_dir = out.empty() ? session / "fit" : std::filesystem::path(out);
   ensure_output_dir(out_dir);
-  write_text_file(out_dir / "fit.json", result.dump(2) + "\n");
+  // The model family's verdict first: whoever reads the parameter block
+  // reads first whether its values measure anything.
+  nlohmann::ordered_json ordered;
+  if (result.contains("model_family")) ordered["model_family"] = nlohmann::ordered_json::parse(result["model_family"].dump());
+  for (const auto& [key, value] : result.items())
+    if (key != "model_family") ordered[key] = nlohmann::ordered_json::parse(value.dump());
+  write_text_file(out_dir / "fit.json", ordered.dump(2) + "\n");
   std::cout << "wrote " << (out_dir / "fit.json").string() << "\n";
   return 0;
 }

@@ -42,6 +42,10 @@ Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
              recording's rig bearing), contact_exponent,
              friction_stick_speed_mm_s, friction_slip_speed_mm_s,
              damping_floor_speed_mm_s (README "Compliant contact");
+  [model_family] band_width_hz (20), max_frequency_hz (default: the analysis
+             filter's upper corner; above a recording's Nyquist frequency:
+             exit 2): the check for energy the model lacks (link vibration,
+             sensor resonance; docs/verdict.md "Model family");
   [[recording]] file = "REC.flac" and any [theory] key for that recording.
 
 With a `fourbar fit` result (--fit FIT.json, or SESSION_DIR/fit/fit.json,

@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 #include "virtual_rig/clearance_motion_source.hpp"
@@ -89,6 +90,9 @@ int run_virtual_rig(const Invocation& inv) {
             << r.sample_rate_hz << " Hz, " << r.pulse_times_s.size() << " crank pulses), " << r.manifest.string();
   if (options.write_truth) std::cout << " and " << r.truth.string();
   std::cout << "\n";
+  for (std::size_t c = 0; c < r.ringing_rms_share.size(); ++c)
+    std::cout << "link ringing on " << spec.sensors[c].name << ": " << format_number(100 * r.ringing_rms_share[c], 3)
+              << " % of the rigid signal's RMS\n";
   if (r.clipped_samples > 0)
     std::cerr << "fourbar: warning: " << r.clipped_samples << " accelerometer samples clipped at +-"
               << spec.full_scale_V << " V (lower the gain or raise full_scale_V)\n";

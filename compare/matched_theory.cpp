@@ -35,6 +35,7 @@ ClearanceSettings clearance_settings(const Rig& rig, double clearance_m, const T
   cs.contact = settings.contact;
   cs.friction_coefficient = settings.friction_coefficient;
   cs.tolerance = settings.tolerance;
+  cs.settle_speed_m_s = settings.settle_speed_m_s;
   const std::string source = settings.source.empty() ? std::string("[theory]") : settings.source;
   if (settings.model == ClearanceKind::compliant) {
     cs.compliant = settings.compliant;
@@ -133,8 +134,10 @@ void run_model(Simulator& sim, const CrankGrid& grid, const ConstantSpeedCrank& 
     const double dt = hi.time_s - lo.time_s;
     out.series[index_of(LinkQuantity::omega3)].clearance_revolutions[i] = mid.links.omega3_rad_s;
     out.series[index_of(LinkQuantity::omega4)].clearance_revolutions[i] = mid.links.omega4_rad_s;
-    out.series[index_of(LinkQuantity::alpha3)].clearance_revolutions[i] = (hi.links.omega3_rad_s - lo.links.omega3_rad_s) / dt;
-    out.series[index_of(LinkQuantity::alpha4)].clearance_revolutions[i] = (hi.links.omega4_rad_s - lo.links.omega4_rad_s) / dt;
+    out.series[index_of(LinkQuantity::alpha3)].clearance_revolutions[i] =
+        settings.point_samples ? mid.alpha3_rad_s2 : (hi.links.omega3_rad_s - lo.links.omega3_rad_s) / dt;
+    out.series[index_of(LinkQuantity::alpha4)].clearance_revolutions[i] =
+        settings.point_samples ? mid.alpha4_rad_s2 : (hi.links.omega4_rad_s - lo.links.omega4_rad_s) / dt;
   }
   for (auto& s : out.series) s.clearance = synchronous_average(s.clearance_revolutions, n);
 

@@ -43,6 +43,12 @@ struct TheorySettings {
   int averaged_revolutions = 20;           ///< turns averaged on the grid
   double tolerance = 1e-8;                 ///< integrator tolerance
   int max_order = 50;                      ///< orders in the spectral comparison
+  /// Modelling choices without a physical counterpart (benches only, no
+  /// session key; docs/fit.md "Modelling choices"): the three-mode model's
+  /// settle speed (ClearanceSettings::settle_speed_m_s), and α at each grid
+  /// point instead of the mean over its cell.
+  double settle_speed_m_s = 1e-6;
+  bool point_samples = false;
   /// Where these settings were given (e.g. "session.toml [theory]"): named in
   /// the errors found only once the recording's rig is known.
   std::string source;

@@ -53,6 +53,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
     pj["profile"] = prof;
     if (!p.identifiable) pj["advice"] = parameter_advice(p);
     if (p.lower_bound_only) pj["only_lower_bound"] = true;
+    if (f.model_family.rejected) pj["interval"] = "widened by the model-error scale (the model family is rejected)";
     params[p.name] = pj;
   }
   json contact = {{"value", to_string(f.best.contact)}};
@@ -133,6 +134,9 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
             {"threads", o.threads},
             {"notes", f.notes}};
   if (f.correlation) j["correlation_restitution_friction"] = *f.correlation;
+  j["model_family"] = {{"verdict", f.model_family.rejected ? "rejected" : "not rejected"},
+                       {"reasons", f.model_family.reasons},
+                       {"error_scale", f.model_family.error_scale}};
   return j;
 }
 

@@ -104,13 +104,15 @@ RecordingTarget make_recording_target(const RecordingAnalysis& a, const Recordin
 }
 
 SimulatedStatistics simulate_statistics(const RecordingTarget& t, const ContactParameters& p, int warmup, int turns,
-                                        double tolerance) {
+                                        double tolerance, const ModellingChoices& choices) {
+  TheorySettings settings = theory_settings(p, warmup, turns, tolerance);
+  settings.settle_speed_m_s = choices.settle_speed_m_s;
+  settings.point_samples = choices.point_samples;
   // With a band: one run on the band's finer grid; the analysis band is its
   // every k-th point after the analysis pass band (the grids share angle 0).
   CrankGrid fine = t.grid;
   if (t.band_filter) fine.grid_points_per_rev = t.band_grid_points_per_rev;
-  MatchedTheory th = simulate_matched_theory(*t.rig, t.clearance_m, t.crank_speed_rad_s, fine,
-                                             theory_settings(p, warmup, turns, tolerance));
+  MatchedTheory th = simulate_matched_theory(*t.rig, t.clearance_m, t.crank_speed_rad_s, fine, settings);
   SimulatedStatistics out;
   if (t.band_filter) {
     MatchedTheory band = th;

@@ -88,9 +88,16 @@ struct SimulatedStatistics {
   int turns = 0;
 };
 
+/// Modelling choices without a physical counterpart (TheorySettings;
+/// bench/fit_modelling_choices measures their effect on each statistic).
+struct ModellingChoices {
+  double settle_speed_m_s = 1e-6;
+  bool point_samples = false;
+};
+
 /// The clearance model at the target's operating point with `p`: `warmup`
 /// turns discarded, `turns` turns through the pass band and the statistics.
 SimulatedStatistics simulate_statistics(const RecordingTarget& target, const ContactParameters& p, int warmup,
-                                        int turns, double tolerance = 1e-8);
+                                        int turns, double tolerance = 1e-8, const ModellingChoices& choices = {});
 
 }  // namespace fourbar

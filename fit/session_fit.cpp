@@ -152,6 +152,18 @@ void judge_identifiability(ParameterEstimate& p, double box_low, double box_high
     p.lower_bound_only = true, p.identifiable = false;
 }
 
+void reject_model_family(FitResult& f, const std::string& reason, const FitOptions& o) {
+  f.model_family.rejected = true;
+  f.model_family.reasons.push_back(reason);
+  f.model_family.error_scale = std::sqrt(std::max(1.0, f.terms > 0 ? f.chi2 / f.terms : 1.0));
+  for (ParameterEstimate& p : f.parameters) {
+    const bool is_e = p.name == "restitution";
+    widen_for_model_error(p, f.interval_delta, f.model_family.error_scale, is_e ? o.box.restitution_low : o.box.friction_low,
+                          is_e ? o.box.restitution_high : o.box.friction_high);
+    p.lower_bound_only = false;
+  }
+}
+
 void validate_fit_options(const FitOptions& o) {
   const FitBox& b = o.box;
   auto bad = [](const std::string& what, const std::string& rule) { throw InputError("fit option " + what + ": " + rule); };
@@ -374,6 +386,10 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
                         format_number(std::sqrt(per_term(worst)), 2) +
                         "): the model family does not describe this bearing; the values are effective ones and their "
                         "intervals, which assume the model describes the measurement, are not uncertainties");
+    reject_model_family(out,
+                        "chi2/term " + format_number(out.chi2 / out.terms, 3) + " at the best parameters, above " +
+                            format_number(kModelFamilyChi2PerTerm, 2) + " (the statistics' noise gives about 1)",
+                        o);
   }
   out.simulations = cache.simulations() + long_runs.simulations();
   out.simulations_on_rank_0 = cache.computed_here() + long_runs.computed_here();

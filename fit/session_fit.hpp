@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "fit/family_judgement.hpp"
 #include "fit/matched_magnification.hpp"
 #include "fit/objective_noise.hpp"
 #include "fit/recording_target.hpp"
@@ -134,11 +135,17 @@ struct FitResult {
   /// σ_model/σ_measured.
   std::vector<std::optional<double>> measured_scatter_share, magnification_from_scatter_fitted;
   std::vector<std::string> notes;     ///< not identifiable, model family, …
+  /// Whether the model family describes the measurement (family_judgement.hpp).
+  FamilyJudgement model_family;
 };
 
 /// χ² per term above which the fit says the model family differs from
 /// what was measured (the statistics' noise would give ≈ 1).
 inline constexpr double kModelFamilyChi2PerTerm = 4.0;
+
+/// Rejects the model family of `f` with `reason` (a recording's unmodelled
+/// energy, found by the caller): family_judgement.hpp says what changes.
+void reject_model_family(FitResult& f, const std::string& reason, const FitOptions& options);
 
 /// Fits `targets` together. `prior` is the session's setting (reported beside).
 FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, const ContactParameters& prior,

@@ -18,7 +18,9 @@ std::optional<json> read_cached_record(const std::filesystem::path& file) {
     // An analysed record ("ok" or "check set-up") that holds the set-up check
     // and, per quantity, the orders its spectral magnification used, and the
     // views (older cache entries without them are recomputed).
-    if (!j.is_object() || !is_analysed(j) || !j.contains("setup_check") || !j.contains("views")) return std::nullopt;
+    if (!j.is_object() || !is_analysed(j) || !j.contains("setup_check") || !j.contains("views") ||
+        !j.contains("model_family"))
+      return std::nullopt;
     if (j.contains("metrics") && j["metrics"].is_object())
       for (const json& m : j["metrics"])
         if (!m.contains("magnification") || !m["magnification"].contains("orders_used")) return std::nullopt;

@@ -13,6 +13,7 @@ namespace {
 constexpr const char* kParts[][2] = {{"setup", "set-up"},
                                      {"measurement", "measurement"},
                                      {"clearance_effect", "clearance effect"},
+                                     {"model_family", "model family"},
                                      {"model_agreement", "model agreement"}};
 
 std::string level_span(const json& level, const std::string& text) {
@@ -33,7 +34,7 @@ void verdict_summary_table(std::ostringstream& h, const json& records) {
     const json& r = records[i];
     h << "<tr><td class=\"l\"><a href=\"#rec" << i << "\">" << html_escape(r.value("name", "")) << "</a></td>";
     if (!r.contains("verdict")) {
-      h << "<td class=\"l\" colspan=\"5\">" << level_span("problem", "failed: not analysed") << "</td></tr>";
+      h << "<td class=\"l\" colspan=\"6\">" << level_span("problem", "failed: not analysed") << "</td></tr>";
       continue;
     }
     const json& v = r["verdict"];

@@ -7,6 +7,7 @@
 #include "common/units.hpp"
 #include "fit/response_statistics.hpp"
 #include "report/comparison_record.hpp"
+#include "report/verdict_family.hpp"
 #include "report/setup_check_record.hpp"
 #include "report/views_record.hpp"
 
@@ -145,7 +146,7 @@ void add_scatter_errors(json& r, const RecordingAnalysis& a, const MatchedTheory
 }  // namespace
 
 json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& options,
-                       const TheorySettings& settings, const TheorySettings* fitted) {
+                       const TheorySettings& settings, const TheorySettings* fitted, const ModelFamilySettings& family) {
   try {
     AnalyzeOptions with_excerpt = options;
     with_excerpt.excerpt_revolutions = kExcerptRevolutions;
@@ -168,6 +169,16 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
     const RecordingComparison c = compare_response(measured, t);
     json r = recording_record(a, measured, t, c);
     add_scatter_errors(r, a, t);
+    {
+      const LinkQuantity q = a.coupler ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
+      const LinkResult& link = a.coupler ? *a.coupler : *a.rocker;
+      const TheorySeries& ts = t.series[index_of(q)];
+      const bool has_top = a.filter.band == BandType::lowpass || a.filter.band == BandType::bandpass;
+      r["model_family"] = model_family_json(check_model_family(link.alpha_grid, ts.clearance_revolutions, ts.nominal,
+                                                               std::abs(a.mean_crank_speed_rad_s) / units::kTwoPi,
+                                                               has_top ? a.filter.high_hz : 0.0, family));
+      r["model_family"]["quantity"] = std::string(column_name(q));
+    }
     if (fitted) {
       // The same theory path at the fitted contact parameters.
       const MatchedTheory tf = theory_at(*fitted);

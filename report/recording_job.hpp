@@ -14,6 +14,7 @@
 #include "analyze/pipeline.hpp"
 #include "compare/matched_theory.hpp"
 #include "compare/measured_response.hpp"
+#include "compare/model_family.hpp"
 #include "compare/recording_comparison.hpp"
 
 namespace fourbar {
@@ -36,7 +37,10 @@ nlohmann::json recording_record(const RecordingAnalysis& analysis, const Measure
 /// recording. With `fitted` (a `fourbar fit` result), the theory is simulated
 /// a second time at those settings and compared the same way: "fitted_theory"
 /// holds its settings, metrics, severity and model series (mean and spread).
+/// "model_family" holds the model-family check (compare/model_family.hpp)
+/// of α3 (α4 without a coupler channel) under `family`.
 nlohmann::json process_recording(const std::filesystem::path& recording, const AnalyzeOptions& analysis,
-                                 const TheorySettings& theory, const TheorySettings* fitted = nullptr);
+                                 const TheorySettings& theory, const TheorySettings* fitted = nullptr,
+                                 const ModelFamilySettings& family = {});
 
 }  // namespace fourbar

@@ -18,6 +18,7 @@
 #include "acquire/manifest.hpp"
 #include "common/atomic_output.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/json_text.hpp"
 #include "common/progress.hpp"
 #include "common/build_id.hpp"
@@ -135,15 +136,17 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     const json inputs = input_files(rec, o.session_dir);
     const std::string key = sha256_text(std::string(kVersion) + " " + build_id() + "\n" + json_text(inputs) + "\n" +
                                         json_text(settings_json["analysis"]) + "\n" + json_text(theory_settings_json(theory)) +
-                                        (fitted ? "\nfitted " + json_text(theory_settings_json(*fitted)) : std::string()));
+                                        (fitted ? "\nfitted " + json_text(theory_settings_json(*fitted)) : std::string()) +
+                                        "\nmodel family " + json_text(settings_json["model_family"]));
     const std::filesystem::path cache_file = cache_dir / (key + ".json");
     std::optional<json> record = o.use_cache ? read_cached_record(cache_file) : std::nullopt;
     const bool cached = record.has_value();
     if (!record) {
-      record = process_recording(rec, analysis, theory, fitted ? &*fitted : nullptr);
+      record = process_recording(rec, analysis, theory, fitted ? &*fitted : nullptr, settings.model_family);
       if (o.use_cache && is_analysed(*record)) write_cached_record(cache_file, *record);
     }
     json& r = *record;
+    if (r.contains("acquisition")) check_band_limit(settings, name, r["acquisition"].value("sample_rate_hz", 0.0));
     r["name"] = name;
     r["files"] = inputs;
     r["cache_key"] = key;
@@ -218,6 +221,10 @@ ReportOutcome run_session_report(const ReportOptions& o) {
       for (const std::string& line : setup_check_lines(r["setup_check"]))
         std::cerr << "fourbar: warning: report: " << r["name"].get<std::string>() << ": " << line << "\n";
     }
+    if (const auto f = verdict_family(r); f && !f->unmodelled.empty())
+      std::cerr << "fourbar: warning: report: " << r["name"].get<std::string>() << ": energy the model lacks: "
+                << unmodelled_text(f->unmodelled.front()) << "; model agreement judged below "
+                << format_number(f->judged_below_hz.value_or(f->unmodelled.front().low_hz), 4) << " Hz only\n";
     records.push_back(std::move(r));
   }
 

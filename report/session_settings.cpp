@@ -7,6 +7,7 @@
 
 #include "acquire/manifest.hpp"
 #include "common/error.hpp"
+#include "common/number_text.hpp"
 #include "common/toml_section.hpp"
 #include "common/units.hpp"
 
@@ -126,6 +127,7 @@ nlohmann::json SessionSettings::to_json() const {
           {"notes", notes},
           {"analysis", a},
           {"theory", theory_settings_json(theory)},
+          {"model_family", {{"band_width_hz", model_family.band_width_hz}, {"max_frequency_hz", model_family.max_frequency_hz}}},
           {"theory_by_recording", per}};
 }
 
@@ -149,6 +151,11 @@ SessionSettings load_session_settings(const std::filesystem::path& dir) {
     s.theory = read_theory(*t, s.theory, std::string(kSessionFile) + " [theory]");
     t->finish();
   }
+  if (auto m = root.optional_section("model_family")) {
+    s.model_family.band_width_hz = m->in_range("band_width_hz", 1, 1e5, s.model_family.band_width_hz);
+    s.model_family.max_frequency_hz = m->in_range("max_frequency_hz", 1, 1e7, 0.0);
+    m->finish();
+  }
   std::set<std::string> recordings;  // what a [[recording]] may name: the folder's recordings, nothing else
   for (const auto& p : find_session_files(dir).recordings) recordings.insert(p.filename().string());
   for (TomlSection& r : root.sections("recording")) {
@@ -162,6 +169,15 @@ SessionSettings load_session_settings(const std::filesystem::path& dir) {
   }
   root.finish();
   return s;
+}
+
+void check_band_limit(const SessionSettings& s, const std::string& recording, double fs) {
+  const double top = s.model_family.max_frequency_hz;
+  if (top > 0 && fs > 0 && top > 0.5 * fs)
+    throw InputError((s.file.empty() ? std::string(kSessionFile) : s.file.string()) + ": key 'model_family.max_frequency_hz' = " +
+                     format_double(top) + " Hz lies above the Nyquist frequency " + format_double(0.5 * fs) + " Hz of " +
+                     recording + " (sampled at " + format_double(fs) + " Hz): the recording holds nothing there; give at most " +
+                     format_double(0.5 * fs) + " or leave the key out (the check then ends at the analysis filter's upper corner)");
 }
 
 SessionFiles find_session_files(const std::filesystem::path& dir) {

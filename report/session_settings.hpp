@@ -18,6 +18,9 @@
 //                 contact_exponent, friction_*_speed_mm_s,
 //                 damping_floor_speed_mm_s; stiffness from the rig's bearing
 //                 when absent)
+//   [model_family] band_width_hz, max_frequency_hz (compare/model_family.hpp;
+//                 max_frequency_hz must stay below each recording's Nyquist
+//                 frequency: check_band_limit)
 //   [[recording]] file = "run3.flac", then any [theory] key for that recording
 
 #include <filesystem>
@@ -30,6 +33,7 @@
 
 #include "analyze/pipeline.hpp"
 #include "compare/matched_theory.hpp"
+#include "compare/model_family.hpp"
 
 namespace fourbar {
 
@@ -39,6 +43,7 @@ struct SessionSettings {
   std::string notes;
   AnalyzeOptions analysis;     ///< keep_revolutions on (the spectral magnification needs every turn)
   TheorySettings theory;
+  ModelFamilySettings model_family;  ///< [model_family]
   std::map<std::string, TheorySettings> theory_by_recording;  ///< by file name
 
   const TheorySettings& theory_for(const std::string& recording_file) const;
@@ -49,6 +54,10 @@ struct SessionSettings {
 /// Reads `dir/session.toml` when present (defaults otherwise). InputError
 /// naming file, line and key for a bad value or an unknown key.
 SessionSettings load_session_settings(const std::filesystem::path& dir);
+
+/// InputError (exit 2) naming session.toml's key when [model_family]
+/// max_frequency_hz lies above the Nyquist frequency of `recording` sampled at `sample_rate_hz`.
+void check_band_limit(const SessionSettings& settings, const std::string& recording, double sample_rate_hz);
 
 struct SessionFiles {
   std::vector<std::filesystem::path> recordings;  ///< sorted by name

@@ -276,7 +276,9 @@ Verdict verdict_of(const VerdictInputs& in) {
   v.measurement = measurement_part(in);
   v.effect = effect_part(in);
   v.agreement = agreement_part(in, v.a, v.a_standard_error, v.a_from);
-  for (const VerdictPart* p : {&v.setup, &v.measurement, &v.effect, &v.agreement}) v.overall = worst(v.overall, p->level);
+  v.family = family_part(in);
+  judge_agreement_below_band(in, v);
+  for (const VerdictPart* p : {&v.setup, &v.measurement, &v.effect, &v.family, &v.agreement}) v.overall = worst(v.overall, p->level);
   return v;
 }
 
@@ -314,6 +316,7 @@ VerdictInputs verdict_inputs(const json& r, const json* fit, const std::string& 
   in.model_revolutions = static_cast<std::size_t>(num_or(path(r, {"theory", "settings", "averaged_revolutions"}), 0));
   const json& contact = path(r, {"theory", "settings", "contact"});
   in.contact = contact.is_string() ? contact.get<std::string>() : "";
+  in.family = verdict_family(r);
   if (fit && fit->is_object() && path(*fit, {"parameters", "restitution", "value"}).is_number()) {
     VerdictFit f;
     f.file = fit_file;
@@ -342,6 +345,7 @@ json verdict_json(const Verdict& v) {
           {"setup", part(v.setup)},
           {"measurement", part(v.measurement)},
           {"clearance_effect", part(v.effect)},
+          {"model_family", part(v.family)},
           {"model_agreement", part(v.agreement)},
           {"a", v.a ? json(*v.a) : json(nullptr)},
           {"a_standard_error", v.a_standard_error ? json(*v.a_standard_error) : json(nullptr)},

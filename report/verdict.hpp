@@ -12,6 +12,9 @@
 //                     band, clear of mains hum, in multiples of the floor
 //                     between the lines, and the turn-to-turn scatter against
 //                     the nominal response;
+//   model family      energy the model family lacks (link vibration, sensor
+//                     resonance: report/verdict_family.hpp); when found, the
+//                     model agreement is judged below its band only;
 //   model agreement   the magnification factor a (spectral when it has
 //                     orders, else time; from the turn-to-turn scatter when
 //                     the effect is chaotic) and how to act on it; the fitted
@@ -27,6 +30,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "report/verdict_family.hpp"
 
 namespace fourbar {
 
@@ -100,6 +105,7 @@ struct VerdictInputs {
   std::size_t model_revolutions = 0;    ///< turns the theory averaged ([theory] averaged_revolutions; 0: unknown)
   std::string contact;
   std::optional<VerdictFit> fit;
+  std::optional<VerdictFamily> family;  ///< the record's model-family check (absent in older records)
 };
 
 struct VerdictPart {
@@ -110,6 +116,7 @@ struct VerdictPart {
 
 struct Verdict {
   VerdictPart setup, measurement, effect, agreement;
+  VerdictPart family;  ///< energy the model family lacks (verdict_family.hpp)
   /// The magnification factor the agreement part judged and where it came
   /// from: "spectral", "time", or "scatter" (model over measured turn-to-turn
   /// scatter, when the effect is chaotic and lives in the scatter, not in the average).
@@ -126,7 +133,7 @@ Verdict verdict_of(const VerdictInputs& in);
 VerdictInputs verdict_inputs(const nlohmann::json& record, const nlohmann::json* fit = nullptr,
                              const std::string& fit_file = {});
 
-/// {overall, setup|measurement|clearance_effect|model_agreement: {level, words, sentence}, a, a_standard_error, a_from}.
+/// {overall, setup|measurement|clearance_effect|model_family|model_agreement: {level, words, sentence}, a, a_standard_error, a_from}.
 nlohmann::json verdict_json(const Verdict& v);
 
 }  // namespace fourbar

@@ -6,6 +6,7 @@
 #include "acquire/manifest.hpp"
 #include "acquire/sndfile_formats.hpp"
 #include "common/error.hpp"
+#include "common/number_text.hpp"
 #include "common/toml_section.hpp"
 #include "common/toml_writer.hpp"
 #include "common/units.hpp"
@@ -117,6 +118,23 @@ RecordingSpec read_recording_spec(const Scene& scene) {
         throw InputError(scene.source.string() + ": recording.sensor[" + std::to_string(i) + "] has the name '" +
                          c.name + "' of sensor[" + std::to_string(j) + "]; give each a different 'name'");
     c.index = static_cast<int>(i);
+  }
+
+  for (auto& lm : r.sections("link_mode")) {
+    if (scene.model != Model::clearance)
+      lm.fail("link", "(recording.link_mode) needs a clearance scene (model = \"clearance\"): the bearing impacts ring the links; remove it");
+    LinkMode m;
+    m.link = lm.choice("link", {"coupler", "rocker"}) == "coupler" ? RingingLink::coupler : RingingLink::rocker;
+    m.frequency_hz = lm.in_range("frequency_hz", 1, 1e6);
+    if (m.frequency_hz >= 0.5 * spec.sample_rate_hz)
+      lm.fail("frequency_hz", "= " + format_double(m.frequency_hz) + " is at or above the Nyquist frequency " +
+                                  format_double(0.5 * spec.sample_rate_hz) + " Hz of recording.sample_rate_hz; lower it or raise the rate");
+    m.damping_ratio = lm.in_range("damping_ratio", 1e-5, 0.9, 0.02);
+    m.modal_mass_kg = lm.in_range("modal_mass_kg", 1e-6, 1e6);
+    m.shape_at_bearing = lm.in_range("shape_at_bearing", -1e3, 1e3, 1.0);
+    m.shape_at_sensor = lm.in_range("shape_at_sensor", -1e3, 1e3, 1.0);
+    lm.finish();
+    spec.link_modes.push_back(m);
   }
 
   TomlSection p = r.section("pulse");

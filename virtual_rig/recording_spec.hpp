@@ -9,6 +9,7 @@
 
 #include "acquire/manifest.hpp"
 #include "sim/scene.hpp"
+#include "virtual_rig/link_ringing.hpp"
 #include "virtual_rig/wheel_signal.hpp"
 
 namespace fourbar {
@@ -49,6 +50,9 @@ struct RecordingSpec {
   /// Clearance scenes: crank turns simulated before the recording starts, so
   /// that it shows the running mechanism rather than the start from rest.
   int warmup_revolutions = 20;
+  /// The links' bending modes rung by the bearing impulses
+  /// (`[[recording.link_mode]]`, clearance scenes only; link_ringing.hpp).
+  std::vector<LinkMode> link_modes;
 };
 
 /// Parses `scene.recording`; InputError naming the scene file, line and key

@@ -13,6 +13,8 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "common/version.hpp"
+#include "virtual_rig/clearance_motion_source.hpp"
+#include "virtual_rig/link_ringing.hpp"
 #include "virtual_rig/recording_writer.hpp"
 #include "virtual_rig/sensor_signal.hpp"
 #include "virtual_rig/wheel_signal.hpp"
@@ -180,6 +182,22 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
     }
   }
 
+  // The links' ringing, driven by the clearance motion's bearing impulses.
+  std::optional<LinkRinging> ringing;
+  if (!spec.link_modes.empty()) {
+    const auto* clearance = dynamic_cast<const ClearanceMotionSource*>(&motion);
+    if (!clearance)
+      throw InputError(scene.source.string() + ": [[recording.link_mode]] needs the clearance model's motion "
+                       "(model = \"clearance\"): the bearing impacts ring the links");
+    ringing.emplace(spec.link_modes, bearing_impulses(clearance->impacts()));
+  }
+  auto ring = [&](double t, ChannelRole role) {
+    if (!ringing) return 0.0;
+    ringing->advance_to(t);
+    return ringing->sensor_acceleration(role);
+  };
+  std::vector<double> rigid_sum(nsens, 0.0), rigid_sq(nsens, 0.0), ring_sq(nsens, 0.0);
+
   // High-pass filters, run in from twelve time constants before t = 0.
   std::vector<std::optional<HighPass>> hp(nsens);
   double warmup_s = 0;
@@ -194,7 +212,8 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       const LinkState st = motion.at(static_cast<double>(i) / fs);
       for (std::size_t c = 0; c < nsens; ++c) {
         if (!hp[c]) continue;
-        const double f = specific_force(rig, st, spec.sensors[c].role, spec.sensors[c].position_m, spec.sensors[c].offset_m);
+        const double f = specific_force(rig, st, spec.sensors[c].role, spec.sensors[c].position_m, spec.sensors[c].offset_m) +
+                         ring(st.time_s, spec.sensors[c].role);
         if (i == -warm) hp[c]->prime(f);
         (*hp[c])(f);
       }
@@ -263,7 +282,10 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       }
       for (std::size_t c = 0; c < nsens; ++c) {
         const ChannelSpec& s = spec.sensors[c];
-        const double force = specific_force(rig, st, s.role, s.position_m, s.offset_m);
+        const double rigid = specific_force(rig, st, s.role, s.position_m, s.offset_m);
+        const double ringing_now = ring(t, s.role);
+        const double force = rigid + ringing_now;
+        rigid_sum[c] += rigid, rigid_sq[c] += rigid * rigid, ring_sq[c] += ringing_now * ringing_now;
         const double sensed = hp[c] ? (*hp[c])(force) : force;
         if (truth) {
           row.push_back(force);
@@ -334,6 +356,12 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   result.frames = frames;
   result.channels = static_cast<int>(nch);
   result.sample_rate_hz = fs;
+  if (ringing)
+    for (std::size_t c = 0; c < nsens; ++c) {
+      const double nf = static_cast<double>(frames), mean = rigid_sum[c] / nf;
+      const double rigid_rms = std::sqrt(std::max(0.0, rigid_sq[c] / nf - mean * mean));
+      result.ringing_rms_share.push_back(rigid_rms > 0 ? std::sqrt(ring_sq[c] / nf) / rigid_rms : 0.0);
+    }
   return result;
 }
 

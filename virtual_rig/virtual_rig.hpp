@@ -20,6 +20,9 @@
 // takes the pulse channel's place, their edges from the crank drive itself
 // (wheel_signal.hpp); the crank speed may change within the turn
 // (speed_harmonics_pct, CrankDrive::harmonics).
+// With [[recording.link_mode]] (a clearance motion) each tangential sensor
+// also sees its link's bending modes rung by the bearing impulses
+// (link_ringing.hpp), added to the specific force before the sensor's filter.
 
 #include <filesystem>
 #include <string>
@@ -46,6 +49,9 @@ struct VirtualRigResult {
   std::vector<double> pulse_times_s;  ///< leading-edge times of the pulses written (jitter included)
   std::uint64_t clipped_samples = 0;  ///< accelerometer samples clipped at ±full_scale_V
   std::vector<double> noise_V;        ///< per sensor, standard deviation used
+  /// Per sensor, with [[recording.link_mode]]: RMS of the links' ringing
+  /// over the RMS of the rigid signal (about its mean), both over the recording.
+  std::vector<double> ringing_rms_share;
 };
 
 /// The crank drive the scene and its [recording] describe (mean speed,

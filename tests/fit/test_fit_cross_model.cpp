@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include <fstream>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -51,7 +52,10 @@ nlohmann::json fit_of(const testing::TempDir& dir, const std::string& name, cons
   const auto r = testing::run_fourbar("fit " + (dir.path() / name).string() + " --smooth --turns 24 -q --out " + out.string());
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   std::ifstream in(out / "fit.json");
-  return nlohmann::json::parse(in);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The model family's verdict is the first key, whatever it says.
+  EXPECT_EQ(text.rfind("{\n  \"model_family\": {", 0), 0u) << text.substr(0, 200);
+  return nlohmann::json::parse(text);
 }
 
 bool says_model_family_differs(const nlohmann::json& fit) {
@@ -66,14 +70,19 @@ TEST(FitCrossModel, CompliantSessionFittedWithTheImpactModelSaysTheModelFamilyDi
   const double per_term = compliant["chi2_per_term"].get<double>();
   EXPECT_GT(per_term, 10.0) << compliant.dump(1);  // noise alone: ≈ 1
   EXPECT_TRUE(says_model_family_differs(compliant)) << compliant.dump(1);
-  // Still an effective e inside the box, reported as such.
+  // Still an effective e inside the box, reported as such: the family
+  // rejected first, e not identifiable, its interval not zero-width.
   const double e = compliant["parameters"]["restitution"]["value"].get<double>();
   EXPECT_GE(e, 0.0);
   EXPECT_LE(e, 1.0);
+  EXPECT_EQ(compliant["model_family"]["verdict"], "rejected") << compliant["model_family"].dump(1);
+  EXPECT_FALSE(compliant["parameters"]["restitution"]["identifiable"].get<bool>());
+  EXPECT_LT(compliant["parameters"]["restitution"]["low"].get<double>(), compliant["parameters"]["restitution"]["high"].get<double>());
 
   const nlohmann::json impact = fit_of(dir, "impact", "contact = \"smooth\"");
   EXPECT_LT(impact["chi2_per_term"].get<double>(), 4.0) << impact.dump(1);
   EXPECT_FALSE(says_model_family_differs(impact)) << impact.dump(1);
+  EXPECT_EQ(impact["model_family"]["verdict"], "not rejected") << impact["model_family"].dump(1);
   // The magnification factor with its standard error, from runs of 8× the
   // measured turns: the impact model fitted to its own recording gives a
   // within 3 errors of 1.

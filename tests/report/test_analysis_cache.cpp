@@ -77,6 +77,7 @@ class Generator {
     r["status"] = below(2) ? "ok" : "check set-up";  // both are analysed records
     r["setup_check"] = value(0);
     r["views"] = value(0);
+    r["model_family"] = value(0);
     return r;
   }
 
@@ -122,14 +123,18 @@ TEST(AnalysisCache, DamagedOrFailedEntriesAreRecomputed) {
   EXPECT_FALSE(read_cached_record(dir.write("old.json", R"({"status": "ok"})")));
   // Made before the views existed: recomputed, so the report shows them.
   EXPECT_FALSE(read_cached_record(dir.write("no_views.json", R"({"status": "ok", "setup_check": {"findings": []}})")));
-  EXPECT_TRUE(read_cached_record(dir.write("ok.json", R"({"status": "ok", "setup_check": {"findings": []}, "views": {}})")));
+  // Made before the model-family check existed: recomputed, so the verdict has its part.
+  EXPECT_FALSE(read_cached_record(dir.write("no_family.json", R"({"status": "ok", "setup_check": {"findings": []}, "views": {}})")));
+  EXPECT_TRUE(read_cached_record(
+      dir.write("ok.json", R"({"status": "ok", "setup_check": {"findings": []}, "views": {}, "model_family": {}})")));
   EXPECT_TRUE(read_cached_record(dir.write(
-      "check.json", R"({"status": "check set-up", "setup_check": {"findings": [{"key": "axis_sign"}]}, "views": {}})")));
+      "check.json",
+      R"({"status": "check set-up", "setup_check": {"findings": [{"key": "axis_sign"}]}, "views": {}, "model_family": {}})")));
   // Made before the spectral magnification named its orders: recomputed, so the verdict has them.
   EXPECT_FALSE(read_cached_record(dir.write(
-      "no_orders.json", R"({"status": "ok", "setup_check": {}, "views": {}, "metrics": {"alpha3_rad_s2": {"magnification": {"spectral": 0.2}}}})")));
+      "no_orders.json", R"({"status": "ok", "setup_check": {}, "views": {}, "model_family": {}, "metrics": {"alpha3_rad_s2": {"magnification": {"spectral": 0.2}}}})")));
   EXPECT_TRUE(read_cached_record(dir.write(
-      "orders.json", R"({"status": "ok", "setup_check": {}, "views": {}, "metrics": {"alpha3_rad_s2": {"magnification": {"orders_used": [6]}}}})")));
+      "orders.json", R"({"status": "ok", "setup_check": {}, "views": {}, "model_family": {}, "metrics": {"alpha3_rad_s2": {"magnification": {"orders_used": [6]}}}})")));
 }
 
 }  // namespace

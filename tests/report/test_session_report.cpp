@@ -113,6 +113,25 @@ TEST_F(SessionReport, BadRecordingsAreReportedAndTheRestProcessed) {
   EXPECT_NE(html.find("failed"), std::string::npos);
 }
 
+TEST_F(SessionReport, ModelFamilyIsCheckedAndItsBandLimitRefusedAboveNyquist) {
+  // The rigid model's own recording: checked, nothing the model lacks, the verdict's part "holds".
+  const json& r = recording("clearance.flac");
+  ASSERT_TRUE(r.contains("model_family")) << r.dump().substr(0, 400);
+  EXPECT_TRUE(r["model_family"]["checked"].get<bool>()) << r["model_family"].dump();
+  EXPECT_TRUE(r["model_family"]["unmodelled"].empty()) << r["model_family"].dump();
+  EXPECT_EQ(r["verdict"]["model_family"]["level"], "good") << r["verdict"]["model_family"].dump();
+  // A band limit above the recording's Nyquist frequency (8 kHz sampling): exit 2 naming the key.
+  const auto& d = dir_->path();
+  std::filesystem::create_directories(d / "nyquist");
+  for (const char* f : {"clearance.flac", "clearance.toml"}) std::filesystem::copy_file(d / "session" / f, d / "nyquist" / f);
+  dir_->write("nyquist/session.toml", "[model_family]\nmax_frequency_hz = 5000\n");
+  const auto bad = testing::run_fourbar("report " + (d / "nyquist").string() + " --no-cache -q --out " +
+                                        (d / "nyquist_out" / "report.html").string());
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_NE(bad.err.find("model_family.max_frequency_hz"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("Nyquist frequency 4000 Hz"), std::string::npos) << bad.err;
+}
+
 TEST_F(SessionReport, OutputsDoNotDependOnTheNumberOfJobs) {
   // The main run used every core; one job at a time and more jobs than
   // recordings give the same records, in the same order, and the same series.

@@ -68,3 +68,31 @@ TEST(SessionSettings, AnalysisValuesTheAnalysisRefusesAreRefusedByKey) {
 
 }  // namespace
 }  // namespace fourbar
+
+namespace fourbar {
+namespace {
+
+TEST(SessionSettings, ModelFamilyBandLimitAboveNyquistNamesTheKeyAndTheFix) {
+  testing::TempDir d;
+  d.write("run1.flac", "");
+  d.write("session.toml", "[model_family]\nband_width_hz = 40\nmax_frequency_hz = 7000\n");
+  const SessionSettings s = load_session_settings(d.path());
+  EXPECT_DOUBLE_EQ(s.model_family.band_width_hz, 40);
+  EXPECT_DOUBLE_EQ(s.model_family.max_frequency_hz, 7000);
+  EXPECT_NO_THROW(check_band_limit(s, "run1.flac", 16000));  // Nyquist 8000 Hz
+  try {
+    check_band_limit(s, "run1.flac", 12800);  // Nyquist 6400 Hz
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("model_family.max_frequency_hz"), std::string::npos) << m;
+    EXPECT_NE(m.find("6400"), std::string::npos) << m;
+    EXPECT_NE(m.find("run1.flac"), std::string::npos) << m;
+    EXPECT_NE(m.find("give at most"), std::string::npos) << m;
+  }
+  expect_refused("[model_family]\nband_width_hz = 0\n", "model_family.band_width_hz");
+  expect_refused("[model_family]\nbands = 3\n", "bands");
+}
+
+}  // namespace
+}  // namespace fourbar

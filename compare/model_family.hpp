@@ -1,0 +1,122 @@
+#pragma once
+// Does the measurement hold physics the model family lacks? The rigid
+// clearance model has no link bending, no sensor resonance: energy the model
+// does not have, concentrated in some frequency band, shows in the
+// measurement's spectrum and in its turn-to-turn scatter, and a wrong model
+// can then "match" a scatter that is not the clearance's.
+//
+// The check, on one link acceleration (α3, else α4), per turn:
+//   d = turn − nominal (measured and model alike), its mean square per crank
+//   order k by FFTW over the turn (Parseval: Σ_k P(k) = mean(d²)), averaged
+//   over the whole record (turns one after another, Hann window: a ring that
+//   does not fit a turn does not leak); bins grouped into bands of
+//   band_width_hz from crank order kFirstCheckedOrder (order k at
+//   k·f_crank Hz); per band the ratio r_b = E_measured(b) / E_model(b);
+//   windows of kWindowBands adjacent bands, one band apart.
+//   Impacts are near-impulses in α, so both sides have broadband spectra and
+//   r_b changes only slowly with frequency whatever e is (measured: a
+//   smooth fall of up to 20× over 100–900 Hz from another e and the
+//   measurement chain's roll-off). Each window's reference r_ref is the
+//   median ratio of its neighbours (kReferenceBands bands on each side
+//   beyond its direct neighbours). A window is unmodelled when its ratio
+//   exceeds kExcessRatio·r_ref, its measured energy stands kMinProminence times
+//   above its neighbours' (the measured spectrum itself peaks there), AND
+//   its excess E_m − r_ref·E_s is at least kMinRmsShare of the measured
+//   signal's RMS (as an RMS share). Adjacent
+//   unmodelled bands form one finding: where (Hz), its peak, its strength
+//   (√(excess / mean square of the measured signal)), and what it looks like
+//   — a narrow resonance (excess within ±kNarrowShare of its peak frequency:
+//   a link's bending mode or the sensor's mounted resonance) or broad
+//   ringing (after impacts).
+//
+// Below the first unmodelled band (and below kCutShareOfPeak of its peak)
+// the family is taken to hold: the turns, measured and model, are low-passed there (orders at or above it zeroed)
+// and their turn-to-turn scatter compared again, a (scatter) below the band.
+// docs/verdict.md "Model family" gives the reasons for each threshold.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace fourbar {
+
+/// A window's ratio over its neighbours' above which its energy is unmodelled.
+inline constexpr double kExcessRatio = 6.0;
+/// Bands per window (windows one band apart).
+inline constexpr std::size_t kWindowBands = 2;
+/// … and its measured energy at least this many times its neighbours' (the
+/// measured spectrum itself peaks there: a broad change of the ratio's
+/// trend by another e does not, docs/verdict.md "Model family").
+inline constexpr double kMinProminence = 6.0;
+/// The agreement is judged below this share of the first finding's peak
+/// frequency (or its band, whichever is lower): of a mode rung by impulses
+/// at ζ = 0.02, 3.4 % of its energy up to 1.6 f lies below 0.75 f.
+inline constexpr double kCutShareOfPeak = 0.75;
+/// The neighbours: this many bands on each side beyond the window's direct neighbours.
+inline constexpr std::size_t kReferenceBands = 4;
+/// The check starts at this crank order: below it lies the rigid mechanism's
+/// own response (the nominal band, the free flights), where another e
+/// changes the spectrum's shape, not a structure the model lacks.
+inline constexpr double kFirstCheckedOrder = 20;
+/// The excess's RMS over the measured signal's RMS from which it is named.
+inline constexpr double kMinRmsShare = 0.05;
+/// Excess within ± this share of its peak frequency: a narrow resonance.
+inline constexpr double kNarrowShare = 0.15;
+/// A cut below this many crank orders leaves too little to judge the agreement on.
+inline constexpr double kMinJudgedOrders = 10;
+
+struct ModelFamilySettings {
+  double band_width_hz = 20;  ///< [model_family] band_width_hz
+  /// Highest frequency checked, Hz ([model_family] max_frequency_hz); 0: the
+  /// grid's and the analysis filter's limit.
+  double max_frequency_hz = 0;
+};
+
+struct FamilyBand {
+  double low_hz = 0, high_hz = 0;
+  double measured_ms = 0, model_ms = 0;  ///< mean square of the deviation in the band
+  double ratio = 0;                       ///< measured over model
+  /// Of the window through this band that stands highest: its ratio over
+  /// its neighbours' median ratio (`reference`), and its measured energy
+  /// per band over its neighbours' median energy.
+  double ratio_to_neighbours = 0, reference = 0, prominence = 0;
+  bool unmodelled = false;
+};
+
+struct UnmodelledEnergy {
+  std::string kind;          ///< "narrow resonance" or "broad ringing"
+  double low_hz = 0, high_hz = 0, peak_hz = 0;
+  double rms_share = 0;      ///< √(excess / mean square of the measured signal)
+  double excess_ratio = 0;   ///< largest band ratio over the typical one
+};
+
+struct ModelFamilyCheck {
+  bool checked = false;
+  std::string not_checked;  ///< why not
+  double crank_hz = 0, checked_up_to_hz = 0;
+  double typical_ratio = 0;  ///< r_ref
+  std::vector<FamilyBand> bands;
+  std::vector<UnmodelledEnergy> unmodelled;  ///< lowest first
+  /// Below the first unmodelled band: where the agreement is judged (Hz)
+  /// and the turn-to-turn scatter of both sides there.
+  std::optional<double> judged_below_hz;
+  double measured_scatter_below = 0, model_scatter_below = 0;
+  std::optional<double> a_scatter_below;  ///< model / measured scatter below the band
+  std::string cannot_judge;  ///< set when the band leaves too little below it
+};
+
+/// `measured`, `model`: turns × N on the crank-angle grid; `nominal`: N.
+/// `filter_high_hz`: the analysis' upper corner (0: none).
+ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<const double> model,
+                                    std::span<const double> nominal, double crank_hz, double filter_high_hz,
+                                    const ModelFamilySettings& settings);
+
+/// Turns × N (consecutive turns) with every crank order at or above
+/// `cut_order` removed, by one transform of the whole record.
+std::vector<double> low_passed_turns(std::span<const double> turns, std::size_t n, double cut_order);
+
+/// √(mean over angles of the variance over turns): the turn-to-turn scatter.
+double turn_scatter(std::span<const double> turns, std::size_t n);
+
+}  // namespace fourbar

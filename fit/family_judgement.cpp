@@ -1,0 +1,48 @@
+#include "fit/family_judgement.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/units.hpp"
+#include "compare/matched_theory.hpp"
+#include "fit/session_fit.hpp"
+
+namespace fourbar {
+
+void widen_for_model_error(ParameterEstimate& p, double delta, double scale, double box_low, double box_high) {
+  p.identifiable = false;
+  const std::size_t n = std::min(p.profile_at.size(), p.profile_chi2.size());
+  if (n == 0) {
+    p.low = box_low, p.high = box_high;
+    return;
+  }
+  const double bottom = *std::min_element(p.profile_chi2.begin(), p.profile_chi2.begin() + static_cast<std::ptrdiff_t>(n));
+  const double limit = bottom + delta * scale * scale;
+  std::size_t first = n, last = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (p.profile_chi2[i] <= limit) first = std::min(first, i), last = std::max(last, i);
+  double low = first > 0 && first < n ? p.profile_at[first - 1] : box_low;
+  double high = last + 1 < n ? p.profile_at[last + 1] : box_high;
+  if (first == n) low = box_low, high = box_high;  // (cannot happen: the bottom is in the set)
+  p.low = std::max(box_low, std::min({low, p.value, p.low}));
+  p.high = std::min(box_high, std::max({high, p.value, p.high}));
+}
+
+ModelFamilyCheck family_check_at(const RecordingTarget& t, const std::vector<double>& measured_turns,
+                                 const ContactParameters& p, int warmup, int turns, const ModelFamilySettings& settings) {
+  TheorySettings ts;
+  ts.restitution = p.restitution;
+  ts.contact = p.contact;
+  ts.friction_coefficient = p.friction_coefficient;
+  ts.warmup_revolutions = warmup;
+  ts.averaged_revolutions = turns;
+  MatchedTheory theory = simulate_matched_theory(*t.rig, t.clearance_m, t.crank_speed_rad_s, t.grid, ts);
+  apply_pass_band(theory, t.filter);
+  const LinkQuantity q = t.measured[static_cast<std::size_t>(FitLink::coupler)] ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
+  const TheorySeries& s = theory.series[index_of(q)];
+  const bool has_top = t.filter.band == BandType::lowpass || t.filter.band == BandType::bandpass;
+  return check_model_family(measured_turns, s.clearance_revolutions, s.nominal, std::abs(t.crank_speed_rad_s) / units::kTwoPi,
+                            has_top ? t.filter.high_hz : 0.0, settings);
+}
+
+}  // namespace fourbar

@@ -1,0 +1,45 @@
+#pragma once
+// When the fitted model family does not describe the measurement, the
+// parameter block must say so (docs/fit.md "When the model family is
+// rejected"): the family is rejected when χ² per term at the best point
+// stays above kModelFamilyChi2PerTerm (the statistics' noise gives ≈ 1), or
+// when a recording holds energy the model lacks (compare/model_family.hpp,
+// checked at the fitted parameters). Then
+//   - no parameter is identifiable (the values are effective ones);
+//   - each interval is re-read from the raw profile with the model-error
+//     scale: Δχ² ≤ interval_delta · max(1, χ²/ν), and runs to the next grid
+//     point on each side outside it, so it is never narrower than the
+//     profile's resolution (a zero-width interval would claim a precision
+//     the misfit denies);
+//   - fit.json's first key is "model_family": {"verdict": "rejected",
+//     "reasons": [...]} and the terminal's first line says so.
+
+#include <string>
+#include <vector>
+
+#include "compare/model_family.hpp"
+#include "fit/recording_target.hpp"
+
+namespace fourbar {
+
+struct ParameterEstimate;
+
+struct FamilyJudgement {
+  bool rejected = false;
+  std::vector<std::string> reasons;
+  double error_scale = 1;  ///< √max(1, χ²/ν): the statistics' misfit in standard errors (RMS)
+};
+
+/// Widens `p`'s interval from its raw profile (profile_at, profile_chi2)
+/// to Δχ² ≤ delta·scale² above the profile's lowest point, out to the next
+/// grid point on each side (within [box_low, box_high]); not identifiable.
+void widen_for_model_error(ParameterEstimate& p, double delta, double scale, double box_low, double box_high);
+
+/// The model-family check of one recording at contact parameters `p`: the
+/// matched theory (compare/matched_theory.hpp, `warmup` + `turns` turns) at
+/// the target's operating point through its pass band, against
+/// `measured_turns` (α3, else α4: turns × N on the target's grid).
+ModelFamilyCheck family_check_at(const RecordingTarget& target, const std::vector<double>& measured_turns,
+                                 const ContactParameters& p, int warmup, int turns, const ModelFamilySettings& settings);
+
+}  // namespace fourbar

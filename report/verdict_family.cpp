@@ -1,0 +1,135 @@
+#include "report/verdict_family.hpp"
+
+#include <cmath>
+
+#include "common/format.hpp"
+#include "report/verdict.hpp"
+
+namespace fourbar {
+
+using nlohmann::json;
+
+namespace {
+
+std::string num(double v, int digits = 3) { return format_number(v, digits); }
+std::string hz(double v) { return format_number(v, 4) + " Hz"; }
+
+}  // namespace
+
+json model_family_json(const ModelFamilyCheck& c) {
+  json j = {{"checked", c.checked}};
+  if (!c.checked) {
+    j["not_checked"] = c.not_checked;
+    return j;
+  }
+  json bands = json::array(), found = json::array();
+  for (const FamilyBand& b : c.bands)
+    bands.push_back({{"low_hz", b.low_hz}, {"high_hz", b.high_hz}, {"measured_ms", b.measured_ms}, {"model_ms", b.model_ms},
+                     {"ratio_to_neighbours", b.ratio_to_neighbours},
+                     {"prominence", b.prominence}, {"unmodelled", b.unmodelled}});
+  for (const UnmodelledEnergy& u : c.unmodelled)
+    found.push_back({{"kind", u.kind}, {"low_hz", u.low_hz}, {"high_hz", u.high_hz}, {"peak_hz", u.peak_hz},
+                     {"rms_share", u.rms_share}, {"excess_ratio", u.excess_ratio}});
+  j["quantity"] = "alpha3_rad_s2";
+  j["crank_hz"] = c.crank_hz;
+  j["checked_up_to_hz"] = c.checked_up_to_hz;
+  j["typical_ratio"] = c.typical_ratio;
+  j["unmodelled"] = found;
+  j["judged_below_hz"] = c.judged_below_hz ? json(*c.judged_below_hz) : json(nullptr);
+  j["measured_scatter_below"] = c.measured_scatter_below;
+  j["model_scatter_below"] = c.model_scatter_below;
+  j["a_scatter_below"] = c.a_scatter_below ? json(*c.a_scatter_below) : json(nullptr);
+  if (!c.cannot_judge.empty()) j["cannot_judge"] = c.cannot_judge;
+  j["bands"] = bands;
+  return j;
+}
+
+std::optional<VerdictFamily> verdict_family(const json& r) {
+  if (!r.is_object() || !r.contains("model_family") || !r["model_family"].is_object()) return std::nullopt;
+  const json& j = r["model_family"];
+  VerdictFamily f;
+  f.checked = j.value("checked", false);
+  f.not_checked = j.value("not_checked", "");
+  f.checked_up_to_hz = j.value("checked_up_to_hz", 0.0);
+  for (const json& u : j.value("unmodelled", json::array()))
+    f.unmodelled.push_back({u.value("kind", ""), u.value("low_hz", 0.0), u.value("high_hz", 0.0), u.value("peak_hz", 0.0),
+                            u.value("rms_share", 0.0), u.value("excess_ratio", 0.0)});
+  if (j.contains("judged_below_hz") && j["judged_below_hz"].is_number()) f.judged_below_hz = j["judged_below_hz"].get<double>();
+  if (j.contains("a_scatter_below") && j["a_scatter_below"].is_number()) f.a_scatter_below = j["a_scatter_below"].get<double>();
+  f.cannot_judge = j.value("cannot_judge", "");
+  return f;
+}
+
+std::string unmodelled_text(const UnmodelledEnergy& u) {
+  return u.kind + " at " + format_number(u.low_hz, 4) + "–" + hz(u.high_hz) + " (peak " + hz(u.peak_hz) + "), " +
+         format_number(100 * u.rms_share, 2) + " % of the measured RMS";
+}
+
+VerdictPart family_part(const VerdictInputs& in) {
+  if (!in.family) return {VerdictLevel::not_judged, "not checked", "The model family was not checked (a record from an older fourbar)."};
+  const VerdictFamily& f = *in.family;
+  if (!f.checked) return {VerdictLevel::not_judged, "not checked", "The model family was not checked: " + f.not_checked + "."};
+  if (f.unmodelled.empty())
+    return {VerdictLevel::good, "holds",
+            "No energy the model lacks: up to " + hz(f.checked_up_to_hz) +
+                " the measured α3 deviation has, band by band, the spectrum of the model's (no link vibration or sensor resonance found)."};
+  const UnmodelledEnergy& u = f.unmodelled.front();
+  std::string s = "The measurement holds energy the rigid model does not have: " + unmodelled_text(u);
+  for (std::size_t i = 1; i < f.unmodelled.size(); ++i) s += "; " + unmodelled_text(f.unmodelled[i]);
+  s += u.kind == "narrow resonance"
+           ? ". A narrow resonance is a link's bending mode or the accelerometer's mounted resonance (compare its calibration sheet); "
+           : ". Broad ringing after the impacts is the links' or the frame's structural response; ";
+  s += "the model agreement is judged below " + hz(f.judged_below_hz.value_or(u.low_hz)) + " only. Stiffen or damp the mounting, or compare with a model that has the links' modes.";
+  return {VerdictLevel::attention, u.kind + " " + format_number(u.peak_hz, 4) + " Hz (" + format_number(100 * u.rms_share, 2) + " %)", s};
+}
+
+void judge_agreement_below_band(const VerdictInputs& in, Verdict& v) {
+  if (!in.family || in.family->unmodelled.empty()) return;
+  const VerdictFamily& f = *in.family;
+  if (v.agreement.level == VerdictLevel::not_judged && v.agreement.words.find("not meaningful") != std::string::npos) return;
+  const double cut = f.judged_below_hz.value_or(f.unmodelled.front().low_hz);
+  const std::string lacks = "the measurement holds energy the model lacks (" + unmodelled_text(f.unmodelled.front()) + ")";
+  const double crank_hz = in.speed_mean_rpm / 60.0;
+  // a (spectral) from orders all below the band stays as it was.
+  if (v.a_from == "spectral" && !in.orders_used.empty() && crank_hz > 0 &&
+      in.orders_used.back() * crank_hz < cut) {
+    v.agreement.sentence += " Its orders lie below " + hz(cut) + ", where the model family holds (" + lacks + ").";
+    return;
+  }
+  v.a_standard_error.reset();
+  if (!f.a_scatter_below || !f.cannot_judge.empty()) {
+    v.a.reset();
+    v.a_from.clear();
+    v.agreement = {VerdictLevel::not_judged, "cannot be judged",
+                   "The model agreement cannot be judged: " + lacks + ", and " +
+                       (f.cannot_judge.empty() ? std::string("nothing is left below it to compare") : f.cannot_judge) +
+                       ". Remove the vibration (stiffer, damped mounting) or compare with a model that has it."};
+    return;
+  }
+  const double a = *f.a_scatter_below;
+  v.a = a;
+  v.a_from = "scatter below " + format_number(cut, 4) + " Hz";
+  VerdictPart p;
+  p.words = "a " + num(a, 2) + " (below " + format_number(cut, 4) + " Hz)";
+  p.level = (a >= kAgreeLow && a <= kAgreeHigh)                 ? VerdictLevel::good
+            : (a >= kAgreeProblemLow && a <= kAgreeProblemHigh) ? VerdictLevel::attention
+                                                                : VerdictLevel::problem;
+  p.sentence = "Judged below " + hz(cut) + " only, because " + lacks +
+               ": a (scatter below the band) = model / measured turn-to-turn scatter of α3, both low-passed at " + hz(cut) +
+               ", = " + num(a) + ": ";
+  const std::string e = "e = " + num(in.restitution);
+  if (a > kAgreeHigh) p.sentence += "the model is " + num(a, 2) + "× more violent than the measurement; lower the restitution (" + e + ")";
+  else if (a < kAgreeLow) p.sentence += "the model is gentler than the measurement (" + num(1.0 / a, 2) + "× weaker); raise the restitution (" + e + ")";
+  else {
+    // Agreement below the band only: the model family lacks what lies above
+    // it, so the model as a whole is not "good" (docs/verdict.md "Model family").
+    p.level = VerdictLevel::attention;
+    p.words += ", partial";
+    p.sentence += "model and measurement agree within " + format_number(100 * (kAgreeHigh - 1), 2) + " % there (" + e + ", " +
+                  in.contact + "), but only there: above " + hz(cut) + " the measurement holds energy the model lacks, so the model as a whole is not confirmed";
+  }
+  p.sentence += ". The agreement over the whole band (" + v.agreement.words + ") counts the unmodelled energy as clearance response and is not used.";
+  v.agreement = p;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,46 @@
+#pragma once
+// The verdict's model-family part (compare/model_family.hpp): energy in the
+// measurement that the model family does not have — what, where in Hz, how
+// strong — and, when there is some, the model agreement judged again below
+// the first unmodelled band only (a (scatter) of α3 low-passed there), or
+// "not judged" when nothing is left below it to judge.
+// docs/verdict.md "Model family" gives the thresholds and their reasons.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/model_family.hpp"
+
+namespace fourbar {
+
+struct VerdictPart;
+struct VerdictInputs;
+struct Verdict;
+
+/// What the verdict reads of a record's "model_family".
+struct VerdictFamily {
+  bool checked = false;
+  std::string not_checked;
+  double checked_up_to_hz = 0;
+  std::vector<UnmodelledEnergy> unmodelled;
+  std::optional<double> judged_below_hz, a_scatter_below;
+  std::string cannot_judge;
+};
+
+/// The record's "model_family" object.
+nlohmann::json model_family_json(const ModelFamilyCheck& c);
+/// From a record; nullopt when the record has no "model_family" (older records).
+std::optional<VerdictFamily> verdict_family(const nlohmann::json& record);
+
+/// "narrow resonance at 575–625 Hz (peak 600 Hz), 62 % of the measured RMS".
+std::string unmodelled_text(const UnmodelledEnergy& u);
+
+/// The model-family part.
+VerdictPart family_part(const VerdictInputs& in);
+/// With unmodelled energy: the agreement (and a) judged below its first band only.
+void judge_agreement_below_band(const VerdictInputs& in, Verdict& v);
+
+}  // namespace fourbar

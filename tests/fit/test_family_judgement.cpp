@@ -1,0 +1,83 @@
+// The fit's numbers when the model family is rejected (fit/family_judgement.hpp,
+// session_fit.hpp reject_model_family): nothing identifiable, no zero-width
+// interval, the flag first in fit.json.
+#include <gtest/gtest.h>
+
+#include "fit/family_judgement.hpp"
+#include "fit/fit_json.hpp"
+#include "fit/session_fit.hpp"
+
+namespace fourbar {
+namespace {
+
+/// A sharp profile (χ² 90/term-like misfit) whose surrogate interval was zero-width.
+ParameterEstimate sharp_e() {
+  ParameterEstimate p;
+  p.name = "restitution";
+  p.value = p.low = p.high = 0.976;
+  p.identifiable = true;
+  p.profile_at = {0.0, 0.143, 0.286, 0.429, 0.571, 0.714, 0.857, 1.0};
+  p.profile_chi2 = {5000, 4000, 3100, 2500, 2000, 1500, 1000, 800};
+  return p;
+}
+
+TEST(FamilyJudgement, WidenedIntervalIsNeverZeroWidthNorIdentifiable) {
+  ParameterEstimate p = sharp_e();
+  widen_for_model_error(p, 4.0, 1.0, 0.0, 1.0);
+  EXPECT_FALSE(p.identifiable);
+  EXPECT_LT(p.low, p.value);
+  EXPECT_GE(p.high, p.value);
+  EXPECT_NEAR(p.low, 0.857, 1e-12);  // out to the next grid point below the lowest
+  EXPECT_NEAR(p.high, 1.0, 1e-12);
+}
+
+TEST(FamilyJudgement, ModelErrorScaleWidensFurther) {
+  ParameterEstimate narrow = sharp_e(), wide = sharp_e();
+  widen_for_model_error(narrow, 4.0, 1.0, 0.0, 1.0);
+  widen_for_model_error(wide, 4.0, std::sqrt(100.0), 0.0, 1.0);  // χ²/ν = 100: Δ 400 above the bottom
+  EXPECT_LT(wide.low, narrow.low);
+  EXPECT_NEAR(wide.low, 0.714, 1e-12);  // 1000 (at 0.857) within 800 + 400, 1500 not: out to the grid point 0.714
+}
+
+FitResult rejected_fit() {
+  FitResult f;
+  f.parameters = {sharp_e()};
+  ParameterEstimate mu;
+  mu.name = "friction_coefficient";
+  mu.value = mu.low = mu.high = 0.268;
+  mu.profile_at = {0.0, 0.125, 0.25, 0.375, 0.5};
+  mu.profile_chi2 = {900, 850, 800, 820, 870};
+  f.parameters.push_back(mu);
+  f.chi2 = 9000, f.terms = 100, f.interval_delta = 4.0;
+  f.best = {0.976, ContactLaw::stick_slip, 0.268};
+  return f;
+}
+
+TEST(FamilyJudgement, RejectionMarksEveryParameterAndTheJson) {
+  FitResult f = rejected_fit();
+  FitOptions o;
+  reject_model_family(f, "rec.flac holds energy the model lacks", o);
+  EXPECT_TRUE(f.model_family.rejected);
+  EXPECT_NEAR(f.model_family.error_scale, std::sqrt(90.0), 1e-12);
+  for (const ParameterEstimate& p : f.parameters) {
+    EXPECT_FALSE(p.identifiable) << p.name;
+    EXPECT_GT(p.high - p.low, 0) << p.name;
+  }
+  const nlohmann::json j = fit_to_json(f, {}, {1.0, ContactLaw::smooth, 0.0}, o);
+  EXPECT_EQ(j["model_family"]["verdict"], "rejected");
+  EXPECT_EQ(j["model_family"]["reasons"][0], "rec.flac holds energy the model lacks");
+  EXPECT_FALSE(j["parameters"]["restitution"]["identifiable"].get<bool>());
+  EXPECT_FALSE(j["parameters"]["friction_coefficient"]["identifiable"].get<bool>());
+  EXPECT_LT(j["parameters"]["restitution"]["low"].get<double>(), j["parameters"]["restitution"]["high"].get<double>());
+}
+
+TEST(FamilyJudgement, AcceptedFamilyKeepsItsNumbers) {
+  FitResult f = rejected_fit();
+  FitOptions o;
+  const nlohmann::json j = fit_to_json(f, {}, {1.0, ContactLaw::smooth, 0.0}, o);
+  EXPECT_EQ(j["model_family"]["verdict"], "not rejected");
+  EXPECT_TRUE(j["parameters"]["restitution"]["identifiable"].get<bool>());
+}
+
+}  // namespace
+}  // namespace fourbar
