@@ -166,6 +166,7 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
     const RecordingComparison c = compare_response(measured, t);
     json r = recording_record(a, measured, t, c);
     add_scatter_errors(r, a, t);
+    r["operating_point"]["clearance_source"] = a.clearance_from_rig ? "rig file (no clearance_mm in the manifest)" : "manifest";
     if (fitted) {
       // The same theory path at the fitted contact parameters.
       const MatchedTheory tf = theory_at(*fitted);
