@@ -85,7 +85,7 @@ VerdictPart measurement_part(const VerdictInputs& in) {
         items.push_back({rel > kScatterErrorProblem ? VerdictLevel::problem : VerdictLevel::attention, "a ± " + pct(rel),
                          "a (scatter) is uncertain by " + pct(rel) + " (standard error, " + std::to_string(in.revolutions) +
                              " turns): record about " + turns_and_time(turns_for(in.revolutions, rel, kScatterErrorGood), rpm) +
-                             " to bring it to " + pct(kScatterErrorGood) + " (it falls about as 1/√turns)."});
+                             " to bring it to " + num(100 * kScatterErrorGood, 3) + " % (it falls about as 1/√turns)."});
     }
   } else if (in.revolutions < kMinRevolutionsForFloor) {
     items.push_back({VerdictLevel::problem, std::to_string(in.revolutions) + " turns",

@@ -198,6 +198,7 @@ with tempfile.TemporaryDirectory(prefix="fourbar-csv-") as out:
     # summary.csv: one row per recording, the values of summary.json.
     if os.path.exists(os.path.join(out, "report", "summary.csv")):
         summary = pd.read_csv(os.path.join(out, "report", "summary.csv"))
+        exact = pd.read_csv(os.path.join(out, "report", "summary.csv"), float_precision="round_trip")
         with open(os.path.join(out, "report", "summary.json"), encoding="utf-8") as f:
             recs = json.load(f)["recordings"]
         if list(summary["file"]) != [r["name"] for r in recs]:
@@ -231,10 +232,12 @@ with tempfile.TemporaryDirectory(prefix="fourbar-csv-") as out:
                                                                                     v[part]["level"]))
                 if summary["a_kind"][i] != v["a_from"]:
                     fail("summary.csv row %d a_kind %r, summary.json %r" % (i, summary["a_kind"][i], v["a_from"]))
+                # Exactly, read with pandas' round-trip float parser (its default
+                # parser may miss the last bits).
                 for col, key in (("a", "a"), ("a_standard_error", "a_standard_error")):
                     want = v[key]
-                    if want is None or not abs(summary[col][i] - want) <= 1e-15 * abs(want):
-                        fail("summary.csv row %d %s = %r, summary.json %r" % (i, col, summary[col][i], want))
+                    if want is None or exact[col][i] != want:
+                        fail("summary.csv row %d %s = %r, summary.json %r" % (i, col, exact[col][i], want))
                 if not 0 < summary["a_standard_error"][i] < summary["a"][i]:
                     fail("summary.csv row %d: a %r with standard error %r" % (i, summary["a"][i], summary["a_standard_error"][i]))
             # A chaotic clearance effect's scatter is not a measurement fault:
