@@ -286,5 +286,29 @@ TEST(HtmlPrint, VerdictShownInHeadlessChromium) {
   (void)charts;
 }
 
+// What a supervisor asks of the first page and of the tables: the session's
+// record from session.toml (date, operator, rig, bearing) and the rig file
+// used; labels in words, no summary.json keys; the verdict's a first.
+TEST(HtmlPrint, FirstPageHasTheSessionRecordAndTablesNoInternalKeys) {
+  testing::TempDir dir;
+  const std::string page = testing::read_file(report(kSample, dir.path()));
+  const std::string html = page.substr(0, page.find("id=\"report-data\""));  // what is shown, not the data behind it
+  const auto record = html.find("<table class=\"session-record\">");
+  ASSERT_NE(record, std::string::npos);
+  EXPECT_LT(record, html.find("<main>")) << "in the header, on the first page";
+  for (const char* want : {"2026-03-14", "virtual rig (SYNTHETIC sample)", "thesis rig (Table 6.1/7.1)",
+                           "coupler-rocker bearing", "rig file used"})
+    EXPECT_NE(html.find(want, record), std::string::npos) << want;
+  for (const char* key : {"once_per_turn_pct", "acquisition.one_pulse_per_turn", "theory_by_recording", "speed_rpm.std",
+                          ">revolutions_clipped<"})
+    EXPECT_EQ(html.find(key), std::string::npos) << "an internal key in the page: " << key;
+  EXPECT_NE(html.find("acquisition › speed (rpm) › std"), std::string::npos) << "the label in words and units";
+  // The summary table: the verdict's a before the diagnostics.
+  const auto summary = html.find("<table class=\"summary\">");
+  ASSERT_NE(summary, std::string::npos);
+  EXPECT_LT(html.find("a (verdict)", summary), html.find("<th>a time</th>", summary)) << "the verdict's a before the diagnostics";
+  EXPECT_LT(html.find("0.841 ± 0.12 (scatter)", summary), html.find("</table>", summary));
+}
+
 }  // namespace
 }  // namespace fourbar
