@@ -84,16 +84,24 @@ void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales
 }
 
 std::string unit_mixup(double ratio) {
-  // ratio = the data's calibration over the manifest's (V per m/s²).
+  // ratio = the data's calibration over the manifest's (V per m/s²). Each
+  // known factor within 3 % (the scale's spread on correct manifests is
+  // 2.4 %) is named; 10 and g lie 2 % apart, so a ×10 gain step and an
+  // mV/g mix-up are both named when the data cannot tell them apart.
   constexpr double g = 9.80665;
-  auto near = [ratio](double x) { return std::abs(ratio / x - 1) <= 0.03; };
-  if (near(1 / g)) return "1/g = 1/9.81: a sensitivity in mV/g written as mV per m/s²; give it as sensitivity_mV_per_g";
-  if (near(g)) return "g = 9.81: a sensitivity in mV per m/s² written as mV/g; give it as sensitivity_mV_per_m_s2";
-  if (near(1e-3)) return "1/1000: a value in mV written where V are meant (volts_per_unit is in V per m/s²)";
-  if (near(1e3)) return "1000: a value in V written where mV are meant (sensitivity_mV_per_… is in mV)";
-  if (near(1e-3 / g)) return "1/(1000 g): a sensitivity in mV/g written as volts_per_unit (V per m/s²); give it as sensitivity_mV_per_g";
-  if (near(1e3 * g)) return "1000 g: a value in V per m/s² written as mV/g; give it as volts_per_unit";
-  return {};
+  const std::pair<double, const char*> known[] = {
+      {1 / g, "1/g = 1/9.81: a sensitivity in mV/g written as mV per m/s²; give it as sensitivity_mV_per_g"},
+      {g, "g = 9.81: a sensitivity in mV per m/s² written as mV/g; give it as sensitivity_mV_per_m_s2"},
+      {0.1, "1/10: a gain step of 10 (check gain and the amplifier's range)"},
+      {10, "10: a gain step of 10 (check gain and the amplifier's range)"},
+      {1e-3, "1/1000: a value in mV written where V are meant (volts_per_unit is in V per m/s²)"},
+      {1e3, "1000: a value in V written where mV are meant (sensitivity_mV_per_… is in mV)"},
+      {1e-3 / g, "1/(1000 g): a sensitivity in mV/g written as volts_per_unit (V per m/s²); give it as sensitivity_mV_per_g"},
+      {1e3 * g, "1000 g: a value in V per m/s² written as mV/g; give it as volts_per_unit"}};
+  std::string out;
+  for (const auto& [factor, text] : known)
+    if (std::abs(ratio / factor - 1) <= 0.03) out += (out.empty() ? "" : ", or ") + std::string(text);
+  return out;
 }
 
 void add_calibration_finding(SetupCheck& out, const ChannelSpec& channel, double ratio, double confidence) {
@@ -102,7 +110,7 @@ void add_calibration_finding(SetupCheck& out, const ChannelSpec& channel, double
   add_finding(out, "volts_per_unit", channel.name, channel_key(channel.name, channel.calibration_key),
               format_number(channel.volts_per_m_s2 * per, 4),
               format_number(channel.volts_per_m_s2 * per * ratio, 3) + " (" + format_number(ratio, 3) + " x" +
-                  (mixup.empty() ? std::string() : ", a unit mix-up: the factor is " + mixup) + ")",
+                  (mixup.empty() ? std::string() : ", a unit mix-up or gain step: the factor is " + mixup) + ")",
               confidence);
 }
 

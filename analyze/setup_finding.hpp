@@ -56,7 +56,8 @@ void add_calibration_finding(SetupCheck& out, const ChannelSpec& channel, double
 
 /// "" or the unit mix-up a calibration off by `ratio` is (within 3 %):
 /// g = 9.81 (mV/g given as mV per m/s², or back), 1000 (mV given as V, or
-/// back).
+/// back), 1000 g; and a gain step of 10, which lies within 2 % of g (both
+/// named when both fit).
 std::string unit_mixup(double ratio);
 
 /// Two or more channels (`scales`: every accelerometer judged on its own

@@ -103,7 +103,7 @@ TEST(SetupMistakes, MillivoltsPerG) {
   r = m.run("analyze");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("sensitivity_mV_per_m_s2"), std::string::npos) << "the key the manifest has: " << r.err;
-  EXPECT_NE(r.err.find("unit mix-up: the factor is 1/g"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("unit mix-up or gain step: the factor is 1/g"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("give it as sensitivity_mV_per_g"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("change [[channel]] name=\"coupler_t\" volts_per_unit"), std::string::npos) << r.err;
 }
