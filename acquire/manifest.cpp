@@ -20,6 +20,9 @@ namespace fourbar {
 
 namespace {
 
+/// Standard gravity g (m/s²): the "g" of a sensor sheet's mV/g.
+constexpr double kStandardGravity_m_s2 = 9.80665;
+
 constexpr std::array kRoles{
     std::pair{ChannelRole::coupler_tangential, "coupler_tangential"},
     std::pair{ChannelRole::coupler_normal, "coupler_normal"},
@@ -116,13 +119,26 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
   }
 
   if (is_accelerometer(c.role)) {
-    const bool has_sens = s.has("sensitivity_mV_per_m_s2"), has_vpu = s.has("volts_per_unit");
-    if (has_sens && has_vpu)
-      s.fail("volts_per_unit", "and 'sensitivity_mV_per_m_s2' both given; keep one (volts_per_unit = mV/(m/s²)·gain/1000)");
+    // The calibration in one of three keys: V per m/s² with the gain in it,
+    // or the sensor's sheet value in mV per m/s² or mV per g, times `gain`.
+    const bool has_sens = s.has("sensitivity_mV_per_m_s2"), has_vpu = s.has("volts_per_unit"),
+               has_g = s.has("sensitivity_mV_per_g");
+    if (has_sens + has_vpu + has_g > 1)
+      s.fail(has_vpu ? "volts_per_unit" : "sensitivity_mV_per_m_s2",
+             "and another calibration key both given; keep one of volts_per_unit (V per m/s², gain included), "
+             "sensitivity_mV_per_m_s2 or sensitivity_mV_per_g (the sensor's sheet, with gain)");
     if (has_vpu) {
       c.volts_per_m_s2 = s.positive("volts_per_unit");
+    } else if (has_g) {
+      const double gain = s.in_range("gain", 1e-6, 1e6, 1.0);
+      c.volts_per_m_s2 = s.positive("sensitivity_mV_per_g") * 1e-3 * gain / kStandardGravity_m_s2;
+      c.calibration_key = "sensitivity_mV_per_g";
+      c.calibration_per_volts_per_m_s2 = 1e3 * kStandardGravity_m_s2 / gain;
     } else {
-      c.volts_per_m_s2 = s.positive("sensitivity_mV_per_m_s2") * 1e-3 * s.in_range("gain", 1e-6, 1e6, 1.0);
+      const double gain = s.in_range("gain", 1e-6, 1e6, 1.0);
+      c.volts_per_m_s2 = s.positive("sensitivity_mV_per_m_s2") * 1e-3 * gain;
+      c.calibration_key = "sensitivity_mV_per_m_s2";
+      c.calibration_per_volts_per_m_s2 = 1e3 / gain;
     }
     c.axis_sign = s.in_range("axis_sign", -1, 1, 1.0);
     if (c.axis_sign != 1 && c.axis_sign != -1) s.fail("axis_sign", "must be 1 or -1");
@@ -232,7 +248,8 @@ Manifest load_manifest(const std::filesystem::path& file) {
   } catch (const InputError& e) {
     throw InputError(root.where("rig") + ": " + e.what());
   }
-  m.clearance_m = root.has("clearance_mm") ? mm_to_m(root.non_negative("clearance_mm")) : m.rig->radial_clearance_m;
+  m.clearance_from_rig = !root.has("clearance_mm");
+  m.clearance_m = m.clearance_from_rig ? m.rig->radial_clearance_m : mm_to_m(root.non_negative("clearance_mm"));
   m.full_scale_V = root.in_range("full_scale_V", 1e-9, 1e9, 1.0);
   if (root.has("adc_range_V")) m.adc_range_V = root.positive("adc_range_V");
   if (root.has("sample_rate_hz")) m.sample_rate_hz = root.positive("sample_rate_hz");

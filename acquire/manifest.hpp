@@ -64,6 +64,12 @@ struct ChannelSpec {
 
   // Accelerometer channels.
   double volts_per_m_s2 = 0;           ///< sensitivity·gain (or `volts_per_unit`)
+  /// The key the manifest gave the calibration in ("volts_per_unit",
+  /// "sensitivity_mV_per_m_s2" or "sensitivity_mV_per_g") and the factor
+  /// from volts_per_m_s2 to that key's value (with its gain): what the set-up
+  /// check names and says.
+  std::string calibration_key = "volts_per_unit";
+  double calibration_per_volts_per_m_s2 = 1;
   double axis_sign = 1;                ///< +1 or −1
   double position_m = 0;               ///< along the link from its first joint
   double offset_m = 0;                 ///< perpendicular to the link, +n side
@@ -93,6 +99,7 @@ struct Manifest {
   std::filesystem::path rig_file;
   std::shared_ptr<const Rig> rig;
   double clearance_m = 0;              ///< default: the rig's radial clearance
+  bool clearance_from_rig = false;     ///< no clearance_mm in the manifest: the rig file's was taken
   double full_scale_V = 1;             ///< volts per recorded unit
   std::optional<double> adc_range_V;   ///< input range, for clipping detection in float/text recordings
   std::optional<double> sample_rate_hz;  ///< text recordings without a time column

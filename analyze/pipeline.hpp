@@ -155,6 +155,7 @@ struct RecordingAnalysis {
   AcquisitionReport acquisition;            ///< pulses, speed statistics, channel statistics, acquire's warnings; grid_points_per_rev = N
   std::shared_ptr<const Rig> rig;           ///< from the manifest
   double clearance_m = 0;                   ///< from the manifest
+  bool clearance_from_rig = false;          ///< the manifest gives no clearance_mm: the rig file's
   AnalyzeOptions options;                   ///< as given
   FilterSpec filter, normal_filter;         ///< as used (defaults resolved); the normal channels' has no low corner
   std::size_t kernel_taps = 0;              ///< of the α filter (0: ideal)

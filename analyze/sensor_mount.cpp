@@ -35,7 +35,9 @@ ResolvedMount resolve_mount(const Rig& rig, const AccelerometerMount& m) {
     std::ostringstream os;
     os << "sensor distance " << units::m_to_mm(m.distance_m) << " mm from the "
        << (m.from == MeasuredFrom::first_joint ? first : far) << " lies outside the link (length "
-       << units::m_to_mm(l) << " mm); give a distance between 0 and the link length";
+       << units::m_to_mm(l) << " mm in the rig file" << (rig.name.empty() ? std::string() : " of '" + rig.name + "'")
+       << "); give a distance between 0 and the link length or, if the sensor does sit there, correct the "
+          "manifest's rig: it names the wrong rig file";
     fail(m, os.str());
   }
   ResolvedMount r;

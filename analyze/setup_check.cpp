@@ -399,6 +399,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   double fit_manifest = 0;
   std::vector<double> judged_scales;  // channels on their own link, within the scale tolerance
   std::vector<std::pair<const ChannelSpec*, double>> channel_scales;  // the same, by channel
+  std::vector<std::pair<const ChannelSpec*, double>> all_scales;  // every channel on its own link
   for (std::size_t i = 0; i < channels.size(); ++i) {
     const Channel& ch = channels[i];
     ChannelSetupEstimate e;
@@ -427,15 +428,13 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
         add_finding(out, "axis_sign", name, channel_key(name, "axis_sign"), ch.spec->axis_sign > 0 ? "+1" : "-1",
                     ch.spec->axis_sign > 0 ? "-1" : "+1", confidence(1 - one.r2, 1.0));
       const double ratio = std::abs(one.k);
+      all_scales.emplace_back(ch.spec, ratio);
       if (!(ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance))
         judged_scales.push_back(ratio), channel_scales.emplace_back(ch.spec, ratio);
       if (ratio > lim.scale_tolerance || ratio < 1 / lim.scale_tolerance) {
         const double sign = one.k < 0 ? -1.0 : 1.0;
         const double conf = confidence(1 - one.r2, 1 - one_term_r2(ch, f, best.ti, best.s, ch.r_m, sign));
-        if (conf >= lim.min_confidence)
-          add_finding(out, "volts_per_unit", name, channel_key(name, "volts_per_unit"),
-                      format_number(ch.spec->volts_per_m_s2, 4), format_number(ch.spec->volts_per_m_s2 * ratio, 3) +
-                      " (" + format_number(ratio, 3) + " x)", conf);
+        if (conf >= lim.min_confidence) add_calibration_finding(out, *ch.spec, ratio, conf);
       }
     }
     // The sensor's high-pass corner: when another corner explains the reading
@@ -457,6 +456,9 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     add_common_scale_finding(out, judged_scales, lim.common_scale_tolerance, manifest.rig_file.string(), fs,
                              lim.min_confidence);
   if (!best.swapped) add_channel_scale_findings(out, channel_scales, lim.channel_scale_tolerance);
+  if (!best.swapped)
+    add_rig_file_finding(out, all_scales, lim.channel_scale_tolerance, manifest.rig_file.string(),
+                         manifest.rig ? manifest.rig->name : std::string());
   return out;
 }
 

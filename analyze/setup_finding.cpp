@@ -53,10 +53,7 @@ void add_channel_scale_findings(SetupCheck& out, const std::vector<std::pair<con
   for (const auto& [spec, k] : scales) {
     const double deviation = std::abs(k - 1);
     if (deviation <= tolerance) continue;
-    add_finding(out, "volts_per_unit", spec->name, channel_key(spec->name, "volts_per_unit"),
-                format_number(spec->volts_per_m_s2, 4),
-                format_number(spec->volts_per_m_s2 * k, 3) + " (" + format_number(k, 3) + " x)",
-                std::clamp(1 - kChannelScaleSpread / deviation, 0.0, 1.0));
+    add_calibration_finding(out, *spec, k, std::clamp(1 - kChannelScaleSpread / deviation, 0.0, 1.0));
   }
 }
 
@@ -84,6 +81,64 @@ void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales
                   format_number(sample_rate_hz, 6) + " Hz; a DAQ that really sampled at about " +
                   format_number(sample_rate_hz * std::sqrt(1 + mean), 5) + " Hz would read so)",
               confidence);
+}
+
+std::string unit_mixup(double ratio) {
+  // ratio = the data's calibration over the manifest's (V per m/s²). Each
+  // known factor within 3 % (the scale's spread on correct manifests is
+  // 2.4 %) is named; 10 and g lie 2 % apart, so a ×10 gain step and an
+  // mV/g mix-up are both named when the data cannot tell them apart.
+  constexpr double g = 9.80665;
+  const std::pair<double, const char*> known[] = {
+      {1 / g, "1/g = 1/9.81: a sensitivity in mV/g written as mV per m/s²; give it as sensitivity_mV_per_g"},
+      {g, "g = 9.81: a sensitivity in mV per m/s² written as mV/g; give it as sensitivity_mV_per_m_s2"},
+      {0.1, "1/10: a gain step of 10 (check gain and the amplifier's range)"},
+      {10, "10: a gain step of 10 (check gain and the amplifier's range)"},
+      {1e-3, "1/1000: a value in mV written where V are meant (volts_per_unit is in V per m/s²)"},
+      {1e3, "1000: a value in V written where mV are meant (sensitivity_mV_per_… is in mV)"},
+      {1e-3 / g, "1/(1000 g): a sensitivity in mV/g written as volts_per_unit (V per m/s²); give it as sensitivity_mV_per_g"},
+      {1e3 * g, "1000 g: a value in V per m/s² written as mV/g; give it as volts_per_unit"}};
+  std::string out;
+  for (const auto& [factor, text] : known)
+    if (std::abs(ratio / factor - 1) <= 0.03) out += (out.empty() ? "" : ", or ") + std::string(text);
+  return out;
+}
+
+void add_calibration_finding(SetupCheck& out, const ChannelSpec& channel, double ratio, double confidence) {
+  const double per = channel.calibration_per_volts_per_m_s2;
+  const std::string mixup = unit_mixup(ratio);
+  add_finding(out, "volts_per_unit", channel.name, channel_key(channel.name, channel.calibration_key),
+              format_number(channel.volts_per_m_s2 * per, 4),
+              format_number(channel.volts_per_m_s2 * per * ratio, 3) + " (" + format_number(ratio, 3) + " x" +
+                  (mixup.empty() ? std::string() : ", a unit mix-up or gain step: the factor is " + mixup) + ")",
+              confidence);
+}
+
+void add_rig_file_finding(SetupCheck& out, const std::vector<std::pair<const ChannelSpec*, double>>& scales,
+                          double tolerance, const std::string& rig_file, const std::string& rig_name) {
+  double confidence = 0;
+  for (const SetupFinding& f : out.findings) {
+    if (f.item == "common_scale") return;
+    if (f.item == "volts_per_unit") confidence = std::max(confidence, f.confidence);
+  }
+  std::vector<double> off;
+  std::string each;
+  for (const auto& [spec, k] : scales) {
+    each += (each.empty() ? "" : ", ") + spec->name + " " + format_number(k, 3) + " x";
+    if (std::abs(k - 1) > tolerance) off.push_back(k);
+  }
+  if (off.size() < 2 || confidence <= 0) return;
+  // Different factors: the largest and smallest off-channel differ by more than the tolerance.
+  const auto [lo, hi] = std::minmax_element(off.begin(), off.end());
+  if (*hi / *lo < 1 + tolerance) return;
+  SetupCheck rig;
+  add_finding(rig, "rig_file", "", "rig (the manifest's rig file)",
+              "\"" + rig_file + "\"" + (rig_name.empty() ? std::string() : " ('" + rig_name + "')"),
+              "the accelerometers read the rig's nominal motion at different factors (" + each +
+                  "), as a rig file with other link lengths makes them; check that rig names this rig's file before "
+                  "changing any calibration",
+              confidence);
+  out.findings.insert(out.findings.begin(), std::move(rig.findings.front()));
 }
 
 }  // namespace fourbar

@@ -47,6 +47,31 @@ void add_common_scale_finding(SetupCheck& out, const std::vector<double>& scales
 void add_channel_scale_findings(SetupCheck& out, const std::vector<std::pair<const ChannelSpec*, double>>& scales,
                                 double tolerance);
 
+/// A channel's calibration off by `ratio` (data/manifest of volts per m/s²):
+/// a "volts_per_unit" finding that names the key the manifest used
+/// (volts_per_unit, sensitivity_mV_per_m_s2 or sensitivity_mV_per_g) with
+/// its values in that key's unit, and says when the ratio is a unit mix-up
+/// (unit_mixup()).
+void add_calibration_finding(SetupCheck& out, const ChannelSpec& channel, double ratio, double confidence);
+
+/// "" or the unit mix-up a calibration off by `ratio` is (within 3 %):
+/// g = 9.81 (mV/g given as mV per m/s², or back), 1000 (mV given as V, or
+/// back), 1000 g; and a gain step of 10, which lies within 2 % of g (both
+/// named when both fit).
+std::string unit_mixup(double ratio);
+
+/// Two or more channels (`scales`: every accelerometer judged on its own
+/// link, 1: as the manifest says) read the rig's nominal motion off by more
+/// than `tolerance` and by different factors: each sensor then sees the
+/// wrong rig's kinematics differently (its link, its distance), the
+/// signature of a rig file that is not this rig's. A "rig_file" finding
+/// placed first, naming the manifest's `rig` key before the channels'
+/// calibration findings (which stand only once the rig file is right), with
+/// the highest confidence among them. Not when a common_scale finding
+/// names one common factor already.
+void add_rig_file_finding(SetupCheck& out, const std::vector<std::pair<const ChannelSpec*, double>>& scales,
+                          double tolerance, const std::string& rig_file, const std::string& rig_name);
+
 /// The largest |scale − 1| of a channel on a correct manifest in the
 /// set-up check matrix (bench/setup_check_matrix: 0.0225 with three channels,
 /// 0.0243 with the coupler's alone), rounded up.

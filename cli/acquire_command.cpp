@@ -49,7 +49,8 @@ Manifest (TOML) keys: rig, clearance_mm, full_scale_V, adc_range_V,
 sample_rate_hz, time_column, crank_direction (ccw|cw), notes; per
 [[channel]]: index | column, name, role (coupler_tangential coupler_normal
 rocker_tangential rocker_normal crank_pulse crank_index encoder_a encoder_b
-ignore), sensitivity_mV_per_m_s2 + gain | volts_per_unit, axis_sign,
+ignore), sensitivity_mV_per_m_s2 + gain | sensitivity_mV_per_g + gain |
+volts_per_unit, axis_sign,
 position_mm (from the crank pin A on the coupler, from the pivot O4 on the
 rocker), offset_mm, ac_coupled + highpass_hz; crank_pulse: polarity
 (rising|falling), threshold_low_V + threshold_high_V, crank_offset_deg,

@@ -188,6 +188,16 @@ int run_fit(const Invocation& inv) {
 
   const TheorySettings& t = settings.theory;
   const ContactParameters prior{t.restitution, t.contact, t.friction_coefficient};
+  // Progress through the simulations (the search's, the profile's, the runs for a):
+  // the total is the usual count, the label the count so far.
+  const std::size_t expected = expected_simulations(per_recording ? 1 : targets.size(), o) * (per_recording ? targets.size() : 1);
+  Progress sims("fit: simulations", expected, !quiet);
+  std::size_t simulated = 0;
+  o.on_simulation = [&] {
+    ++simulated;
+    sims.set_label("fit: " + std::to_string(simulated) + " simulations (about " + std::to_string(expected) + ")");
+    sims.update(std::min(simulated, expected > 0 ? expected - 1 : 0));
+  };
   nlohmann::json result;
   // The model-family check at the fitted parameters (compare/model_family.hpp):
   // a recording with energy the model lacks rejects the family.
@@ -214,6 +224,13 @@ int run_fit(const Invocation& inv) {
     std::cout << "chi2/term " << format_number(f.chi2 / std::max(1, f.terms), 3) << " (prior "
               << format_number(f.chi2_prior / std::max(1, f.terms), 3) << "), " << f.simulations << " simulations, "
               << format_number(f.seconds, 3) << " s\n";
+    // The prior inside the fit's own noise: χ² at the prior less than Δ (the
+    // 95 % threshold that bounds the intervals) above the fit's.
+    if (f.interval_delta > 0 && f.chi2_prior - f.chi2 < f.interval_delta)
+      std::cout << "  the fitted chi2 is within noise of the prior's (prior - fit = " << format_number(f.chi2_prior - f.chi2, 3)
+                << " < " << format_number(f.interval_delta, 3)
+                << ", the 95 % threshold of the intervals): the prior fits these recordings as well; a lower or higher "
+                   "chi2 or RMS after the fit is noise, not a better or worse model\n";
     for (const ParameterEstimate& p : f.parameters)
       if (!p.identifiable) std::cout << "  " << parameter_advice(p) << "\n";
     // a with its standard error: from a few dozen turns it is noise-limited.
@@ -244,12 +261,14 @@ int run_fit(const Invocation& inv) {
     }
   } else {
     FitResult f = fit_contact_parameters(targets, prior, o);
+    sims.finish();
     std::vector<std::size_t> all(targets.size());
     for (std::size_t r = 0; r < all.size(); ++r) all[r] = r;
     check_family(f, all);
     report("session", f);
     result = fit_to_json(f, targets, prior, o);
   }
+  sims.finish();
   end_described_cases();  // the other ranks stop serving
   result["mpi_ranks"] = mpi.size();
   result["session"] = session.string();

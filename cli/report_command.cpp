@@ -22,14 +22,16 @@ manifest's clearance (e, mu from session.toml, default e = 0.5 smooth), on the
 same crank-angle grid, and compared (docs/report.md).
 
 Writes OUT (default SESSION_DIR/report/report.html), and beside it
-summary.json, summary.csv (one row per recording), session_severity.csv and
+summary.json, summary.csv (one row per recording: the verdict, the a it judges
+by with its standard error and kind, then each verdict part's level first),
+session_severity.csv (with each recording's status) and
 series/<recording>*.csv (their provenance is in summary.json). Results are
 cached in <out dir>/.fourbar-cache by the SHA-256 of the inputs and settings:
 a second run with unchanged inputs does not recompute. Any other file in
 the folder, and a manifest without its recording, is named in a warning.
 
 Optional SESSION_DIR/session.toml (strict; unknown keys are errors):
-  title, notes;
+  title, notes; date, operator, rig_id, bearing (text, on the first page);
   [analysis] grid_points_per_rev, low_hz, high_hz, mains_hz, mains_width_hz,
              window ("kaiser:8"), transition_hz, guard_revolutions,
              integration ("spectral" | "closed_trapezoid" | "trapezoid");

@@ -368,6 +368,8 @@ int write_linkage_run(const Scene& scene, const LinkageRun& run, const std::file
             << json_path.string() << "\n";
   return 0;
 }
+/// Warm-up turns of the report's matched theory ([theory] warmup_revolutions' default).
+constexpr int kReportWarmupTurns = 20;
 
 int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::filesystem::path& dir,
                         const Provenance& prov) {
@@ -403,6 +405,14 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
   json.commit();
   std::cout << "wrote " << csv_path.string() << " (" << run.series.rows() << " rows x " << run.series.names.size()
             << " columns)" << extra << " and " << json_path.string() << "\n";
+  // Counts from the turns after the start are the start transient: the
+  // report's matched theory runs kReportWarmupTurns turns first.
+  if (!scene.clearance.steady_state && scene.revolutions < kReportWarmupTurns)
+    std::cerr << "fourbar: note: sim: " << run.impacts.size() << " impacts in " << scene.revolutions
+              << (scene.revolutions == 1 ? " turn" : " turns")
+              << " from the start: the transient after the start, not the steady response (the report's model runs "
+              << kReportWarmupTurns << " warm-up turns before it counts); for steady figures set [clearance] "
+                 "steady_state = true, or use fourbar sweep\n";
   return 0;
 }
 

@@ -41,11 +41,15 @@ Sweep file keys:
   crank_speed_rpm       array of crank speeds in rpm (default: the scene's)
   restitution           array of coefficients of restitution (default: the scene's)
   friction_coefficient  array of Coulomb mu (base scene must be stick-slip)
-  revolutions           turns counted per grid point (default 10)
-  skip_revolutions      start-up turns run first and not counted (default 2)
+  revolutions           turns counted per grid point (default 20, as the report's model)
+  skip_revolutions      start-up turns run first and not counted (default 20, the
+                        report's warm-up); fewer: a note says the counts hold the
+                        transient after the start
 
 Columns: radial_mm, crank_speed_rpm, restitution, friction_coefficient,
-impacts_per_rev (n), sum_normal_impulse_per_rev_Ns (SigmaF), impact_index_Ns
+impacts_per_rev (n), impacts_per_rev_standard_error (the spread over the
+counted turns / sqrt(turns)), sum_normal_impulse_per_rev_Ns (SigmaF),
+sum_normal_impulse_per_rev_standard_error_Ns, impact_index_Ns
 (I_n = SigmaF/n, 0 when n = 0), contact_losses_per_rev, following_share,
 energy_residual_rel, max_penetration_rel, status ("ok" or "failed"), error
 (why a point failed; its statistics are then empty). The table's provenance
@@ -89,15 +93,18 @@ std::string inputs_fingerprint(const std::string& sweep_file, const Scene& base,
 void write_table(const std::filesystem::path& out_path, const Provenance& prov, const std::vector<SweepPoint>& points) {
   CsvWriter csv(out_path, prov.csv_comment_lines(),
                 {"radial_mm", "crank_speed_rpm", "restitution", "friction_coefficient", "impacts_per_rev",
-                 "sum_normal_impulse_per_rev_Ns", "impact_index_Ns", "contact_losses_per_rev", "following_share",
-                 "energy_residual_rel", "max_penetration_rel", "status", "error"});
+                 "impacts_per_rev_standard_error", "sum_normal_impulse_per_rev_Ns",
+                 "sum_normal_impulse_per_rev_standard_error_Ns", "impact_index_Ns", "contact_losses_per_rev",
+                 "following_share", "energy_residual_rel", "max_penetration_rel", "status", "error"});
   for (const SweepPoint& p : points) {
     const double values[] = {units::m_to_mm(p.radial_clearance_m),
                              units::rad_s_to_rpm(p.crank_speed_rad_s),
                              p.restitution,
                              p.friction_coefficient,
                              p.impacts_per_rev,
+                             p.impacts_per_rev_standard_error,
                              p.sum_normal_impulse_per_rev_Ns,
+                             p.sum_normal_impulse_per_rev_standard_error_Ns,
                              p.impact_index_Ns,
                              p.contact_losses_per_rev,
                              p.following_share,
@@ -149,6 +156,16 @@ int run_sweep(const Invocation& inv) {
     return 0;
   }
 
+  // Counts from the start transient or from few turns are said, not left to be found out.
+  const SweepGrid defaults;
+  if (grid.skip_revolutions < defaults.skip_revolutions)
+    std::cerr << "fourbar: note: sweep: " << sweep_file << ": skip_revolutions = " << grid.skip_revolutions
+              << ": the counted turns start within the transient after the start (the report's model runs "
+              << defaults.skip_revolutions << " warm-up turns first); its figures are not the steady response\n";
+  if (grid.revolutions < defaults.revolutions)
+    std::cerr << "fourbar: note: sweep: " << sweep_file << ": " << grid.revolutions
+              << " counted turns per point (the report's model averages " << defaults.revolutions
+              << "): see the _standard_error columns for how uncertain each figure is\n";
   if (out_file.empty()) out_file = (std::filesystem::path("out") / std::filesystem::path(sweep_file).stem()).string() + ".csv";
   const std::filesystem::path out_path(out_file);
   if (out_path.has_parent_path()) ensure_output_dir(out_path.parent_path());

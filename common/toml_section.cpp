@@ -1,7 +1,10 @@
 #include "common/toml_section.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <sstream>
 
 #include "common/error.hpp"
@@ -41,7 +44,55 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+/// Line `line` (1-based) of `file`, or empty.
+std::string line_of(const std::filesystem::path& file, std::size_t line) {
+  std::ifstream in(file);
+  std::string text;
+  for (std::size_t i = 0; i < line && std::getline(in, text); ++i) {
+  }
+  return in ? text : std::string();
+}
+
+std::string trimmed(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r");
+  return std::string(s.substr(b, e - b + 1));
+}
+
 }  // namespace
+
+std::string toml_slip_hint(std::string_view line) {
+  const auto eq = line.find('=');
+  if (eq == std::string_view::npos) return {};
+  const std::string key = trimmed(line.substr(0, eq));
+  std::string value(line.substr(eq + 1));
+  if (const auto hash = value.find('#'); hash != std::string::npos) value.resize(hash);
+  value = trimmed(value);
+  if (key.empty() || value.empty() || key.find_first_of("[\"'") != std::string::npos) return {};
+  if (value.find_first_of("\"'[{") != std::string::npos) return {};
+  std::string lower = value;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (lower == "yes" || lower == "on" || lower == "y")
+    return "write " + key + " = true (TOML's yes is true, lower case, without quotes)";
+  if (lower == "no" || lower == "off" || lower == "n")
+    return "write " + key + " = false (TOML's no is false, lower case, without quotes)";
+  if (lower == "true" || lower == "false")
+    return "write " + key + " = " + lower + " (TOML's true and false are lower case)";
+  // A number followed by a unit: "10 V", "0.5Hz".
+  std::size_t n = 0;
+  while (n < value.size() && (std::isdigit(static_cast<unsigned char>(value[n])) || std::strchr("+-.eE_", value[n]))) ++n;
+  const auto digit = [&](std::size_t i) { return i < value.size() && std::isdigit(static_cast<unsigned char>(value[i])); };
+  if (n > 0 && (digit(0) || (std::strchr("+-.", value[0]) && digit(1)))) {
+    const std::string number = trimmed(std::string_view(value).substr(0, n));
+    const std::string unit = trimmed(std::string_view(value).substr(n));
+    if (!unit.empty() && !number.empty())
+      return "write " + key + " = " + number + " (a number alone: the unit, " + unit +
+             ", is in the key's name or the documentation, not in the value)";
+  }
+  // A bare word: text goes in double quotes.
+  return "write " + key + " = \"" + value + "\" (text goes in double quotes)";
+}
 
 std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates) {
   std::optional<std::string> best;
@@ -64,7 +115,10 @@ toml::table parse_toml_file(const std::filesystem::path& file) {
     return toml::parse_file(file.string());
   } catch (const toml::parse_error& e) {
     std::ostringstream os;
-    os << file.string() << ":" << e.source().begin.line << ": not valid TOML: " << e.description();
+    os << file.string() << ":" << e.source().begin.line << ": not valid TOML";
+    const std::string hint = toml_slip_hint(line_of(file, e.source().begin.line));
+    if (!hint.empty()) os << ": " << hint;
+    os << " (" << e.description() << ")";
     throw InputError(os.str());
   }
 }

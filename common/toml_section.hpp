@@ -19,6 +19,12 @@ namespace fourbar {
 /// Parses a TOML file; throws InputError naming file and line on failure.
 toml::table parse_toml_file(const std::filesystem::path& file);
 
+/// What to type instead of a TOML slip on `line` ("key = value"): a bare
+/// word is text in double quotes (`crank_direction = ccw` → `= "ccw"`),
+/// yes/no are true/false, a number carries no unit (`10 V` → `10`). Empty
+/// when the line is no such slip. parse_toml_file's errors say it.
+std::string toml_slip_hint(std::string_view line);
+
 class TomlSection {
  public:
   /// `prefix` is the dotted path of `table` inside the file ("" for the root).

@@ -195,13 +195,19 @@ double clearance_effect_ratio(const std::vector<RecordingTarget>& targets) {
   return best;
 }
 
+std::size_t expected_simulations(std::size_t recordings, const FitOptions& o) {
+  const int profile = o.profile_points_e * (o.fit_friction ? o.profile_points_mu : 1);
+  const int points = o.global_evaluations + o.local_evaluations + profile + o.replicates + 1;  // + the prior
+  return recordings * static_cast<std::size_t>(std::max(1, points) + 2);                       // + the runs for a
+}
+
 FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, const ContactParameters& prior,
                                  const FitOptions& o) {
   validate_fit_options(o);
   if (targets.empty()) throw InputError("fit: no recordings to fit");
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
-  SimulationCache cache(targets, {o.warmup_turns, o.simulated_turns, o.tolerance, std::max(1u, o.threads)});
+  SimulationCache cache(targets, {o.warmup_turns, o.simulated_turns, o.tolerance, std::max(1u, o.threads), o.on_simulation});
   FitResult out;
 
   // Global stage (DIRECT-L over the box), then the local one (BOBYQA).
@@ -337,7 +343,8 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   out.magnification_turns =
       o.magnification_turns > 0 ? o.magnification_turns
                                 : kMagnificationTurnsPerMeasuredTurn * static_cast<int>(std::max<std::size_t>(max_turns, 1));
-  SimulationCache long_runs(targets, {o.warmup_turns, out.magnification_turns, o.tolerance, std::max(1u, o.threads)});
+  SimulationCache long_runs(targets,
+                            {o.warmup_turns, out.magnification_turns, o.tolerance, std::max(1u, o.threads), o.on_simulation});
   long_runs.ensure({best, prior});
   out.magnification_simulations = long_runs.simulations();
   for (std::size_t r = 0; r < targets.size(); ++r) {

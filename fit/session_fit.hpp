@@ -31,6 +31,7 @@
 // interval wider than `identifiable_width` of its box is reported as not
 // identifiable. The raw profiles (grid of the box) are kept for the charts.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,7 +70,14 @@ struct FitOptions {
   /// Turns of the runs at the fit and the prior that give the magnification
   /// factor a (0: kMagnificationTurnsPerMeasuredTurn × the most measured turns).
   int magnification_turns = 0;
+  /// Called after each simulation (progress for `fourbar fit`); may be empty.
+  std::function<void()> on_simulation;
 };
+
+/// About how many simulations a fit of `recordings` recordings runs (the
+/// global and local search, the profile grid, the replicates and the runs
+/// for a): the total of `fourbar fit`'s progress bar.
+std::size_t expected_simulations(std::size_t recordings, const FitOptions& options);
 
 /// Throws InputError naming the option when the box is backwards or out of
 /// range, or a count is not positive.

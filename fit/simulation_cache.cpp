@@ -143,7 +143,10 @@ void SimulationCache::ensure(const std::vector<ContactParameters>& points) {
   const auto t0 = std::chrono::steady_clock::now();
   const CaseQueueStats stats = run_described_cases(
       cases, settings_.threads, [&](const std::string& description) { return simulate_described(targets_, description); },
-      [&](std::size_t i, std::string&& bytes) { cache_[key(todo[i].first, todo[i].second)] = decode(bytes); });
+      [&](std::size_t i, std::string&& bytes) {
+        cache_[key(todo[i].first, todo[i].second)] = decode(bytes);
+        if (settings_.on_simulation) settings_.on_simulation();
+      });
   compute_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   simulations_ += static_cast<int>(todo.size());
   computed_here_ += static_cast<int>(stats.computed_here);

@@ -9,6 +9,7 @@
 // same statistics.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <tuple>
@@ -23,6 +24,9 @@ struct SimulationSettings {
   int simulated_turns = 50;
   double tolerance = 1e-8;
   unsigned threads = 1;
+  /// Called after each simulation arrives (one call at a time, maybe from a
+  /// worker thread): progress for `fourbar fit`; may be empty.
+  std::function<void()> on_simulation;
 };
 
 /// A simulation's outcome: the statistics, or why the model failed there.

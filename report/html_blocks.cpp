@@ -45,10 +45,32 @@ void chart_box(std::ostringstream& h, const std::string& id, const std::string& 
     << "-legend\"></div></div>";
 }
 
+std::string human_label(const std::string& key) {
+  // Unit suffixes as a reader writes them; the longest first.
+  static const std::pair<const char*, const char*> kUnits[] = {
+      {"_rad_s2", " (rad/s²)"}, {"_rad_s", " (rad/s)"}, {"_m_s2", " (m/s²)"}, {"_rpm", " (rpm)"}, {"_deg", " (°)"},
+      {"_pct", " (%)"},         {"_hz", " (Hz)"},       {"_Hz", " (Hz)"},     {"_mm", " (mm)"},   {"_Ns", " (N·s)"},
+      {"_Nm", " (N·m)"},        {"_s", " (s)"},         {"_V", " (V)"},       {"_rel", " (relative)"}};
+  std::string unit, stem = key;
+  for (const auto& [suffix, text] : kUnits) {
+    const std::string sfx = suffix;
+    if (stem.size() > sfx.size() && stem.compare(stem.size() - sfx.size(), sfx.size(), sfx) == 0) {
+      stem.resize(stem.size() - sfx.size());
+      unit = text;
+      break;
+    }
+  }
+  for (char& c : stem)
+    if (c == '_') c = ' ';
+  return stem + unit;
+}
+
 void settings_rows(std::ostringstream& h, const json& j, const std::string& prefix) {
   for (const auto& [k, v] : j.items()) {
-    const std::string key = prefix.empty() ? k : prefix + "." + k;
+    // People read the labels: words and units, the parts joined by " › " (summary.json keeps the keys).
+    const std::string key = prefix.empty() ? human_label(k) : prefix + " › " + human_label(k);
     if (v.is_object() && !v.empty()) settings_rows(h, v, key);
+    else if ((v.is_object() || v.is_array()) && v.empty()) continue;  // nothing to show ("theory by recording {}")
     else h << "<tr><td class=\"l\">" << html_escape(key) << "</td><td class=\"l\">" << fmt(v, "%.6g") << "</td></tr>";
   }
 }

@@ -18,7 +18,11 @@ void chart_box(std::ostringstream& h, const std::string& id, const std::string& 
 /// Inline SVG: impact directions on a part, dots at the contact angle, radius by impulse.
 std::string polar_svg(const nlohmann::json& impacts, const char* key, const std::string& title);
 
-/// One table row per leaf of `j`, keys joined with '.' under `prefix`.
+/// A record key as a label for people: "speed_std_rpm" → "speed std (rpm)".
+std::string human_label(const std::string& key);
+
+/// One table row per leaf of `j` (empty tables and arrays left out), the
+/// keys as human_label()s joined with " › " under `prefix`.
 void settings_rows(std::ostringstream& h, const nlohmann::json& j, const std::string& prefix);
 
 /// Input files: role, path, bytes and SHA-256.

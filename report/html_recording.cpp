@@ -53,7 +53,8 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
   h << "<table><tr><th class=\"l\">crank speed</th><th class=\"l\">clearance</th><th class=\"l\">revolutions averaged</th>"
        "<th class=\"l\">theory</th><th class=\"l\">simulated n / ΣF / I_n per turn</th></tr><tr><td class=\"l\">"
     << fmt(op["speed_rpm"], "%.2f") << " rpm (" << fmt(op["direction"]) << ", std " << fmt(at(r, {"acquisition", "speed_rpm", "std"}), "%.2f")
-    << ")</td><td class=\"l\">" << fmt(op["clearance_mm"], "%.4g") << " mm</td><td class=\"l\">" << fmt(op["revolutions_averaged"], "%.0f")
+    << ")</td><td class=\"l\">" << fmt(op["clearance_mm"], "%.4g") << " mm ("
+    << html_escape(op.value("clearance_source", std::string("manifest"))) << ")</td><td class=\"l\">" << fmt(op["revolutions_averaged"], "%.0f")
     << "</td><td class=\"l\">e = " << fmt(th["settings"]["restitution"]) << ", " << fmt(th["settings"]["contact"])
     << ", μ = " << fmt(th["settings"]["friction_coefficient"]) << "; " << fmt(th["settings"]["warmup_revolutions"], "%.0f")
     << " warm-up + " << fmt(th["settings"]["averaged_revolutions"], "%.0f") << " averaged turns</td><td class=\"l\">"
@@ -84,8 +85,8 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
       << angles(m["simulated_bursts_deg"]) << "</td></tr>";
   }
   h << "</table>";
-  // Overlays.
-  h << "<div class=\"grid2\">";
+  // Overlays (the first, α3, is the one the short print keeps).
+  h << "<div class=\"grid2 overlays\">";
   for (const auto& [q, s] : r["series"].items()) {
     if (!s.contains("measured")) continue;
     chart_box(h, "r" + std::to_string(ri) + "-" + q, html_escape(quantity_label(q)) + ": measured, clearance model, nominal",

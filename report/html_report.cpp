@@ -1,8 +1,10 @@
 #include "report/html_report.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "common/json_text.hpp"
 #include "report/html_blocks.hpp"
@@ -34,6 +36,30 @@ std::string report_script() {
   for (const char* part : {report_core_js, report_recording_charts_js, report_session_charts_js, report_views_js, report_fit_charts_js}) s += part;
   s += "scriptsDone = true; allDrawn();\n})();\n";  // charts drawn once all scripts ran (none: 0)
   return s;
+}
+
+/// The session's record on the first page: date, operator, rig and bearing
+/// (session.toml), and the rig file(s) the recordings were analysed with.
+void session_record_table(std::ostringstream& h, const json& data) {
+  const json md = data.value("metadata", json::object());
+  auto item = [&](const char* key) { return md.value(key, std::string()); };
+  std::vector<std::string> rigs;
+  for (const json& r : data["recordings"]) {
+    const json& rig = r.contains("analysis") ? r["analysis"].value("rig", json()) : json();
+    if (rig.is_string() && !rig.get<std::string>().empty() &&
+        std::find(rigs.begin(), rigs.end(), rig.get<std::string>()) == rigs.end())
+      rigs.push_back(rig.get<std::string>());
+  }
+  std::string rig_text;
+  for (const std::string& r : rigs) rig_text += (rig_text.empty() ? "" : "; ") + r;
+  auto or_missing = [](const std::string& v) {
+    return v.empty() ? std::string("<span class=\"note\">not given (session.toml)</span>") : html_escape(v);
+  };
+  h << "<table class=\"session-record\"><tr><th class=\"l\">date</th><th class=\"l\">operator</th><th class=\"l\">rig</th>"
+       "<th class=\"l\">bearing</th><th class=\"l\">rig file used</th></tr><tr><td class=\"l\">"
+    << or_missing(item("date")) << "</td><td class=\"l\">" << or_missing(item("operator")) << "</td><td class=\"l\">"
+    << or_missing(item("rig_id")) << "</td><td class=\"l\">" << or_missing(item("bearing")) << "</td><td class=\"l\">"
+    << (rig_text.empty() ? std::string("–") : html_escape(rig_text)) << "</td></tr></table>";
 }
 
 }  // namespace
@@ -68,11 +94,16 @@ std::string render_html_report(const json& session_in, const std::vector<Recordi
     << html_escape(data["title"]) << " — fourbar report</title><style>" << css << "</style><style>" << report_css << "</style><style>" << report_views_css << "</style></head><body>";
   h << "<header><h1>" << html_escape(data["title"]) << "</h1><p class=\"note\">fourbar " << html_escape(data["version"]) << " · <code>"
     << html_escape(data["command"]) << "</code> · session folder <code>" << html_escape(data["session_dir"]) << "</code></p>";
+  session_record_table(h, data);
   if (!data["notes"].get<std::string>().empty()) h << "<p>" << html_escape(data["notes"]) << "</p>";
   h << "<nav><a href=\"#summary\">summary</a><a href=\"#session\">session</a>";
   if (data.contains("fit")) h << "<a href=\"#fit\">fit</a>";
   for (std::size_t i = 0; i < recs.size(); ++i) h << "<a href=\"#rec" << i << "\">" << html_escape(recs[i]["name"]) << "</a>";
-  h << "<a href=\"#settings\">settings</a></nav></header><main>";
+  h << "<a href=\"#settings\">settings</a><a href=\"#print-short\" title=\"then print: the summary, the verdicts and one "
+       "overlay per recording\">short print</a><a href=\"#\">full print</a></nav></header>";
+  // The short print (report.css): with #print-short in the address the print
+  // keeps the summary, the verdicts and the α3 overlay of each recording.
+  h << "<span id=\"print-short\"></span><main>";
   h << "<div id=\"js-errors\" class=\"err\"><b>Script errors</b><ul></ul></div>";
   summary_section(h, data);
   severity_section(h, data);

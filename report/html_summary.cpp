@@ -6,6 +6,7 @@
 #include "report/html_text.hpp"
 #include "report/html_verdict.hpp"
 #include "report/setup_check_record.hpp"
+#include "report/verdict_table.hpp"
 
 namespace fourbar {
 
@@ -22,15 +23,17 @@ void summary_section(std::ostringstream& h, const json& data) {
     << (failed ? "<span class=\"failed\">" + std::to_string(failed) + " failed</span>" : std::string("all analysed"))
     << ". Theory: clearance model and nominal mechanism at each recording's measured mean crank speed and clearance. "
        "a = RMS(model − nominal) / RMS(measured − nominal) on α3 (thesis sec. 8.1): how many times more violent the model is "
-       "than the measurement.</p><table><tr><th class=\"l\">recording</th><th class=\"l\">status</th><th>speed (rpm)</th>"
-       "<th>clearance (mm)</th><th>revolutions</th><th>a time</th><th>a spectral</th><th>corr. α3 meas/model</th>"
-       "<th>n per turn</th><th>ΣF per turn (N·s)</th><th>I_n (N·s)</th></tr>";
+       "than the measurement. The verdict judges by one a (its kind: scatter, spectral or time, docs/verdict.md); the "
+       "other factors are diagnostics.</p><table class=\"summary\"><tr><th colspan=\"6\"></th><th colspan=\"6\" "
+       "class=\"group\">diagnostics</th></tr><tr><th class=\"l\">recording</th><th class=\"l\">status</th>"
+       "<th class=\"l\">a (verdict)</th><th>speed (rpm)</th><th>clearance (mm)</th><th>revolutions</th><th>a time</th>"
+       "<th>a spectral</th><th>corr. α3 meas/model</th><th>n per turn</th><th>ΣF per turn (N·s)</th><th>I_n (N·s)</th></tr>";
   for (std::size_t i = 0; i < recs.size(); ++i) {
     const json& r = recs[i];
     h << "<tr><td class=\"l\"><span class=\"swatch\" data-rec=\"" << i << "\"></span><a href=\"#rec" << i << "\">"
       << html_escape(r["name"]) << "</a></td>";
     if (!is_analysed(r)) {
-      h << "<td class=\"l failed\" colspan=\"10\">failed: " << html_escape(r["error"]) << "</td></tr>";
+      h << "<td class=\"l failed\" colspan=\"11\">failed: " << html_escape(r["error"]) << "</td></tr>";
       continue;
     }
     const json m = r["metrics"].contains("alpha3_rad_s2") ? r["metrics"]["alpha3_rad_s2"] : json::object();
@@ -38,7 +41,8 @@ void summary_section(std::ostringstream& h, const json& data) {
       return m.empty() ? std::string("–") : fmt(b ? m[a][b] : m[a], f);
     };
     const json& sv = r["theory"]["severity"];
-    h << (r["status"] == "ok" ? "<td class=\"l ok\">ok" : "<td class=\"l failed\">check set-up") << "</td><td>"
+    h << (r["status"] == "ok" ? "<td class=\"l ok\">ok" : "<td class=\"l failed\">check set-up") << "</td><td class=\"l num\">"
+      << html_escape(verdict_a_text(r.value("verdict", json()))) << "</td><td>"
       << fmt(r["operating_point"]["speed_rpm"], "%.2f") << "</td><td>"
       << fmt(r["operating_point"]["clearance_mm"], "%.4g") << "</td><td>" << fmt(r["operating_point"]["revolutions_averaged"], "%.0f")
       << "</td><td>" << mm("magnification", "time_domain", "%.3g") << "</td><td>" << mm("magnification", "spectral", "%.3g")

@@ -3,18 +3,14 @@
 #include <vector>
 
 #include "report/html_text.hpp"
+#include "report/verdict.hpp"
+#include "report/verdict_table.hpp"
 
 namespace fourbar {
 
 using nlohmann::json;
 
 namespace {
-
-constexpr const char* kParts[][2] = {{"setup", "set-up"},
-                                     {"measurement", "measurement"},
-                                     {"clearance_effect", "clearance effect"},
-                                     {"model_family", "model family"},
-                                     {"model_agreement", "model agreement"}};
 
 std::string level_span(const json& level, const std::string& text) {
   const std::string l = level.is_string() ? level.get<std::string>() : "not_judged";
@@ -27,19 +23,22 @@ std::string level_span(const json& level, const std::string& text) {
 }  // namespace
 
 void verdict_summary_table(std::ostringstream& h, const json& records) {
-  h << "<table class=\"verdict\"><tr><th class=\"l\">verdict</th><th class=\"l\">overall</th>";
-  for (const auto& p : kParts) h << "<th class=\"l\">" << p[1] << "</th>";
+  h << "<table class=\"verdict\"><tr><th class=\"l\">recording</th><th class=\"l\">verdict</th><th class=\"l\">a (judged by)</th>";
+  for (const VerdictPartInfo& p : verdict_parts()) h << "<th class=\"l\">" << p.label << "</th>";
   h << "</tr>";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const json& r = records[i];
     h << "<tr><td class=\"l\"><a href=\"#rec" << i << "\">" << html_escape(r.value("name", "")) << "</a></td>";
     if (!r.contains("verdict")) {
-      h << "<td class=\"l\" colspan=\"6\">" << level_span("problem", "failed: not analysed") << "</td></tr>";
+      h << "<td class=\"l\" colspan=\"" << verdict_parts().size() + 2 << "\">" << level_span("problem", "failed: not analysed")
+        << "</td></tr>";
       continue;
     }
     const json& v = r["verdict"];
-    h << "<td class=\"l\">" << level_span(v["overall"], v["overall"].get<std::string>()) << "</td>";
-    for (const auto& p : kParts) h << "<td class=\"l\">" << level_span(v[p[0]]["level"], v[p[0]]["words"].get<std::string>()) << "</td>";
+    h << "<td class=\"l\">" << level_span(v["overall"], v["overall"].get<std::string>()) << "</td><td class=\"l num\">"
+      << html_escape(verdict_a_text(v)) << "</td>";
+    for (const VerdictPartInfo& p : verdict_parts())
+      h << "<td class=\"l\">" << level_span(v[p.key]["level"], v[p.key]["words"].get<std::string>()) << "</td>";
     h << "</tr>";
   }
   h << "</table>";
@@ -50,10 +49,10 @@ std::string verdict_box(const json& r) {
   const json& v = r["verdict"];
   std::ostringstream h;
   h << "<div class=\"verdict\"><b>Verdict: " << level_span(v["overall"], v["overall"].get<std::string>())
-    << "</b><table>";
-  for (const auto& p : kParts)
-    h << "<tr><td class=\"l\">" << p[1] << "</td><td class=\"l\">" << level_span(v[p[0]]["level"], v[p[0]]["level"].get<std::string>())
-      << "</td><td class=\"l\">" << html_escape(v[p[0]]["sentence"].get<std::string>()) << "</td></tr>";
+    << "</b> — a " << html_escape(verdict_a_text(v)) << "<table>";
+  for (const VerdictPartInfo& p : verdict_parts())
+    h << "<tr><td class=\"l\">" << p.label << "</td><td class=\"l\">" << level_span(v[p.key]["level"], v[p.key]["level"].get<std::string>())
+      << "</td><td class=\"l\">" << html_escape(v[p.key]["sentence"].get<std::string>()) << "</td></tr>";
   h << "</table></div>";
   return h.str();
 }

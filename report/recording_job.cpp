@@ -179,6 +179,7 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
                                                                has_top ? a.filter.high_hz : 0.0, family));
       r["model_family"]["quantity"] = std::string(column_name(q));
     }
+    r["operating_point"]["clearance_source"] = a.clearance_from_rig ? "rig file (no clearance_mm in the manifest)" : "manifest";
     if (fitted) {
       // The same theory path at the fitted contact parameters.
       const MatchedTheory tf = theory_at(*fitted);

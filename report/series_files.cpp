@@ -118,7 +118,14 @@ void write_session_series(const json& session, const std::filesystem::path& out_
                 {"clearance_mm", "speed_rpm", "measured_alpha3_fluctuation_rms_rad_s2",
                  "measured_alpha4_fluctuation_rms_rad_s2", "simulated_alpha3_fluctuation_rms_rad_s2",
                  "impacts_per_rev", "sum_normal_impulse_per_rev_Ns", "impact_index_Ns", "magnification_alpha3",
-                 "recording"});
+                 "recording", "status"});
+  // Each point's recording status: "ok", or "check set-up" when the set-up
+  // check found a likely manifest mistake (its numbers are not to be trusted).
+  auto status_of = [&session](const std::string& name) {
+    for (const json& r : session["recordings"])
+      if (r.value("name", "") == name) return r.value("status", "");
+    return std::string();
+  };
   for (const json& g : session["severity"]["by_speed"])
     for (const json& p : g["points"]) {
       // The clearance as the manifest gives it (0.0254, not 0.025400000000000002 after mm -> m -> mm).
@@ -128,6 +135,7 @@ void write_session_series(const json& session, const std::filesystem::path& out_
                               "impact_index_Ns", "magnification_alpha3"})
         v.push_back(cell(p[key]));
       v.push_back(p["recording"].get<std::string>());
+      v.push_back(status_of(v.back()));
       sev.text_row(v);
     }
   sev.commit();

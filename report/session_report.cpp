@@ -238,6 +238,8 @@ ReportOutcome run_session_report(const ReportOptions& o) {
                   {"session_dir", o.session_dir.string()},
                   {"title", settings.title},
                   {"notes", settings.notes},
+                  {"metadata",
+                   {{"date", settings.date}, {"operator", settings.operator_name}, {"rig_id", settings.rig_id}, {"bearing", settings.bearing}}},
                   {"settings", settings_json},
                   {"settings_file", settings.file.empty() ? json(nullptr) : file_entry("session", settings.file, o.session_dir)},
                   {"recordings", records},

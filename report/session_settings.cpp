@@ -1,5 +1,7 @@
 #include "report/session_settings.hpp"
 
+#include <cstdio>
+
 #include "report/comparison_record.hpp"
 
 #include <algorithm>
@@ -125,6 +127,10 @@ nlohmann::json SessionSettings::to_json() const {
   return {{"file", file.empty() ? nlohmann::json(nullptr) : nlohmann::json(file.filename().string())},
           {"title", title},
           {"notes", notes},
+          {"date", date},
+          {"operator", operator_name},
+          {"rig_id", rig_id},
+          {"bearing", bearing},
           {"analysis", a},
           {"theory", theory_settings_json(theory)},
           {"model_family", {{"band_width_hz", model_family.band_width_hz}, {"max_frequency_hz", model_family.max_frequency_hz}}},
@@ -143,6 +149,17 @@ SessionSettings load_session_settings(const std::filesystem::path& dir) {
   TomlSection root(table, file);
   if (auto t = root.optional_string("title")) s.title = *t;
   if (auto n = root.optional_string("notes")) s.notes = *n;
+  // The date is text as the operator writes it; a bare TOML date is asked for in quotes.
+  if (const auto d = table["date"].value<toml::date>()) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%04d-%02d-%02d", static_cast<int>(d->year), static_cast<int>(d->month),
+                  static_cast<int>(d->day));
+    root.fail("date", std::string("is a TOML date; write it as text: date = \"") + text + "\"");
+  }
+  if (auto ds = root.optional_string("date")) s.date = *ds;
+  if (auto o = root.optional_string("operator")) s.operator_name = *o;
+  if (auto r = root.optional_string("rig_id")) s.rig_id = *r;
+  if (auto b = root.optional_string("bearing")) s.bearing = *b;
   if (auto a = root.optional_section("analysis")) {
     read_analysis(*a, s.analysis);
     a->finish();

@@ -6,6 +6,10 @@
 //
 //   title = "Coupler bearing, March series"      # report title (default: folder name)
 //   notes = "..."
+//   date = "2026-03-14"      # text, as the operator writes it; with operator, rig_id,
+//   operator = "A. Tech"     # bearing: the session's record, on the report's
+//   rig_id = "bench 2"       # first page (what a supervisor asks for)
+//   bearing = "bush #7, bronze, 12 mm pin"
 //   [analysis]    points_per_rev, low_hz, high_hz, mains_hz, mains_width_hz,
 //                 window ("kaiser:8"), transition_hz, guard_revolutions,
 //                 integration ("spectral" | "closed_trapezoid" | "trapezoid")
@@ -41,6 +45,9 @@ struct SessionSettings {
   std::filesystem::path file;  ///< session.toml (empty when the folder has none)
   std::string title;
   std::string notes;
+  /// The session's record for the first page: date, operator, rig identity,
+  /// bearing identity (empty when not given).
+  std::string date, operator_name, rig_id, bearing;
   AnalyzeOptions analysis;     ///< keep_revolutions on (the spectral magnification needs every turn)
   TheorySettings theory;
   ModelFamilySettings model_family;  ///< [model_family]

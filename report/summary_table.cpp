@@ -1,9 +1,11 @@
 #include "report/summary_table.hpp"
 
 #include <algorithm>
+#include <string_view>
 
 #include "common/csv_writer.hpp"
 #include "report/setup_check_record.hpp"
+#include "report/verdict.hpp"
 
 namespace fourbar {
 
@@ -48,10 +50,22 @@ std::string analysed_number_at(const json& r) {
   return is_analysed(r) ? number(at(r, P.text)) : std::string();
 }
 
-const SummaryColumn kColumns[] = {
+std::vector<SummaryColumn> make_columns() {
+  std::vector<SummaryColumn> c = {
     {"id", "", [](const json& r) { return std::filesystem::path(text(r["name"])).stem().string(); }},
     {"file", "", [](const json& r) { return text(r["name"]); }},
     {"status", "", [](const json& r) { return text(at(r, "status")); }},
+    // The verdict and the one a it judges by (report/verdict.hpp).
+    {"verdict", "", [](const json& r) { return text(at(r, "verdict/overall")); }},
+    {"a", "", [](const json& r) { return number(at(r, "verdict/a")); }},
+    {"a_standard_error", "", [](const json& r) { return number(at(r, "verdict/a_standard_error")); }},
+    {"a_kind", "", [](const json& r) { return text(at(r, "verdict/a_from")); }},
+  };
+  for (const VerdictPartInfo& p : verdict_parts()) {
+    const std::string key = p.key;
+    c.push_back({"verdict_" + key, "", [key](const json& r) { return text(at(r, "verdict/" + key + "/level")); }});
+  }
+  const SummaryColumn rest[] = {
     {"speed", "rpm", analysed_number_at<"operating_point/speed_rpm">},
     {"speed_std", "rpm", analysed_number_at<"acquisition/speed_rpm/std">},
     // The manifest's clearance, written as the manifest gives it (0.0254, not
@@ -83,20 +97,27 @@ const SummaryColumn kColumns[] = {
     {"setup_findings", "", [](const json& r) { return count(at(r, "setup_check/findings")); }},
     {"warnings", "", [](const json& r) { return count(at(r, "warnings")); }},
     {"error", "", [](const json& r) { return text(at(r, "error")); }},
-};
+  };
+  c.insert(c.end(), std::begin(rest), std::end(rest));
+  return c;
+}
 
 }  // namespace
 
-std::span<const SummaryColumn> summary_columns() { return kColumns; }
+std::span<const SummaryColumn> summary_columns() {
+  static const std::vector<SummaryColumn> kColumns = make_columns();
+  return kColumns;
+}
 
 void write_summary_table(const json& session, const std::filesystem::path& out_dir,
                          const std::vector<std::string>& comments) {
   std::vector<std::string> headers;
-  for (const SummaryColumn& c : kColumns) headers.push_back(c.header());
+  const auto columns = summary_columns();
+  for (const SummaryColumn& c : columns) headers.push_back(c.header());
   CsvWriter csv(out_dir / "summary.csv", comments, headers);
   std::vector<std::string> cells(headers.size());
   for (const json& r : session["recordings"]) {
-    for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = kColumns[c].cell(r);
+    for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = columns[c].cell(r);
     csv.text_row(cells);
   }
   csv.commit();

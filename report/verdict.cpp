@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <span>
 
 #include "common/format.hpp"
 
@@ -50,6 +51,21 @@ VerdictPart setup_part(const VerdictInputs& in) {
           "The data agree with the manifest (crank pulse angle, direction, channels, axis signs, calibration, positions)."};
 }
 
+double scatter_of(const VerdictInputs& in) { return in.nominal_rms > 0 ? in.spread_rms / in.nominal_rms : 0; }
+
+/// The effect lives in the scatter between turns, not in the averaged curve:
+/// the verdict then judges by a (scatter).
+bool effect_is_chaotic(const VerdictInputs& in) {
+  return in.effect_to_floor.value_or(0) < kEffectSeen && scatter_of(in) >= kScatterSeen && in.spread_rms > 0;
+}
+
+/// Chaotic, and the model at this clearance scatters too: the floor between
+/// order lines of the averaged α3 is then the impacts' own scatter left in
+/// the average (chance residues of chaotic turns), not noise.
+bool floor_is_chaotic_scatter(const VerdictInputs& in) {
+  return effect_is_chaotic(in) && in.nominal_rms > 0 && in.model_spread_rms / in.nominal_rms >= kScatterSeen;
+}
+
 VerdictPart measurement_part(const VerdictInputs& in) {
   struct Item {
     VerdictLevel level;
@@ -57,7 +73,21 @@ VerdictPart measurement_part(const VerdictInputs& in) {
   };
   std::vector<Item> items;
   const double rpm = in.speed_mean_rpm;
-  if (in.revolutions < kMinRevolutionsForFloor) {
+  std::string chaotic_note;  // what the floor is when it is the impacts' scatter
+  if (in.revolutions >= kMinRevolutionsForFloor && floor_is_chaotic_scatter(in)) {
+    const std::string floor = in.floor_rms > 0 && in.nominal_rms > 0 ? " (" + pct(in.floor_rms / in.nominal_rms) + ")" : std::string();
+    chaotic_note = "The floor between order lines of the averaged α3" + floor +
+                   " is the chaotic impacts' own scatter left in the average, not a measurement fault: the verdict judges by "
+                   "a (scatter), whose standard error measures what these turns resolve.";
+    if (in.scatter_relative_error) {
+      const double rel = *in.scatter_relative_error;
+      if (rel > kScatterErrorGood)
+        items.push_back({rel > kScatterErrorProblem ? VerdictLevel::problem : VerdictLevel::attention, "a ± " + pct(rel),
+                         "a (scatter) is uncertain by " + pct(rel) + " (standard error, " + std::to_string(in.revolutions) +
+                             " turns): record about " + turns_and_time(turns_for(in.revolutions, rel, kScatterErrorGood), rpm) +
+                             " to bring it to " + num(100 * kScatterErrorGood, 3) + " % (it falls about as 1/√turns)."});
+    }
+  } else if (in.revolutions < kMinRevolutionsForFloor) {
     items.push_back({VerdictLevel::problem, std::to_string(in.revolutions) + " turns",
                      "Only " + std::to_string(in.revolutions) + " turns averaged: no noise floor can be estimated; record at least " +
                          turns_and_time(kMinRevolutionsForFloor, rpm) + " (more lower the floor as 1/√turns)."});
@@ -95,15 +125,17 @@ VerdictPart measurement_part(const VerdictInputs& in) {
   if (items.empty()) {
     p.words = "ok";
     p.sentence = std::to_string(in.revolutions) + " turns averaged";
-    if (in.nominal_rms > 0 && in.floor_rms > 0) p.sentence += ", noise floor " + pct(in.floor_rms / in.nominal_rms) + " of the nominal α3";
+    if (!chaotic_note.empty() && in.scatter_relative_error)
+      p.sentence += ", a (scatter) uncertain by " + pct(*in.scatter_relative_error) + " (standard error)";
+    else if (chaotic_note.empty() && in.nominal_rms > 0 && in.floor_rms > 0)
+      p.sentence += ", noise floor " + pct(in.floor_rms / in.nominal_rms) + " of the nominal α3";
     if (rpm > 0) p.sentence += ", crank speed steady to " + pct(in.speed_std_rpm / rpm);
     p.sentence += in.clipping_checked ? ", nothing clipped." : ".";
   }
   if (!in.clipping_checked) p.sentence += " Clipping was not checked (float or text data without adc_range_V in the manifest).";
+  if (!chaotic_note.empty()) p.sentence += " " + chaotic_note;
   return p;
 }
-
-double scatter_of(const VerdictInputs& in) { return in.nominal_rms > 0 ? in.spread_rms / in.nominal_rms : 0; }
 
 /// No clearance effect above the noise floor (the effect part's "none").
 bool effect_none(const VerdictInputs& in) {
@@ -179,7 +211,7 @@ std::string scatter_error_clause(double a, double se, std::size_t turns) {
 VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, std::optional<double>& a_se,
                            std::string& a_from) {
   const bool spectral = in.a_spectral && !in.orders_used.empty();
-  const bool chaotic = in.effect_to_floor.value_or(0) < kEffectSeen && scatter_of(in) >= kScatterSeen && in.spread_rms > 0;
+  const bool chaotic = effect_is_chaotic(in);
   std::string from;
   if (chaotic && in.model_revolutions > 0 && in.model_revolutions < kMinModelTurnsForScatter)
     return {VerdictLevel::attention, "too few model turns",
@@ -270,6 +302,15 @@ const char* to_string(VerdictLevel l) {
   return "not judged";
 }
 
+std::span<const VerdictPartInfo> verdict_parts() {
+  static constexpr VerdictPartInfo kParts[] = {{"setup", "set-up", &Verdict::setup},
+                                               {"measurement", "measurement", &Verdict::measurement},
+                                               {"clearance_effect", "clearance effect", &Verdict::effect},
+                                               {"model_family", "model family", &Verdict::family},
+                                               {"model_agreement", "model agreement", &Verdict::agreement}};
+  return kParts;
+}
+
 Verdict verdict_of(const VerdictInputs& in) {
   Verdict v;
   v.setup = setup_part(in);
@@ -278,7 +319,7 @@ Verdict verdict_of(const VerdictInputs& in) {
   v.agreement = agreement_part(in, v.a, v.a_standard_error, v.a_from);
   v.family = family_part(in);
   judge_agreement_below_band(in, v);
-  for (const VerdictPart* p : {&v.setup, &v.measurement, &v.effect, &v.family, &v.agreement}) v.overall = worst(v.overall, p->level);
+  for (const VerdictPartInfo& p : verdict_parts()) v.overall = worst(v.overall, (v.*p.part).level);
   return v;
 }
 
@@ -341,15 +382,12 @@ VerdictInputs verdict_inputs(const json& r, const json* fit, const std::string& 
 
 json verdict_json(const Verdict& v) {
   auto part = [](const VerdictPart& p) { return json{{"level", to_string(p.level)}, {"words", p.words}, {"sentence", p.sentence}}; };
-  return {{"overall", to_string(v.overall)},
-          {"setup", part(v.setup)},
-          {"measurement", part(v.measurement)},
-          {"clearance_effect", part(v.effect)},
-          {"model_family", part(v.family)},
-          {"model_agreement", part(v.agreement)},
-          {"a", v.a ? json(*v.a) : json(nullptr)},
-          {"a_standard_error", v.a_standard_error ? json(*v.a_standard_error) : json(nullptr)},
-          {"a_from", v.a_from}};
+  json j = {{"overall", to_string(v.overall)},
+            {"a", v.a ? json(*v.a) : json(nullptr)},
+            {"a_standard_error", v.a_standard_error ? json(*v.a_standard_error) : json(nullptr)},
+            {"a_from", v.a_from}};
+  for (const VerdictPartInfo& p : verdict_parts()) j[p.key] = part(v.*p.part);
+  return j;
 }
 
 }  // namespace fourbar

@@ -26,6 +26,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,13 @@ inline constexpr double kTimeSpectralApart = 1.5;
 /// one: a theory averaged over fewer turns has no scatter to compare (one
 /// turn: none at all, a = 0), so the agreement then asks for more turns.
 inline constexpr std::size_t kMinModelTurnsForScatter = 8;
+/// When the effect is chaotic and the model expects it (its scatter ≥
+/// kScatterSeen), the floor between order lines of the averaged α3 is the
+/// impacts' own turn-to-turn scatter, not a measurement fault: the
+/// measurement is then judged by the relative standard error of the a the
+/// verdict judges by, a (scatter): good at most 12.5 % (a ± 2 standard errors
+/// inside the ±25 % agreement band), a problem above 25 %.
+inline constexpr double kScatterErrorGood = 0.125, kScatterErrorProblem = 0.25;
 
 struct VerdictFinding {
   std::string item, channel, key, manifest, data;
@@ -115,8 +123,8 @@ struct VerdictPart {
 };
 
 struct Verdict {
-  VerdictPart setup, measurement, effect, agreement;
-  VerdictPart family;  ///< energy the model family lacks (verdict_family.hpp)
+  /// In the order of verdict_parts(); family: energy the model family lacks (verdict_family.hpp).
+  VerdictPart setup, measurement, effect, family, agreement;
   /// The magnification factor the agreement part judged and where it came
   /// from: "spectral", "time", or "scatter" (model over measured turn-to-turn
   /// scatter, when the effect is chaotic and lives in the scatter, not in the average).
@@ -126,6 +134,18 @@ struct Verdict {
   VerdictLevel overall = VerdictLevel::not_judged;  ///< the worst judged part
 };
 
+/// One part of the verdict as every output shows it: its key in summary.json
+/// (`verdict.<key>`) and summary.csv (`verdict_<key>`), its label in the
+/// report and the terminal, and where it sits in Verdict. Every output
+/// iterates this list: a part more is a member of Verdict, its function in
+/// verdict_of and one entry here.
+struct VerdictPartInfo {
+  const char* key;
+  const char* label;
+  VerdictPart Verdict::*part;
+};
+std::span<const VerdictPartInfo> verdict_parts();
+
 Verdict verdict_of(const VerdictInputs& in);
 
 /// From an analysed record (status "ok" or "check set-up", with series) and,
@@ -133,7 +153,7 @@ Verdict verdict_of(const VerdictInputs& in);
 VerdictInputs verdict_inputs(const nlohmann::json& record, const nlohmann::json* fit = nullptr,
                              const std::string& fit_file = {});
 
-/// {overall, setup|measurement|clearance_effect|model_family|model_agreement: {level, words, sentence}, a, a_standard_error, a_from}.
+/// {overall, <key of each verdict_parts()>: {level, words, sentence}, a, a_standard_error, a_from}.
 nlohmann::json verdict_json(const Verdict& v);
 
 }  // namespace fourbar

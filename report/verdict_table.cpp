@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "common/format.hpp"
+#include "report/verdict.hpp"
 
 namespace fourbar {
 
@@ -13,24 +14,27 @@ std::size_t display_width(const std::string& s) {
   return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
 }
 
+std::string verdict_a_text(const json& v) {
+  if (!v.is_object() || !v.value("a", json()).is_number()) return "–";
+  return format_number(v["a"].get<double>(), 3) +
+         (v.value("a_standard_error", json()).is_number() ? " ± " + format_number(v["a_standard_error"].get<double>(), 2) : std::string()) +
+         " (" + v.value("a_from", "") + ")";
+}
+
 std::string verdict_text_table(const json& records) {
-  std::vector<std::vector<std::string>> rows = {
-      {"recording", "status", "set-up", "measurement", "clearance effect", "model agreement", "a"}};
+  std::vector<std::string> header = {"recording", "status", "verdict", "a"};
+  for (const VerdictPartInfo& p : verdict_parts()) header.push_back(p.label);
+  std::vector<std::vector<std::string>> rows = {header};
   for (const json& r : records) {
     std::vector<std::string> row = {r.value("name", ""), r.value("status", "")};
     if (!r.contains("verdict")) {
-      row.insert(row.end(), {"–", "–", "–", "–", "–"});
+      row.resize(header.size(), "–");
     } else {
       const json& v = r["verdict"];
-      for (const char* p : {"setup", "measurement", "clearance_effect", "model_agreement"})
-        row.push_back(v[p]["level"].get<std::string>() + ": " + v[p]["words"].get<std::string>());
-      // a as the verdict judged it: spectral, time or scatter.
-      std::string a = "–";
-      if (v.value("a", json()).is_number())
-        a = format_number(v["a"].get<double>(), 3) +
-            (v.value("a_standard_error", json()).is_number() ? " ± " + format_number(v["a_standard_error"].get<double>(), 2) : std::string()) +
-            " (" + v.value("a_from", "") + ")";
-      row.push_back(a);
+      row.push_back(v.value("overall", ""));
+      row.push_back(verdict_a_text(v));  // the a the verdict judged by: spectral, time or scatter
+      for (const VerdictPartInfo& p : verdict_parts())
+        row.push_back(v[p.key]["level"].get<std::string>() + ": " + v[p.key]["words"].get<std::string>());
     }
     rows.push_back(std::move(row));
   }

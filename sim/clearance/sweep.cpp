@@ -95,11 +95,13 @@ void compute_sweep_point(const Scene& base, const SweepGrid& g, SweepPoint& p) {
     const int total = g.skip_revolutions + g.revolutions;
     sim.advance_to(
         crank.time_at_angle(base.start_angle_rad + (p.crank_speed_rad_s > 0 ? 1 : -1) * units::kTwoPi * total));
-    double n = 0, sumF = 0, losses = 0, follow = 0, span = 0;
+    double n = 0, sumF = 0, losses = 0, follow = 0, span = 0, n2 = 0, sumF2 = 0;
     const auto& revs = sim.revolutions();
     for (int k = g.skip_revolutions; k < total && k < static_cast<int>(revs.size()); ++k) {
       n += revs[k].impacts;
       sumF += revs[k].sum_normal_impulse_Ns;
+      n2 += static_cast<double>(revs[k].impacts) * revs[k].impacts;
+      sumF2 += revs[k].sum_normal_impulse_Ns * revs[k].sum_normal_impulse_Ns;
       losses += revs[k].contact_losses;
       follow += revs[k].following_time_s;
       span += revs[k].end_time_s - revs[k].start_time_s;
@@ -107,6 +109,15 @@ void compute_sweep_point(const Scene& base, const SweepGrid& g, SweepPoint& p) {
     p.impacts_per_rev = n / g.revolutions;
     p.sum_normal_impulse_per_rev_Ns = sumF / g.revolutions;
     p.impact_index_Ns = n > 0 ? sumF / n : 0.0;
+    // Standard error of a per-turn mean: sample standard deviation / √turns.
+    const double turns = g.revolutions;
+    auto standard_error = [turns](double sum, double sum2) {
+      if (turns < 2) return 0.0;
+      const double mean = sum / turns;
+      return std::sqrt(std::max(0.0, (sum2 - turns * mean * mean) / (turns - 1)) / turns);
+    };
+    p.impacts_per_rev_standard_error = standard_error(n, n2);
+    p.sum_normal_impulse_per_rev_standard_error_Ns = standard_error(sumF, sumF2);
     p.contact_losses_per_rev = losses / g.revolutions;
     p.following_share = span > 0 ? follow / span : 0.0;
     const ClearanceDiagnostics d = sim.diagnostics();
@@ -123,7 +134,8 @@ namespace {
 double* result_fields(SweepPoint& p, std::size_t k) {
   double* fields[] = {&p.impacts_per_rev,        &p.sum_normal_impulse_per_rev_Ns, &p.impact_index_Ns,
                       &p.contact_losses_per_rev, &p.following_share,               &p.energy_residual_rel,
-                      &p.max_penetration_rel};
+                      &p.max_penetration_rel,    &p.impacts_per_rev_standard_error,
+                      &p.sum_normal_impulse_per_rev_standard_error_Ns};
   return k < std::size(fields) ? fields[k] : nullptr;
 }
 

@@ -34,7 +34,8 @@ std::string fill_in(const std::string& text) {
   static const std::map<std::string, std::string> values{
       {"rig", "\"rig.toml\""},        {"full_scale_V", "10"},    {"crank_direction", "\"ccw\""},
       {"role", "\"rocker_normal\""},  {"volts_per_unit", "0.01"}, {"axis_sign", "-1"},
-      {"position_mm", "100"},         {"ac_coupled", "false"},   {"crank_offset_deg", "12.5"}};
+      {"position_mm", "100"},         {"ac_coupled", "false"},   {"crank_offset_deg", "12.5"},
+      {"clearance_mm", "0.1"}};
   std::istringstream in(text);
   std::ostringstream out;
   const std::regex placeholder(R"(^(\w+) = "FILL IN".*$)");

@@ -43,20 +43,24 @@ def run(*args, cwd=None):
 
 
 # Columns that hold text; every other column must read as numbers.
-TEXT_COLUMNS = {"status", "error", "recording", "id", "file", "direction", "setup_check"}
+TEXT_COLUMNS = {"status", "error", "recording", "id", "file", "direction", "setup_check", "verdict", "a_kind",
+                "verdict_setup", "verdict_measurement", "verdict_clearance_effect", "verdict_model_family",
+                "verdict_model_agreement"}
 
 # The header of every CSV whose columns do not depend on the scene or recording.
 EXPECTED = {
     "sweep.csv": "radial_mm,crank_speed_rpm,restitution,friction_coefficient,impacts_per_rev,"
-                 "sum_normal_impulse_per_rev_Ns,impact_index_Ns,contact_losses_per_rev,following_share,"
+                 "impacts_per_rev_standard_error,sum_normal_impulse_per_rev_Ns,"
+                 "sum_normal_impulse_per_rev_standard_error_Ns,impact_index_Ns,contact_losses_per_rev,following_share,"
                  "energy_residual_rel,max_penetration_rel,status,error",
     "revolution_list.csv": "revolution,start_time_s,period_s,speed_rpm,segment,repaired,clipped",
     "pulses.csv": "time_s,segment,status",
     "session_severity.csv": "clearance_mm,speed_rpm,measured_alpha3_fluctuation_rms_rad_s2,"
                             "measured_alpha4_fluctuation_rms_rad_s2,simulated_alpha3_fluctuation_rms_rad_s2,"
                             "impacts_per_rev,sum_normal_impulse_per_rev_Ns,impact_index_Ns,magnification_alpha3,"
-                            "recording",
-    "summary.csv": "id,file,status,speed_rpm,speed_std_rpm,clearance_mm,direction,revolutions_averaged,"
+                            "recording,status",
+    "summary.csv": "id,file,status,verdict,a,a_standard_error,a_kind,verdict_setup,verdict_measurement,"
+                   "verdict_clearance_effect,verdict_model_family,verdict_model_agreement,speed_rpm,speed_std_rpm,clearance_mm,direction,revolutions_averaged,"
                    "revolutions_clipped,a_time,a_spectral,alpha3_measured_fluctuation_rms_rad_s2,"
                    "alpha3_model_fluctuation_rms_rad_s2,alpha3_rms_difference_model_rad_s2,"
                    "alpha3_rms_difference_nominal_rad_s2,alpha3_correlation_model,alpha3_correlation_nominal,"
@@ -195,6 +199,7 @@ with tempfile.TemporaryDirectory(prefix="fourbar-csv-") as out:
     # summary.csv: one row per recording, the values of summary.json.
     if os.path.exists(os.path.join(out, "report", "summary.csv")):
         summary = pd.read_csv(os.path.join(out, "report", "summary.csv"))
+        exact = pd.read_csv(os.path.join(out, "report", "summary.csv"), float_precision="round_trip")
         with open(os.path.join(out, "report", "summary.json"), encoding="utf-8") as f:
             recs = json.load(f)["recordings"]
         if list(summary["file"]) != [r["name"] for r in recs]:
@@ -218,6 +223,33 @@ with tempfile.TemporaryDirectory(prefix="fourbar-csv-") as out:
                         fail("summary.csv row %d %s = %r, summary.json %r" % (i, col, summary[col][i], want))
                 if summary["status"][i] != r["status"] or summary["setup_check"][i] != r["setup_check"]["status"]:
                     fail("summary.csv row %d: status or set-up check differ from summary.json" % i)
+                # The verdict: its level, every part's level, the a it judges by with its error and kind.
+                v = r["verdict"]
+                if summary["verdict"][i] != v["overall"]:
+                    fail("summary.csv row %d verdict %r, summary.json %r" % (i, summary["verdict"][i], v["overall"]))
+                for part in ("setup", "measurement", "clearance_effect", "model_agreement"):
+                    if summary["verdict_" + part][i] != v[part]["level"]:
+                        fail("summary.csv row %d verdict_%s %r, summary.json %r" % (i, part, summary["verdict_" + part][i],
+                                                                                    v[part]["level"]))
+                if summary["a_kind"][i] != v["a_from"]:
+                    fail("summary.csv row %d a_kind %r, summary.json %r" % (i, summary["a_kind"][i], v["a_from"]))
+                # Exactly, read with pandas' round-trip float parser (its default
+                # parser may miss the last bits).
+                for col, key in (("a", "a"), ("a_standard_error", "a_standard_error")):
+                    want = v[key]
+                    if want is None or exact[col][i] != want:
+                        fail("summary.csv row %d %s = %r, summary.json %r" % (i, col, exact[col][i], want))
+                if not 0 < summary["a_standard_error"][i] < summary["a"][i]:
+                    fail("summary.csv row %d: a %r with standard error %r" % (i, summary["a"][i], summary["a_standard_error"][i]))
+            # A chaotic clearance effect's scatter is not a measurement fault:
+            # on the sample session no part of any verdict is a problem.
+            for part in ("verdict", "verdict_setup", "verdict_measurement", "verdict_clearance_effect",
+                         "verdict_model_family", "verdict_model_agreement"):
+                if "problem" in list(summary[part]):
+                    fail("summary.csv: the sample session has a %s 'problem': %s" % (part, list(summary[part])))
+        severity = pd.read_csv(os.path.join(out, "report", "session_severity.csv"))
+        if sorted(set(severity["status"])) != ["ok"]:
+            fail("session_severity.csv status %s, want ok for every sample recording" % list(severity["status"]))
         # The manifests' clearances as they write them (not 0.025400000000000002).
         for rel in ("report/summary.csv", "report/session_severity.csv"):
             text = pd.read_csv(os.path.join(out, rel), dtype=str)

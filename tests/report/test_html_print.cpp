@@ -130,33 +130,74 @@ constexpr int kDpi = 72;
 
 int px(double mm) { return static_cast<int>(mm / 25.4 * kDpi + 0.5); }
 
-/// Prints `page` on `paper` (as chosen in a print dialog: paper size and
-/// margins) and checks every page: the paper's size, some ink, none in the
-/// strip before the right margin. At least `min_pages` pages.
-void check_printed(const fs::path& chromium, const fs::path& pdftoppm, const fs::path& page, const Paper& paper,
-                   std::size_t min_pages) {
-  SCOPED_TRACE(paper.name);
-  const fs::path dir = page.parent_path() / paper.name;
+/// The text of a PDF (poppler-utils' pdftotext, reading order), or "" when
+/// it is not installed or fails.
+std::string pdf_text(const fs::path& pdf) {
+  if (!fs::exists("/usr/bin/pdftotext")) return {};
+  const fs::path txt = pdf.string() + ".txt";
+  const std::string cmd = "/usr/bin/pdftotext -enc UTF-8 '" + pdf.string() + "' '" + txt.string() + "' >/dev/null 2>&1 </dev/null";
+  if (std::system(cmd.c_str()) != 0) return {};
+  return testing::read_file(txt);
+}
+
+/// No verdict word and no number broken across lines in the printed text:
+/// "pro" / "blem", "goo" / "d", "5.48e-" / "05", "0." / "254".
+void check_nothing_split(const std::string& text, const std::string& what) {
+  SCOPED_TRACE(what);
+  ASSERT_FALSE(text.empty()) << "no text from pdftotext";
+  for (const std::string w : {"good", "attention", "problem", "judged", "matches", "scatter", "spectral", "analysed"})
+    for (std::size_t i = 1; i < w.size(); ++i) {
+      const std::regex split("(^|[^A-Za-z])" + w.substr(0, i) + "-?\\n\\s*" + w.substr(i) + "($|[^A-Za-z])");
+      std::smatch m;
+      EXPECT_FALSE(std::regex_search(text, m, split)) << "'" << w << "' split: ..." << m.str() << "...";
+    }
+  // A number cut after its decimal point, exponent mark or sign.
+  const std::regex number_split(R"re([0-9](\.|e|e-|e−|×10)
+\s*[0-9−-])re");
+  std::smatch m;
+  EXPECT_FALSE(std::regex_search(text, m, number_split)) << "a number split: ..." << m.str() << "...";
+}
+
+/// Prints `page` (with `fragment`, "" or "#print-short", in its address) on
+/// `paper` (as chosen in a print dialog: paper size and margins) and checks
+/// every page: the paper's size, some ink, none in the strip before the
+/// right margin; no verdict word or number split (pdftotext). At least
+/// `min_pages` pages; returns the count.
+std::size_t check_printed(const fs::path& chromium, const fs::path& pdftoppm, const fs::path& page, const Paper& paper,
+                          std::size_t min_pages, const std::string& fragment = "") {
+  SCOPED_TRACE(paper.name + fragment);
+  const fs::path dir = page.parent_path() / (paper.name + (fragment.empty() ? std::string() : "-short"));
   fs::create_directories(dir);
   std::string html = testing::read_file(page);
   const auto head = html.find("</head>");
-  ASSERT_NE(head, std::string::npos);
+  if (head == std::string::npos) {
+    ADD_FAILURE() << "no </head> in " << page;
+    return 0;
+  }
   char style[96];
   std::snprintf(style, sizeof style, "<style>@page{size:%s;margin:%gmm}</style>", paper.name, kMarginMm);
   html.insert(head, style);
   const fs::path printed = dir / "report.html", pdf = dir / "report.pdf";
   write_text_file(printed, html);
-  const testing::BrowserRun run = testing::run_chromium(chromium, printed, "--no-pdf-header-footer --print-to-pdf=" + pdf.string());
-  ASSERT_EQ(run.status, 0) << run.err;
-  ASSERT_TRUE(fs::exists(pdf)) << run.err;
+  const testing::BrowserRun run =
+      testing::run_chromium(chromium, printed.string() + fragment, "--no-pdf-header-footer --print-to-pdf=" + pdf.string());
+  EXPECT_EQ(run.status, 0) << run.err;
+  if (!fs::exists(pdf)) {
+    ADD_FAILURE() << "no PDF: " << run.err;
+    return 0;
+  }
   const std::vector<testing::GreyPage> pages = testing::rasterise_pdf(pdftoppm, pdf, kDpi, dir / "pages");
-  ASSERT_GE(pages.size(), min_pages) << pdf;
+  EXPECT_GE(pages.size(), min_pages) << pdf;
+  check_nothing_split(pdf_text(pdf), pdf.string());
   const int right = px(paper.width_mm - kMarginMm), x0 = right - px(2.5), x1 = right - px(0.5);
   const int top = px(kMarginMm), bottom = px(paper.height_mm - kMarginMm);
   for (std::size_t i = 0; i < pages.size(); ++i) {
     const testing::GreyPage& g = pages[i];
     SCOPED_TRACE("page " + std::to_string(i + 1) + " of " + pdf.string());
-    ASSERT_FALSE(g.grey.empty());
+    if (g.grey.empty()) {
+      ADD_FAILURE() << "page not read";
+      continue;
+    }
     EXPECT_NEAR(g.width, px(paper.width_mm), 1);
     EXPECT_NEAR(g.height, px(paper.height_mm), 1);
     EXPECT_GT(testing::ink(g, 0, g.width, 0, g.height), 100u) << "a blank page";
@@ -167,6 +208,8 @@ void check_printed(const fs::path& chromium, const fs::path& pdftoppm, const fs:
     EXPECT_EQ(rows_with_ink, 0u) << "something is wider than the page: ink right before the right margin in "
                                  << rows_with_ink << " rows from " << first * 25.4 / kDpi << " mm down";
   }
+  std::printf("[ printed  ] %s%s on %s: %zu pages\n", page.string().c_str(), fragment.c_str(), paper.name, pages.size());
+  return pages.size();
 }
 
 struct Tools {
@@ -195,8 +238,13 @@ TEST(HtmlPrint, SampleSessionDrawsAndPrintsOnA4AndLetterInHeadlessChromium) {
   for (const char* id : {"sev-clearance", "sev-clearance-sim", "sev-speed", "sev-speed-sim", "r0-omega3_rad_s", "r3-orders"})
     EXPECT_NE(dom.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
   EXPECT_EQ(dom.find("class=\"chart-table\""), std::string::npos);  // two speeds and two clearances: charts
-  check_printed(t->chromium, t->pdftoppm, page, kA4, 1 + 4);
-  check_printed(t->chromium, t->pdftoppm, page, kLetter, 1 + 4);
+  // The full print: at most 3 pages per recording and 2 for the session's
+  // own sections; the short print (summary, verdicts, one overlay per
+  // recording) within 4 pages, what a supervisor reads.
+  for (const Paper& paper : {kA4, kLetter}) {
+    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 1 + 4), 2u + 3u * 4u) << paper.name;
+    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 1, "#print-short"), 4u) << paper.name;
+  }
 }
 
 TEST(HtmlPrint, OneRecordingSessionDrawsAndPrintsOnA4AndLetterInHeadlessChromium) {
@@ -213,8 +261,10 @@ TEST(HtmlPrint, OneRecordingSessionDrawsAndPrintsOnA4AndLetterInHeadlessChromium
     EXPECT_EQ(dom.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
   EXPECT_NE(dom.find("class=\"chart-table\""), std::string::npos);
   EXPECT_NE(dom.find("One operating point in this session"), std::string::npos);
-  check_printed(t->chromium, t->pdftoppm, page, kA4, 2);
-  check_printed(t->chromium, t->pdftoppm, page, kLetter, 2);
+  for (const Paper& paper : {kA4, kLetter}) {
+    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 2), 2u + 3u) << paper.name;
+    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 1, "#print-short"), 2u) << paper.name;
+  }
 }
 
 TEST(HtmlPrint, VerdictShownInHeadlessChromium) {
@@ -234,6 +284,30 @@ TEST(HtmlPrint, VerdictShownInHeadlessChromium) {
   const std::regex empty_value(R"re(data-verdict="")re");
   EXPECT_FALSE(std::regex_search(dom, m, empty_value)) << "a verdict without a value";
   (void)charts;
+}
+
+// What a supervisor asks of the first page and of the tables: the session's
+// record from session.toml (date, operator, rig, bearing) and the rig file
+// used; labels in words, no summary.json keys; the verdict's a first.
+TEST(HtmlPrint, FirstPageHasTheSessionRecordAndTablesNoInternalKeys) {
+  testing::TempDir dir;
+  const std::string page = testing::read_file(report(kSample, dir.path()));
+  const std::string html = page.substr(0, page.find("id=\"report-data\""));  // what is shown, not the data behind it
+  const auto record = html.find("<table class=\"session-record\">");
+  ASSERT_NE(record, std::string::npos);
+  EXPECT_LT(record, html.find("<main>")) << "in the header, on the first page";
+  for (const char* want : {"2026-03-14", "virtual rig (SYNTHETIC sample)", "thesis rig (Table 6.1/7.1)",
+                           "coupler-rocker bearing", "rig file used"})
+    EXPECT_NE(html.find(want, record), std::string::npos) << want;
+  for (const char* key : {"once_per_turn_pct", "acquisition.one_pulse_per_turn", "theory_by_recording", "speed_rpm.std",
+                          ">revolutions_clipped<"})
+    EXPECT_EQ(html.find(key), std::string::npos) << "an internal key in the page: " << key;
+  EXPECT_NE(html.find("acquisition › speed (rpm) › std"), std::string::npos) << "the label in words and units";
+  // The summary table: the verdict's a before the diagnostics.
+  const auto summary = html.find("<table class=\"summary\">");
+  ASSERT_NE(summary, std::string::npos);
+  EXPECT_LT(html.find("a (verdict)", summary), html.find("<th>a time</th>", summary)) << "the verdict's a before the diagnostics";
+  EXPECT_LT(html.find("0.841 ± 0.12 (scatter)", summary), html.find("</table>", summary));
 }
 
 }  // namespace

@@ -383,13 +383,22 @@ TEST_F(SessionReport, SeriesFilesBesideTheReport) {
   const std::string sev = testing::read_file(out / "session_severity.csv");
   EXPECT_EQ(sev.rfind("clearance_mm,speed_rpm,", 0), 0u) << "the header is the first line";
   EXPECT_EQ(testing::count_lines(sev), 1 + 2);  // header, two analysed recordings
+  EXPECT_NE(sev.find(",recording,status\n"), std::string::npos) << "each point says whether its numbers are to be trusted";
+  const std::size_t ok = testing::count_lines(sev) - 1;
+  std::size_t with_status = 0;
+  for (std::size_t at = sev.find('\n'); at != std::string::npos && at + 1 < sev.size(); at = sev.find('\n', at + 1)) {
+    const std::size_t end = sev.find('\n', at + 1);
+    const std::string line = sev.substr(at + 1, end - at - 1);
+    with_status += line.ends_with(",ok") || line.ends_with(",check set-up");
+  }
+  EXPECT_EQ(with_status, ok) << sev;
 }
 
 TEST_F(SessionReport, SummaryTableHasOneRowPerRecording) {
   const auto out = dir_->path() / "out";
   const testing::CsvCells t = testing::read_csv_cells(out / "summary.csv");
-  EXPECT_EQ(testing::read_file(out / "summary.csv").rfind("id,file,status,speed_rpm,", 0), 0u)
-      << "no '#' lines above the header";
+  EXPECT_EQ(testing::read_file(out / "summary.csv").rfind("id,file,status,verdict,a,a_standard_error,a_kind,", 0), 0u)
+      << "no '#' lines above the header; the verdict and its a first";
   const auto col = [&](const std::string& name) {
     const auto it = std::find(t.header.begin(), t.header.end(), name);
     if (it == t.header.end()) throw std::runtime_error("summary.csv has no column " + name);
@@ -406,7 +415,8 @@ TEST_F(SessionReport, SummaryTableHasOneRowPerRecording) {
     EXPECT_EQ(row[col("status")], r["status"]);
     if (r["status"] == "failed") {
       EXPECT_EQ(row[col("error")], r["error"]) << "a message with commas or quotes comes back whole";
-      for (const char* empty : {"speed_rpm", "clearance_mm", "a_time", "alpha3_correlation_model", "setup_check"})
+      for (const char* empty : {"speed_rpm", "clearance_mm", "a_time", "alpha3_correlation_model", "setup_check", "verdict", "a",
+                                "verdict_measurement"})
         EXPECT_EQ(row[col(empty)], "") << r["name"] << " " << empty << ": no value, not 0";
       continue;
     }
@@ -425,6 +435,14 @@ TEST_F(SessionReport, SummaryTableHasOneRowPerRecording) {
       if (value->is_null()) EXPECT_EQ(row[col(name)], "") << name << ": no value, not 0";
       else EXPECT_EQ(std::stod(row[col(name)]), value->get<double>()) << name;
     EXPECT_EQ(row[col("clearance_mm")], "0.254") << "as the manifest writes it";
+    // The verdict: every part's level, the a it judges by and its kind.
+    const json& v = r["verdict"];
+    EXPECT_EQ(row[col("verdict")], v["overall"]);
+    for (const char* part : {"setup", "measurement", "clearance_effect", "model_agreement"})
+      EXPECT_EQ(row[col(std::string("verdict_") + part)], v[part]["level"]) << part;
+    EXPECT_EQ(row[col("a_kind")], v["a_from"]);
+    if (v["a"].is_number()) EXPECT_EQ(std::stod(row[col("a")]), v["a"].get<double>());
+    else EXPECT_EQ(row[col("a")], "");
     EXPECT_EQ(row[col("setup_check")], r["setup_check"]["status"]);
     EXPECT_EQ(row[col("setup_findings")], std::to_string(r["setup_check"]["findings"].size()));
     EXPECT_EQ(row[col("error")], "");

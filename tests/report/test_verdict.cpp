@@ -169,6 +169,52 @@ TEST(Verdict, ChaoticEffectIsJudgedByTheScatter) {
   EXPECT_EQ(verdict_json(v)["a_from"], "scatter");
 }
 
+// The sample session's complaint: a large chaotic clearance effect leaves
+// its scatter in the averaged curve's floor (20 % there), which the
+// measurement part read as noise ("problem"). When the model at this
+// clearance scatters too, the floor is the effect's, and the measurement is
+// judged by the standard error of the a the verdict judges by.
+TEST(Verdict, ChaoticScatterIsNotAMeasurementFault) {
+  VerdictInputs in = clean();
+  in.effect_to_floor = 1.3, in.spread_rms = 80, in.model_spread_rms = 81;  // chaotic, model agrees
+  in.floor_rms = 20;                                                        // 20 % floor in the average
+  in.revolutions = 15;
+  in.scatter_relative_error = 0.06;
+  Verdict v = verdict_of(in);
+  EXPECT_EQ(v.measurement.level, VerdictLevel::good) << v.measurement.sentence;
+  EXPECT_EQ(v.measurement.words, "ok");
+  EXPECT_NE(v.measurement.sentence.find("a (scatter) uncertain by 6 %"), std::string::npos) << v.measurement.sentence;
+  EXPECT_NE(v.measurement.sentence.find("not a measurement fault"), std::string::npos) << v.measurement.sentence;
+  EXPECT_EQ(v.overall, VerdictLevel::good);
+  // Too few turns for the a it judges by: attention, and how many to record.
+  in.scatter_relative_error = 0.2;
+  v = verdict_of(in);
+  EXPECT_EQ(v.measurement.level, VerdictLevel::attention) << v.measurement.sentence;
+  EXPECT_EQ(v.measurement.words, "a ± 20 %");
+  EXPECT_NE(v.measurement.sentence.find("record about 39 turns"), std::string::npos) << v.measurement.sentence;
+  in.scatter_relative_error = 0.3;
+  EXPECT_EQ(verdict_of(in).measurement.level, VerdictLevel::problem);
+  // A noisy sensor scatters too, but the model does not: the floor stays a measurement problem.
+  in.model_spread_rms = 5, in.scatter_relative_error = 0.06;
+  v = verdict_of(in);
+  EXPECT_EQ(v.measurement.level, VerdictLevel::problem) << v.measurement.sentence;
+  EXPECT_EQ(v.measurement.words.rfind("floor 20 %", 0), 0u) << v.measurement.words;
+}
+
+// Every output iterates one list of parts: a part more is one entry there.
+TEST(Verdict, PartsAreOneList) {
+  const auto parts = verdict_parts();
+  ASSERT_EQ(parts.size(), 4u);
+  const Verdict v = verdict_of(clean());
+  const json j = verdict_json(v);
+  for (const VerdictPartInfo& p : parts) {
+    EXPECT_EQ(j[p.key]["level"], to_string((v.*p.part).level)) << p.key;
+    EXPECT_EQ(j[p.key]["words"], (v.*p.part).words) << p.key;
+  }
+  EXPECT_EQ(std::string(parts[0].label), "set-up");
+  EXPECT_EQ(&(v.*parts[3].part), &v.agreement);
+}
+
 // a (scatter) is said with its standard error, and the sentence says whether
 // the turns recorded resolve a difference from 1.
 TEST(Verdict, ScatterRatioCarriesItsErrorAndSaysWhatItResolves) {
@@ -318,8 +364,10 @@ TEST(VerdictTable, ColumnsAlignedInCharacters) {
   EXPECT_EQ(column(l[0], "status"), column(l[1], "ok"));
   EXPECT_EQ(column(l[0], "status"), column(l[2], "failed"));
   EXPECT_EQ(column(l[0], "set-up"), column(l[1], "good: matches"));
-  // The last column (the words of model agreement hold "a 1.1 (spectral)" too).
-  EXPECT_EQ(display_width(l[0].substr(0, l[0].rfind("  a") + 2)), display_width(l[1].substr(0, l[1].rfind("1.1 (spectral)"))));
+  // The a the verdict judges by comes right after the overall verdict, before the parts.
+  EXPECT_EQ(column(l[0], "  a  ") + 2, column(l[1], "1.1 (spectral)")) << t;
+  EXPECT_LT(column(l[1], "1.1 (spectral)"), column(l[1], "good: matches")) << t;
+  EXPECT_EQ(column(l[0], "verdict"), column(l[1], "attention"));
   EXPECT_EQ(display_width("α3 ±×"), 5u);
 }
 
