@@ -52,5 +52,6 @@ int run_report(const Invocation& inv);
 int run_analyze(const Invocation& inv);
 int run_inspect(const Invocation& inv);
 int run_fit(const Invocation& inv);
+int run_tap(const Invocation& inv);
 
 }  // namespace fourbar::cli

@@ -20,6 +20,8 @@ std::span<const Command> commands() {
       Command{"virtual-rig", "write the recording (and manifest, truth) the sensors would give for a scene",
               run_virtual_rig},
       Command{"rig", "check a rig file and report its class, assembly and transmission angles", run_rig},
+      Command{"tap", "a link's mode frequencies and damping ratios from a hammer-tap recording, as rig-file lines",
+              run_tap},
   };
   return table;
 }

@@ -205,6 +205,21 @@ std::vector<std::string> TomlSection::strings(std::string_view key) {
   return out;
 }
 
+std::vector<double> TomlSection::numbers(std::string_view key) {
+  const toml::node& n = require(key);
+  const toml::array* arr = n.as_array();
+  if (!arr) fail(key, std::string("must be an array of numbers, e.g. [580.0, 2410.0], not ") + type_name(n));
+  std::vector<double> out;
+  for (const auto& el : *arr) {
+    std::optional<double> v;
+    if (el.is_floating_point()) v = el.as_floating_point()->get();
+    if (el.is_integer()) v = static_cast<double>(el.as_integer()->get());
+    if (!v || !std::isfinite(*v)) fail(key, "must hold only finite numbers");
+    out.push_back(*v);
+  }
+  return out;
+}
+
 std::filesystem::path TomlSection::path(std::string_view key) {
   std::filesystem::path p = string(key);
   if (p.is_relative()) p = file_.parent_path() / p;

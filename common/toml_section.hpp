@@ -43,6 +43,8 @@ class TomlSection {
   std::string choice(std::string_view key, const std::vector<std::string>& choices,
                      std::optional<std::string> fallback = {});
   std::vector<std::string> strings(std::string_view key);
+  /// Array of finite numbers (integers or floats).
+  std::vector<double> numbers(std::string_view key);
 
   /// A path relative to the file's folder, made absolute.
   std::filesystem::path path(std::string_view key);

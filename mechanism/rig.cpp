@@ -104,7 +104,7 @@ void validate_rig(const Rig& rig) {
 
 namespace {
 
-Link read_link(TomlSection& root, const char* name) {
+Link read_link(TomlSection& root, const char* name, std::optional<LinkElasticity>* elastic = nullptr) {
   TomlSection s = root.section(name);
   Link link;
   link.length_m = units::mm_to_m(s.positive("length_mm"));
@@ -115,6 +115,8 @@ Link read_link(TomlSection& root, const char* name) {
     s.fail("mass_centre_mm", "= " + std::to_string(units::m_to_mm(link.mass_centre_m)) +
                                  " lies beyond the link (length_mm = " +
                                  std::to_string(units::m_to_mm(link.length_m)) + ")");
+  if (elastic)
+    if (auto e = s.optional_section("elastic")) *elastic = read_link_elasticity(*e);
   s.finish();
   return link;
 }
@@ -185,8 +187,8 @@ Rig load_rig(const std::filesystem::path& file) {
     ground.finish();
   }
   rig.crank = read_link(root, "crank");
-  rig.coupler = read_link(root, "coupler");
-  rig.rocker = read_link(root, "rocker");
+  rig.coupler = read_link(root, "coupler", &rig.coupler_elastic);
+  rig.rocker = read_link(root, "rocker", &rig.rocker_elastic);
   if (auto c = root.optional_section("clearance")) {
     rig.radial_clearance_m = units::mm_to_m(c->non_negative("radial_mm"));
     read_bearing_bodies(*c, rig);

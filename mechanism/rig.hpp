@@ -12,6 +12,8 @@
 #include <optional>
 #include <string>
 
+#include "mechanism/link_elasticity.hpp"
+
 namespace fourbar {
 
 /// One moving link. `inertia_cg_kg_m2` is about the mass centre.
@@ -60,6 +62,8 @@ struct Rig {
   Assembly assembly = Assembly::open;
   double radial_clearance_m = 0;  ///< coupler–rocker bearing, pin vs bushing
   BearingBodies bearing;          ///< the bearing's bodies (compliant contact only)
+  /// `[coupler.elastic]`, `[rocker.elastic]`: absent = a rigid link.
+  std::optional<LinkElasticity> coupler_elastic, rocker_elastic;
   std::filesystem::path source;   ///< the file it was read from (may be empty)
 
   /// +1 for the open assembly, −1 for the crossed one.

@@ -37,6 +37,19 @@ class BadArguments : public ::testing::Test {
   std::filesystem::path file(const std::string& name, const std::string& text) const { return dir.write(name, text); }
 };
 
+TEST_F(BadArguments, Tap) {
+  const std::string rec = file("tap.csv", "time_s,a\n0,0\n0.001,1\n0.002,0\n").string();
+  for (const BadCase& c : std::vector<BadCase>{
+           {"tap", "REC"},
+           {"tap /nonexistent/tap.wav", "/nonexistent/tap.wav"},
+           {"tap " + rec + " --link crank", "crank"},
+           {"tap " + rec + " --modes 0", "modes"},
+           {"tap " + rec + " --channel 7", "7"},
+           {"tap " + rec, "tap.csv"},
+       })
+    expect_clean_failure(c, out());
+}
+
 TEST_F(BadArguments, Sim) {
   const std::string scene = kData + "/scenes/thesis_nominal_350rpm.toml";
   const std::string empty = file("empty.toml", "").string();

@@ -23,7 +23,8 @@ TEST(Cli, VersionAndHelp) {
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("sim"), std::string::npos);
   EXPECT_NE(r.out.find("exit status"), std::string::npos);
-  for (const char* cmd : {"sim", "rig"}) {
+  EXPECT_NE(r.out.find("tap"), std::string::npos);
+  for (const char* cmd : {"sim", "rig", "tap"}) {
     r = run_fourbar(std::string(cmd) + " --help");
     EXPECT_EQ(r.status, 0) << cmd;
     EXPECT_NE(r.out.find("usage: fourbar"), std::string::npos) << cmd;

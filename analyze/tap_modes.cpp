@@ -1,0 +1,241 @@
+#include "analyze/tap_modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include <Eigen/Dense>
+
+#include "analyze/fftw_plan.hpp"
+#include "common/error.hpp"
+#include "common/format.hpp"
+
+namespace fourbar {
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+/// A peak of the decay's (or the residual's) spectrum counts when it stands
+/// this far above the spectrum's median (18 dB; white noise's highest bin of
+/// 10⁴ stands about 11 dB above it).
+constexpr double kPeakOverMedian = 8;
+
+/// The decay model's basis at (σ_k, ω_k): columns e^{−σt}cos ωt, e^{−σt}sin ωt.
+Eigen::MatrixXd basis(const Eigen::VectorXd& theta, double dt, Eigen::Index n) {
+  const Eigen::Index k = theta.size() / 2;
+  Eigen::MatrixXd a(n, 2 * k);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const double sigma = theta(2 * j), omega = theta(2 * j + 1);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double t = static_cast<double>(i) * dt, e = std::exp(-sigma * t);
+      a(i, 2 * j) = e * std::cos(omega * t);
+      a(i, 2 * j + 1) = e * std::sin(omega * t);
+    }
+  }
+  return a;
+}
+
+/// Variable projection: the residual after the best amplitudes.
+Eigen::VectorXd projected_residual(const Eigen::VectorXd& theta, const Eigen::VectorXd& y, double dt,
+                                   Eigen::VectorXd* amplitudes = nullptr) {
+  const Eigen::MatrixXd a = basis(theta, dt, y.size());
+  const Eigen::VectorXd c = a.colPivHouseholderQr().solve(y);
+  if (amplitudes) *amplitudes = c;
+  return y - a * c;
+}
+
+/// Spectrum peaks of the decay: (frequency in rad/s, magnitude), strongest first.
+std::vector<std::pair<double, double>> spectrum_peaks(const Eigen::VectorXd& y, double fs, double over_median) {
+  const std::size_t n = fast_fft_size(std::max<std::size_t>(8 * static_cast<std::size_t>(y.size()), 1 << 14));
+  RealFft fft(n);
+  auto time = fft.time();
+  std::fill(time.begin(), time.end(), 0.0);
+  // A half Hann (falling) taper: the decay starts at its largest and ends in
+  // the noise; no window at the start keeps the leakage of the first cycles low.
+  const auto m = static_cast<std::size_t>(y.size());
+  for (std::size_t i = 0; i < m; ++i) time[i] = y(static_cast<Eigen::Index>(i)) * 0.5 * (1 + std::cos(pi * i / m));
+  fft.forward();
+  const auto spec = fft.spectrum();
+  std::vector<double> mag(spec.size());
+  for (std::size_t i = 0; i < spec.size(); ++i) mag[i] = std::abs(spec[i]);
+  std::vector<double> sorted = mag;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  std::vector<std::pair<double, double>> peaks;
+  for (std::size_t i = 2; i + 1 < mag.size(); ++i)
+    if (mag[i] > mag[i - 1] && mag[i] >= mag[i + 1] && mag[i] > over_median * median) {
+      // Parabolic interpolation of the log magnitude around the peak bin.
+      const double a = std::log(mag[i - 1]), b = std::log(mag[i]), c = std::log(mag[i + 1]);
+      const double shift = 0.5 * (a - c) / (a - 2 * b + c);
+      peaks.emplace_back(2 * pi * (static_cast<double>(i) + shift) * fs / static_cast<double>(n), mag[i]);
+    }
+  std::sort(peaks.begin(), peaks.end(), [](const auto& p, const auto& q) { return p.second > q.second; });
+  return peaks;
+}
+
+/// Levenberg–Marquardt on (σ_k, ω_k) with the amplitudes projected out.
+void fit_decay(Eigen::VectorXd& theta, const Eigen::VectorXd& y, double dt, double fs) {
+  Eigen::VectorXd r = projected_residual(theta, y, dt);
+  double cost = r.squaredNorm(), lambda = 1e-3;
+  const Eigen::Index m = y.size(), k = theta.size() / 2;
+  for (int iter = 0; iter < 200; ++iter) {
+    Eigen::MatrixXd jac(m, 2 * k);
+    for (Eigen::Index p = 0; p < 2 * k; ++p) {
+      Eigen::VectorXd t2 = theta;
+      const double h = 1e-7 * std::max(std::abs(theta(p)), 1.0 + 1e-3 * std::abs(theta(p ^ 1)));
+      t2(p) += h;
+      jac.col(p) = (projected_residual(t2, y, dt) - r) / h;
+    }
+    const Eigen::MatrixXd jtj = jac.transpose() * jac;
+    const Eigen::VectorXd g = jac.transpose() * r;
+    bool improved = false;
+    for (int tries = 0; tries < 20 && !improved; ++tries) {
+      Eigen::MatrixXd a = jtj;
+      a.diagonal() += lambda * jtj.diagonal();
+      const Eigen::VectorXd step = a.ldlt().solve(-g);
+      const Eigen::VectorXd candidate = theta + step;
+      bool valid = true;
+      for (Eigen::Index j = 0; j < k; ++j)
+        valid = valid && candidate(2 * j) > 0 && candidate(2 * j + 1) > 0 && candidate(2 * j + 1) < pi * fs;
+      const Eigen::VectorXd rc = valid ? projected_residual(candidate, y, dt) : r;
+      if (valid && rc.squaredNorm() < cost) {
+        const double gain = (cost - rc.squaredNorm()) / cost;
+        theta = candidate;
+        r = rc;
+        cost = rc.squaredNorm();
+        lambda = std::max(lambda / 5, 1e-12);
+        improved = true;
+        if (gain < 1e-12) return;  // converged
+      } else {
+        lambda *= 10;
+      }
+    }
+    if (!improved) break;
+  }
+}
+
+}  // namespace
+
+TapResult identify_tap_modes(std::span<const double> samples, double fs, const TapOptions& options) {
+  TapResult result;
+  const std::size_t n = samples.size();
+  if (n < 64 || !(fs > 0)) throw InputError("is too short to hold a tap (" + std::to_string(n) + " samples)");
+  // 1. The tap and the decay after it.
+  std::size_t tap = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (std::abs(samples[i]) > std::abs(samples[tap])) tap = i;
+  result.tap_time_s = static_cast<double>(tap) / fs;
+  const std::size_t pre = tap > 200 ? tap - static_cast<std::size_t>(std::ceil(0.002 * fs)) : 0;
+  std::span<const double> before = pre > 100 ? samples.subspan(0, pre) : std::span<const double>();
+  std::span<const double> tail = samples.subspan(n - n / 10);
+  const double offset = before.empty()
+                            ? std::accumulate(tail.begin(), tail.end(), 0.0) / static_cast<double>(tail.size())
+                            : std::accumulate(before.begin(), before.end(), 0.0) / static_cast<double>(before.size());
+  auto centred_rms = [&](std::span<const double> x) {
+    double s = 0;
+    for (double v : x) s += (v - offset) * (v - offset);
+    return x.empty() ? 0.0 : std::sqrt(s / static_cast<double>(x.size()));
+  };
+  const double noise = before.empty() ? centred_rms(tail) : centred_rms(before);
+  const std::size_t start = std::min(n - 1, tap + std::max<std::size_t>(1, static_cast<std::size_t>(2e-4 * fs)));
+  const std::size_t block = std::max<std::size_t>(16, static_cast<std::size_t>(0.005 * fs));
+  if (start + 4 * block > n)
+    throw InputError("has its largest peak at " + format_number(result.tap_time_s) +
+                     " s, too near its end for a decay to follow; record from before the tap until the ringing "
+                     "has died away");
+  const double first = centred_rms(samples.subspan(start, block));
+  std::size_t end = start + block;
+  double last = first;
+  while (end + block <= n) {
+    last = centred_rms(samples.subspan(end, block));
+    end += block;
+    if (last < 1.5 * noise) break;
+  }
+  result.noise_rms = noise;
+  result.decay_db = 20 * std::log10(first / std::max(last, 1e-300));
+  const double to_tail_db = 20 * std::log10(first / std::max(centred_rms(tail), 1e-300));
+  if (!(result.decay_db >= 6) || !(to_tail_db >= 10))
+    throw InputError("has no free decay: the signal after its largest peak (at " + format_number(result.tap_time_s) +
+                     " s) does not die away (its envelope falls " + format_number(result.decay_db, 2) +
+                     " dB, and the record's last tenth is " + format_number(to_tail_db, 2) +
+                     " dB below its start; a tap test needs 6 and 10 dB); record a hammer tap on the link, from "
+                     "before the tap until the ringing has died away, with the link free to ring");
+  // Twice as long as it takes to reach the floor (the tail still tells the
+  // fit where the slowest mode ends), at most 60 000 samples (its cost).
+  end = std::min({n, start + 2 * (end - start), start + 60'000});
+  const auto m = static_cast<Eigen::Index>(end - start);
+  Eigen::VectorXd y(m);
+  for (Eigen::Index i = 0; i < m; ++i) y(i) = samples[start + static_cast<std::size_t>(i)] - offset;
+  const double dt = 1 / fs;
+  result.decay_start_s = static_cast<double>(start) / fs;
+  result.decay_duration_s = static_cast<double>(m) / fs;
+
+  // 3. Modes one at a time: the strongest peak of what the modes so far leave
+  //    unexplained, then a fit of all of them (so that two close modes that
+  //    make one hump in the spectrum come out as two).
+  std::vector<std::pair<double, double>> peaks = spectrum_peaks(y, fs, kPeakOverMedian);
+  if (peaks.empty())
+    throw InputError(
+        "shows no resonance peak in its decay (nothing rings above the noise); tap harder, or closer "
+        "to the middle of the link");
+  const int wanted = options.modes > 0 ? options.modes : 4;
+  Eigen::VectorXd theta(2);
+  theta << 0.01 * peaks.front().first, peaks.front().first;  // ζ ≈ 1 % to start
+  fit_decay(theta, y, dt, fs);
+  while (theta.size() / 2 < wanted) {
+    const Eigen::VectorXd residual = projected_residual(theta, y, dt);
+    const auto more = spectrum_peaks(residual, fs, kPeakOverMedian);
+    if (more.empty()) {
+      if (options.modes > 0)
+        throw InputError("shows " + std::to_string(theta.size() / 2) + " mode(s) in its decay, fewer than the " +
+                         std::to_string(options.modes) + " asked; give --modes " + std::to_string(theta.size() / 2) +
+                         " or tap harder");
+      break;
+    }
+    Eigen::VectorXd grown(theta.size() + 2);
+    grown << theta, 0.01 * more.front().first, more.front().first;
+    fit_decay(grown, y, dt, fs);
+    theta = grown;
+  }
+  const Eigen::Index k = theta.size() / 2;
+  Eigen::VectorXd r;
+  Eigen::VectorXd c;
+  r = projected_residual(theta, y, dt, &c);
+  result.residual_rms = std::sqrt(r.squaredNorm() / static_cast<double>(m));
+
+  // 4. Covariance of all parameters (a, b, σ, ω per mode) at the optimum.
+  Eigen::MatrixXd full(m, 4 * k);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const double sigma = theta(2 * j), omega = theta(2 * j + 1), a = c(2 * j), b = c(2 * j + 1);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const double t = static_cast<double>(i) * dt, e = std::exp(-sigma * t);
+      const double co = e * std::cos(omega * t), si = e * std::sin(omega * t);
+      full(i, 4 * j) = co;
+      full(i, 4 * j + 1) = si;
+      full(i, 4 * j + 2) = -t * (a * co + b * si);
+      full(i, 4 * j + 3) = t * (-a * si + b * co);
+    }
+  }
+  const double s2 = r.squaredNorm() / static_cast<double>(std::max<Eigen::Index>(1, m - 4 * k));
+  const Eigen::MatrixXd cov = s2 * (full.transpose() * full).ldlt().solve(Eigen::MatrixXd::Identity(4 * k, 4 * k));
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const double sigma = theta(2 * j), omega = theta(2 * j + 1);
+    const double wn = std::hypot(sigma, omega);
+    TapMode mode;
+    mode.frequency_Hz = wn / (2 * pi);
+    mode.damping_ratio = sigma / wn;
+    mode.amplitude = std::hypot(c(2 * j), c(2 * j + 1));
+    const Eigen::Matrix2d cs = cov.block<2, 2>(4 * j + 2, 4 * j + 2);
+    const Eigen::Vector2d dwn(sigma / wn, omega / wn);                                          // ∂ωn/∂(σ, ω)
+    const Eigen::Vector2d dz(omega * omega / (wn * wn * wn), -sigma * omega / (wn * wn * wn));  // ∂ζ/∂(σ, ω)
+    mode.frequency_sigma_Hz = std::sqrt(std::max(0.0, dwn.dot(cs * dwn))) / (2 * pi);
+    mode.damping_sigma = std::sqrt(std::max(0.0, dz.dot(cs * dz)));
+    result.modes.push_back(mode);
+  }
+  std::sort(result.modes.begin(), result.modes.end(),
+            [](const TapMode& p, const TapMode& q) { return p.frequency_Hz < q.frequency_Hz; });
+  return result;
+}
+
+}  // namespace fourbar

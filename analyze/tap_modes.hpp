@@ -1,0 +1,55 @@
+#pragma once
+// A link's modal frequencies and damping ratios from an accelerometer
+// recording of a hammer tap (the free decay after it), for the rig file's
+// `[<link>.elastic]` table (`fourbar tap REC`, docs/flex.md "Tap test").
+//
+// 1. The tap is the recording's largest |value|; the decay runs from just
+//    after it for twice the time its envelope (RMS over 5 ms blocks) takes
+//    to reach 1.5 times the noise floor (the RMS before the tap, or of the
+//    record's last tenth).
+//    No decay (the record's last tenth within 10 dB of the decay's first
+//    block, or an envelope that falls less than 6 dB) is an error.
+// 2. Modes one at a time: the strongest peak of the zero-padded spectrum
+//    (a falling half-Hann taper) of what the modes found so far leave
+//    unexplained starts the next mode, then all are fitted again (step 3);
+//    until no peak stands 18 dB above the spectrum's median (at most 4
+//    modes, or --modes). Two close modes that make one hump come out as two.
+// 3. A nonlinear least-squares fit of Σ e^{−σ_k t}(a_k cos ω_k t + b_k sin ω_k t)
+//    by Levenberg–Marquardt on (σ_k, ω_k), the amplitudes solved linearly at
+//    each step (variable projection, Golub–Pereyra).
+// 4. Uncertainty: the covariance s²(JᵀJ)⁻¹ of all parameters at the optimum
+//    (white noise), carried to f_k = √(σ² + ω²)/2π (undamped natural
+//    frequency) and ζ_k = σ/√(σ² + ω²) by their gradients (1 σ).
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace fourbar {
+
+struct TapMode {
+  double frequency_Hz = 0;        ///< undamped natural frequency
+  double frequency_sigma_Hz = 0;  ///< its standard error
+  double damping_ratio = 0;
+  double damping_sigma = 0;
+  double amplitude = 0;  ///< at the start of the decay, recorded units
+};
+
+struct TapOptions {
+  int modes = 0;  ///< 0: as many as the spectrum shows (<= 4)
+};
+
+struct TapResult {
+  std::vector<TapMode> modes;  ///< lowest frequency first
+  double tap_time_s = 0;       ///< the largest |value|, from the first sample
+  double decay_start_s = 0, decay_duration_s = 0;
+  double noise_rms = 0;     ///< the floor the decay ends at
+  double residual_rms = 0;  ///< of the fit over the decay
+  double decay_db = 0;      ///< how far the envelope fell (dB)
+};
+
+/// Throws InputError (message: what is wrong, without the file name; the
+/// caller prefixes it) when there is no decay to fit.
+TapResult identify_tap_modes(std::span<const double> samples, double sample_rate_hz, const TapOptions& options = {});
+
+}  // namespace fourbar

@@ -1,0 +1,159 @@
+#include "sim/flex/elastic_link.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "sim/flex/gauss_legendre.hpp"
+
+namespace fourbar {
+
+ElasticLinkSpec pinned_pinned_link(double length_m, const BeamSection& section, int modes,
+                                   std::vector<double> damping_ratios) {
+  ElasticLinkSpec spec;
+  spec.length_m = length_m;
+  spec.mass_per_length_kg_m = section.density_kg_m3 * section.area_m2;
+  spec.bending_stiffness_N_m2 = section.youngs_modulus_Pa * section.second_moment_m4;
+  spec.axial_stiffness_N = section.youngs_modulus_Pa * section.area_m2;
+  spec.depth_m = section.depth_m;
+  for (int k = 1; k <= modes; ++k) spec.shapes.push_back({ShapeKind::lateral_sine, k});
+  spec.damping_ratios = std::move(damping_ratios);
+  return spec;
+}
+
+namespace {
+
+[[noreturn]] void bad(const ElasticLinkSpec& spec, const std::string& what) {
+  throw InputError("elastic link '" + spec.name + "': " + what);
+}
+
+void check_spec(const ElasticLinkSpec& spec) {
+  auto positive = [&](double v, const char* what, const char* fix) {
+    if (!(v > 0) || !std::isfinite(v)) bad(spec, std::string(what) + " = " + format_number(v) + " must be > 0; " + fix);
+  };
+  positive(spec.length_m, "length", "give the joint-to-joint length");
+  positive(spec.mass_per_length_kg_m, "mass per length",
+           "give the density and the section area (a section with no area has no mass)");
+  if (spec.shapes.empty()) bad(spec, "has no mode shapes; give at least one mode (or make the link rigid)");
+  bool lateral = false, axial = false;
+  for (const ShapeFunction& f : spec.shapes) {
+    (is_lateral(f) ? lateral : axial) = true;
+    if ((f.kind == ShapeKind::lateral_sine || f.kind == ShapeKind::axial_sine) && f.index < 1)
+      bad(spec, "shape index " + std::to_string(f.index) + " must be >= 1");
+  }
+  const bool measured = !spec.measured_frequencies_Hz.empty();
+  if (lateral && !measured && !spec.modal_stiffness_override)
+    positive(spec.bending_stiffness_N_m2, "bending stiffness EI",
+             "give Young's modulus and the section's second moment (or measured mode frequencies)");
+  if (axial && !spec.modal_stiffness_override)
+    positive(spec.axial_stiffness_N, "axial stiffness EA", "give Young's modulus and the section area");
+  if (measured) {
+    if (axial) bad(spec, "measured frequencies describe bending modes only; drop the axial shapes");
+    if (spec.measured_frequencies_Hz.size() != spec.shapes.size())
+      bad(spec, std::to_string(spec.measured_frequencies_Hz.size()) + " measured frequencies for " +
+                    std::to_string(spec.shapes.size()) + " modes; give one per mode");
+    double previous = 0;
+    for (double f : spec.measured_frequencies_Hz) {
+      if (!(f > 0) || !std::isfinite(f))
+        bad(spec, "measured frequency " + format_number(f) + " Hz must be > 0 (a tap test's peak, in Hz)");
+      if (!(f > previous)) bad(spec, "measured frequencies must increase (lowest mode first)");
+      previous = f;
+    }
+  }
+  for (double z : spec.damping_ratios)
+    if (!(z >= 0 && z < 1))
+      bad(spec, "damping ratio " + format_number(z) +
+                    " must lie in [0, 1): a link rings with ζ of about 0.001–0.05; ζ >= 1 does not ring");
+  const auto n = static_cast<Eigen::Index>(spec.shapes.size());
+  for (const auto* m : {&spec.modal_mass_override, &spec.modal_stiffness_override})
+    if (*m && ((*m)->rows() != n || (*m)->cols() != n)) bad(spec, "a modal matrix override has the wrong size");
+}
+
+}  // namespace
+
+ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
+  check_spec(spec);
+  ElasticLink link;
+  link.name = spec.name;
+  link.length_m = spec.length_m;
+  link.shapes = spec.shapes;
+  const int n = link.modes();
+  const double L = spec.length_m, mu = spec.mass_per_length_kg_m;
+
+  link.shape_moment = Eigen::Matrix2Xd::Zero(2, n);
+  link.axial_coupling = Eigen::VectorXd::Zero(n);
+  link.bending_coupling = Eigen::VectorXd::Zero(n);
+  link.modal_mass = Eigen::MatrixXd::Zero(n, n);
+  link.gyroscopic = Eigen::MatrixXd::Zero(n, n);
+  link.modal_stiffness = Eigen::MatrixXd::Zero(n, n);
+
+  // Highest shape wavenumber decides the panels: 16 nodes per half-wave is
+  // far beyond what a product of two sines needs for rounding accuracy.
+  int highest = 1;
+  for (const ShapeFunction& f : spec.shapes) highest = std::max(highest, 2 * f.index);
+  const QuadratureRule rule = gauss_legendre_unit(20, highest);
+  std::vector<ShapeValue> v(static_cast<std::size_t>(n));
+  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+    const double xi = rule.nodes[q], w = rule.weights[q] * L;  // ds = L·dξ
+    const double s = xi * L;
+    for (int k = 0; k < n; ++k) v[static_cast<std::size_t>(k)] = evaluate(spec.shapes[static_cast<std::size_t>(k)], xi);
+    for (int k = 0; k < n; ++k) {
+      const ShapeValue& a = v[static_cast<std::size_t>(k)];
+      link.shape_moment(0, k) += w * mu * a.x;
+      link.shape_moment(1, k) += w * mu * a.y;
+      link.axial_coupling(k) += w * mu * s * a.x;
+      link.bending_coupling(k) += w * mu * s * a.y;
+      for (int j = 0; j < n; ++j) {
+        const ShapeValue& b = v[static_cast<std::size_t>(j)];
+        link.modal_mass(k, j) += w * mu * (a.x * b.x + a.y * b.y);
+        link.gyroscopic(k, j) += w * mu * (a.x * b.y - a.y * b.x);
+        // Φ'' in s is Φ''(ξ)/L², Φ' is Φ'(ξ)/L.
+        link.modal_stiffness(k, j) += w * (spec.bending_stiffness_N_m2 * a.ddy * b.ddy / (L * L * L * L) +
+                                           spec.axial_stiffness_N * a.dx * b.dx / (L * L));
+      }
+    }
+  }
+  if (spec.modal_mass_override) link.modal_mass = *spec.modal_mass_override;
+  if (spec.modal_stiffness_override) link.modal_stiffness = *spec.modal_stiffness_override;
+
+  link.mass_kg = mu * L;
+  link.first_moment_kg_m = {mu * L * L / 2, 0.0};
+  link.inertia_origin_kg_m2 = mu * L * L * L / 3 + link.mass_kg * spec.depth_m * spec.depth_m / 12;
+  if (spec.rigid) {
+    const RigidInertia& r = *spec.rigid;
+    if (!(r.mass_kg > 0) || !(r.inertia_origin_kg_m2 > 0))
+      bad(spec, "its rigid mass and inertia must be > 0 (check the link's mass_kg and inertia_kg_mm2)");
+    link.mass_kg = r.mass_kg;
+    link.first_moment_kg_m = {r.mass_kg * r.mass_centre_m, 0.0};
+    link.inertia_origin_kg_m2 = r.inertia_origin_kg_m2;
+  }
+
+  if (!spec.measured_frequencies_Hz.empty()) {
+    // The shapes are the modes (uniform μ, pinned–pinned sines: M_ff is
+    // diagonal); each gets the stiffness that makes it ring at f_k.
+    for (int k = 0; k < n; ++k) {
+      const double w = 2 * std::numbers::pi * spec.measured_frequencies_Hz[static_cast<std::size_t>(k)];
+      link.modal_stiffness.row(k).setZero();
+      link.modal_stiffness(k, k) = w * w * link.modal_mass(k, k);
+    }
+  }
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(link.modal_stiffness, link.modal_mass);
+  if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0))
+    bad(spec,
+        "its modes have no stiffness (an eigenvalue of K·ψ = ω²·M·ψ is <= 0); check E, the second moment "
+        "and the area, or the measured frequencies");
+  link.frequencies_rad_s = eig.eigenvalues().cwiseSqrt();
+  link.mode_vectors = eig.eigenvectors();
+
+  link.damping_ratios = Eigen::VectorXd::Zero(n);
+  for (int k = 0; k < n && !spec.damping_ratios.empty(); ++k)
+    link.damping_ratios(k) = spec.damping_ratios[std::min(static_cast<std::size_t>(k), spec.damping_ratios.size() - 1)];
+  const Eigen::MatrixXd mpsi = link.modal_mass * link.mode_vectors;
+  link.modal_damping =
+      mpsi * (2 * link.damping_ratios.cwiseProduct(link.frequencies_rad_s)).asDiagonal() * mpsi.transpose();
+  return link;
+}
+
+}  // namespace fourbar

@@ -1,0 +1,85 @@
+// `fourbar tap REC` on virtual tap recordings (CSV with a time column): the
+// rig-file lines it prints hold the known frequencies and damping ratios; a
+// recording without a decay, and a rig file whose elastic table is bad, fail
+// cleanly with exit 2 naming the file or key.
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "analyze/tap_recording.hpp"
+#include "support/clean_failure.hpp"
+#include "support/run_command.hpp"
+
+namespace fourbar {
+namespace {
+
+using testing::run_fourbar;
+using testing::TempDir;
+
+std::vector<double> numbers_after(const std::string& text, const std::string& key) {
+  std::smatch m;
+  std::vector<double> out;
+  if (!std::regex_search(text, m, std::regex(key + " = \\[([^\\]]*)\\]"))) return out;
+  std::string list = m[1];
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(std::stod(item));
+  return out;
+}
+
+TEST(TapCommand, PrintsTheRigFileLines) {
+  TempDir dir;
+  const auto rec = testing::virtual_tap({{600.0, 0.01, 1.0, 0.0}, {625.0, 0.015, 0.7, 2.0}}, 30, 4);
+  const auto file = dir.write("tap.csv", testing::tap_csv(rec));
+  const auto r = run_fourbar("tap " + file.string() + " --link rocker");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("[rocker.elastic]"), std::string::npos) << r.out;
+  const auto f = numbers_after(r.out, "mode_frequencies_Hz");
+  const auto z = numbers_after(r.out, "damping_ratios");
+  ASSERT_EQ(f.size(), 2u) << r.out;
+  ASSERT_EQ(z.size(), 2u) << r.out;
+  EXPECT_NEAR(f[0] / 600.0, 1.0, 0.005) << r.out;
+  EXPECT_NEAR(f[1] / 625.0, 1.0, 0.005) << r.out;
+  EXPECT_NEAR(z[0] / 0.01, 1.0, 0.10) << r.out;
+  EXPECT_NEAR(z[1] / 0.015, 1.0, 0.10) << r.out;
+  // The lines paste into a rig file that loads.
+  const std::string rig = std::regex_replace(testing::thesis_rig_toml(), std::regex("\\[clearance\\]"),
+                                             r.out.substr(r.out.find("[rocker.elastic]")) + "\n[clearance]");
+  const auto checked = run_fourbar("rig " + dir.write("rig.toml", rig).string());
+  EXPECT_EQ(checked.status, 0) << checked.err << rig;
+  EXPECT_NE(checked.out.find("rocker  modes: 600"), std::string::npos) << checked.out;
+}
+
+TEST(TapCommand, ARecordingWithoutADecayIsExit2) {
+  TempDir dir;
+  auto rec = testing::virtual_tap({{600.0, 0.01, 1.0, 0.0}}, 30, 1);
+  for (std::size_t i = 0; i < rec.samples.size(); ++i)
+    rec.samples[i] = 0.5 * std::sin(2 * 3.14159265 * 50 * static_cast<double>(i) / rec.sample_rate_hz);
+  const auto file = dir.write("hum.csv", testing::tap_csv(rec));
+  const auto r = run_fourbar("tap " + file.string());
+  testing::expect_clean_failure(r, "hum.csv", dir.path() / "none");
+  EXPECT_NE(r.err.find("no free decay"), std::string::npos) << r.err;
+}
+
+TEST(TapCommand, BadElasticRigKeysAreExit2) {
+  TempDir dir;
+  const struct {
+    std::string table, key;
+  } cases[] = {
+      {"mode_frequencies_Hz = [0, 2400]\n", "coupler.elastic.mode_frequencies_Hz"},
+      {"mode_frequencies_Hz = [600]\ndamping_ratios = [1.5]\n", "coupler.elastic.damping_ratios"},
+      {"E_GPa = 210\nwidth_mm = 25\nthickness_mm = 0\n", "coupler.elastic.thickness_mm"},
+  };
+  for (const auto& c : cases) {
+    const auto file = dir.write("bad.toml", testing::thesis_rig_toml() + "\n[coupler.elastic]\n" + c.table);
+    const auto r = run_fourbar("rig " + file.string());
+    SCOPED_TRACE(c.table);
+    testing::expect_clean_failure(r, c.key, dir.path() / "none");
+  }
+}
+
+}  // namespace
+}  // namespace fourbar
