@@ -41,6 +41,9 @@ struct LinkageSample {
   double theta3_rad = 0, theta4_rad = 0, omega3_rad_s = 0, omega4_rad_s = 0;
   double alpha3_rad_s2 = 0, alpha4_rad_s2 = 0, crank_torque_Nm = 0;
   double kinetic_energy_J = 0, potential_energy_J = 0;
+  double strain_energy_J = 0;  ///< elastic links' ½ηᵀKη
+  /// Modal coordinates η (m) of the coupler [0] and rocker [1], zero on a rigid link.
+  std::array<std::array<double, 4>, 2> modal_m{};
   bool in_contact = false;  ///< any joint
   std::array<JointSample, kJoints> joint{};
 };
@@ -66,6 +69,7 @@ struct LinkageJointBooks {
 struct LinkageDiagnostics {
   std::array<LinkageJointBooks, kJoints> joint{};
   double crank_work_J = 0, energy_start_J = 0, energy_end_J = 0, dissipated_J = 0;
+  double modal_damping_loss_J = 0;  ///< elastic links' 2ζωM damping (part of dissipated_J)
   double energy_residual_J = 0, max_energy_residual_J = 0, energy_scale_J = 1;
   std::size_t steps = 0;
 };
