@@ -83,6 +83,9 @@ std::string outputs_help() {
   s += help_line("elastic_links", "[\"coupler\", \"rocker\"]: links with the rig's [<link>.elastic] modes\n"
                  "                      (default: none, rigid); modal damping is booked as its own loss");
   s += help_line("elastic_modes", "pinned-pinned modes per elastic link, 1 to 4 (default: the table's modes)");
+  s += help_line("coupler_sensors_mm", "[distance, offset, ...] pairs (mm from A, lateral): an accelerometer's\n"
+                 "                      tangential reading column coupler_acc_<d>mm_<h>mm_m_s2 (rigid plus elastic)");
+  s += help_line("rocker_sensors_mm", "the same on the rocker (distance from O4): rocker_acc_<d>mm_<h>mm_m_s2");
   s += help_line("restitution", "e in [0, 1] (required)");
   s += help_line("contact_stiffness_N_per_m_n", "K > 0 (required); damping, contact_exponent, friction_* and the\n"
                  "                      film keys as with [clearance] model = \"compliant\"");

@@ -75,6 +75,20 @@ LinkageSettings read_linkage_settings(TomlSection& s, const Rig& rig) {
                                     "; lower elastic_modes or raise the table's modes");
     }
   }
+  for (int b : {1, 2}) {
+    const std::string key = b == 1 ? "coupler_sensors_mm" : "rocker_sensors_mm";
+    if (!s.has(key)) continue;
+    const std::vector<double> v = s.numbers(key);
+    const double L_mm = (b == 1 ? rig.coupler.length_m : rig.rocker.length_m) * 1e3;
+    if (v.empty() || v.size() % 2 != 0)
+      s.fail(key, "must hold (distance_mm, offset_mm) pairs, e.g. [154.5, 0.0, 300.0, 5.0]");
+    for (std::size_t i = 0; i < v.size(); i += 2) {
+      if (!(v[i] > 0 && v[i] <= L_mm))
+        s.fail(key, "has a distance of " + format_double(v[i]) + " mm; it must be in (0, " + format_double(L_mm) +
+                        "] mm, measured from the link's first joint");
+      out.sensors.push_back({b, v[i] * 1e-3, v[i + 1] * 1e-3});
+    }
+  }
   spec.tolerance = s.in_range("tolerance", 1e-14, 1e-3, 1e-10);
   spec.settle_speed_m_s = s.in_range("settle_speed_mm_s", 0.0, 1e6, 1e-3) * 1e-3;
   if (s.has("crank_motion")) out.crank_table = s.path("crank_motion");

@@ -85,6 +85,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
   };
   std::array<Episode, kJoints> ep{};
   std::vector<double> sample_times;
+  std::vector<LinkSensor> sensors;
   std::size_t next_sample = 0;
   std::vector<LinkageSample> samples;
   std::vector<LinkageContact> contacts;
@@ -371,6 +372,9 @@ struct LinkageSimulator::Impl final : LinkageOde {
     s.kinetic_energy_J = kinetic_energy_J(ws, c);
     s.potential_energy_J = potential_energy_J(model, ws, c);
     s.strain_energy_J = ws.strain_energy_J;
+    for (const LinkSensor& x : sensors) s.sensor_m_s2.push_back(sensor_reading(model, c, ws, x).tangential_m_s2);
+    for (int b = 1; b < kBodies; ++b)
+      s.midspan_deflection_m[static_cast<std::size_t>(b - 1)] = midspan_deflection_m(model, c, ws, b);
     for (int b = 1; b < kBodies; ++b)
       if (const ElasticLink* link = model.elastic(b))
         for (int k = 0; k < link->modes(); ++k)
@@ -450,6 +454,8 @@ void LinkageSimulator::set_sample_times(std::vector<double> times) {
   impl_->sample_times = std::move(times);
   impl_->next_sample = 0;
 }
+
+void LinkageSimulator::set_sensors(std::vector<LinkSensor> sensors) { impl_->sensors = std::move(sensors); }
 
 void LinkageSimulator::advance_to(double t_end) { impl_->advance_to(t_end); }
 double LinkageSimulator::time() const { return impl_->absolute(impl_->t); }

@@ -17,6 +17,7 @@
 
 #include "sim/clearance/crank_motion.hpp"
 #include "sim/linkage/linkage_model.hpp"
+#include "sim/linkage/linkage_sensor.hpp"
 
 namespace fourbar {
 
@@ -44,6 +45,8 @@ struct LinkageSample {
   double strain_energy_J = 0;  ///< elastic links' ½ηᵀKη
   /// Modal coordinates η (m) of the coupler [0] and rocker [1], zero on a rigid link.
   std::array<std::array<double, 4>, 2> modal_m{};
+  std::array<double, 2> midspan_deflection_m{};  ///< coupler, rocker (0 when rigid)
+  std::vector<double> sensor_m_s2;               ///< tangential readings, set_sensors' order
   bool in_contact = false;  ///< any joint
   std::array<JointSample, kJoints> joint{};
 };
@@ -83,6 +86,8 @@ class LinkageSimulator {
   /// The nominal links at t0 with every pin centred and moving with its bushing.
   void start_centred(double t0);
   void set_sample_times(std::vector<double> times);
+  /// Accelerometers whose tangential reading each sample records.
+  void set_sensors(std::vector<LinkSensor> sensors);
   void advance_to(double t_end);
 
   double time() const;
