@@ -357,6 +357,7 @@ int write_linkage_run(const Scene& scene, const LinkageRun& run, const std::file
                           {"end_J", d.energy_end_J},
                           {"crank_work_J", d.crank_work_J},
                           {"dissipated_J", d.dissipated_J},
+                          {"modal_damping_J", d.modal_damping_loss_J},
                           {"residual_J", d.energy_residual_J},
                           {"max_residual_J", d.max_energy_residual_J},
                           {"scale_J", d.energy_scale_J},
