@@ -80,6 +80,12 @@ std::string outputs_help() {
   s += help_line("crank_coupler_radial_mm", "radial clearance of the crank-coupler joint (default 0: ideal)");
   s += help_line("coupler_rocker_radial_mm", "coupler-rocker joint (default: the rig's [clearance] radial_mm)");
   s += help_line("rocker_ground_radial_mm", "rocker-ground joint (default 0: ideal)");
+  s += help_line("elastic_links", "[\"coupler\", \"rocker\"]: links with the rig's [<link>.elastic] modes\n"
+                 "                      (default: none, rigid); modal damping is booked as its own loss");
+  s += help_line("elastic_modes", "pinned-pinned modes per elastic link, 1 to 4 (default: the table's modes)");
+  s += help_line("coupler_sensors_mm", "[distance, offset, ...] pairs (mm from A, lateral): an accelerometer's\n"
+                 "                      tangential reading column coupler_acc_<d>mm_<h>mm_m_s2 (rigid plus elastic)");
+  s += help_line("rocker_sensors_mm", "the same on the rocker (distance from O4): rocker_acc_<d>mm_<h>mm_m_s2");
   s += help_line("restitution", "e in [0, 1] (required)");
   s += help_line("contact_stiffness_N_per_m_n", "K > 0 (required); damping, contact_exponent, friction_* and the\n"
                  "                      film keys as with [clearance] model = \"compliant\"");
@@ -351,6 +357,7 @@ int write_linkage_run(const Scene& scene, const LinkageRun& run, const std::file
                           {"end_J", d.energy_end_J},
                           {"crank_work_J", d.crank_work_J},
                           {"dissipated_J", d.dissipated_J},
+                          {"modal_damping_J", d.modal_damping_loss_J},
                           {"residual_J", d.energy_residual_J},
                           {"max_residual_J", d.max_energy_residual_J},
                           {"scale_J", d.energy_scale_J},

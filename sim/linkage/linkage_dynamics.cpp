@@ -26,6 +26,73 @@ BodyFrame ground_frame(int size) {
   return g;
 }
 
+
+/// T = ∂(R, θ, η)/∂ż of an elastic body: its frame's Jp and Jw, then the
+/// selection of its modal coordinates.
+Eigen::MatrixXd body_map(const BodyFrame& b, int first_mode, int modes, int nz) {
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(3 + modes, nz);
+  T.topRows(2) = b.Jp;
+  T.row(2) = b.Jw;
+  for (int k = 0; k < modes; ++k) T(3 + k, first_mode + k) = 1.0;
+  return T;
+}
+
+/// M += Tᵀ·M_b·T and Q += Tᵀ·(Q_v − K·η − D·η̇ + gravity − M_b·bias) from
+/// sim/flex's body terms; the modal damping's power and the strain energy go
+/// to their own books.
+void add_elastic_body(const LinkageModel& m, const LinkageCoordinates& c, const ElasticLink& link, int body,
+                      LinkageWorkspace& w) {
+  const int nz = m.coordinates() + 1, modes = link.modes();
+  const BodyFrame& b = w.body[static_cast<std::size_t>(body)];
+  const FrameState frame = frame_state(w, body, false);
+  const ModalState modal = modal_state(m, c, w, body, false);
+  ElasticBodyData data(link);
+  body_terms(link, data, frame, modal);
+  const Eigen::MatrixXd T = body_map(b, m.modal_index(body), modes, nz);
+  Eigen::VectorXd bias = Eigen::VectorXd::Zero(3 + modes);
+  bias << b.a_bias.x, b.a_bias.y, b.alpha_bias, Eigen::VectorXd::Zero(modes);
+  // Gravity's generalised force: ∫μ g·δr ds = gᵀ·(rows R of M_b)·δz.
+  const Eigen::VectorXd gravity = data.mass.topRows(2).transpose() * Eigen::Vector2d(0, -m.rig().gravity_m_s2);
+  const Eigen::VectorXd qb =
+      data.quadratic_force + data.stiffness_force + data.damping_force + gravity - data.mass * bias;
+  w.M += T.transpose() * data.mass * T;
+  w.Q += T.transpose() * qb;
+  w.strain_energy_J += strain_energy(link, modal);
+  w.modal_damping_power_W += -modal.eta_dot_m_s.dot(data.damping_force.tail(modes));
+}
+
+}  // namespace
+
+FrameState frame_state(const LinkageWorkspace& w, int body, bool with_accel) {
+  const BodyFrame& b = w.body[static_cast<std::size_t>(body)];
+  FrameState f;
+  f.origin_m = b.p;
+  f.angle_rad = std::atan2(b.u.y, b.u.x);
+  const Eigen::Vector2d v = b.Jp * w.z_rate_cache;
+  f.velocity_m_s = {v(0), v(1)};
+  f.angular_velocity_rad_s = b.omega;
+  if (with_accel) {
+    const Eigen::Vector2d a = b.Jp * w.z_accel;
+    f.acceleration_m_s2 = Vec2{a(0), a(1)} + b.a_bias;
+    f.angular_acceleration_rad_s2 = b.Jw.dot(w.z_accel) + b.alpha_bias;
+  }
+  return f;
+}
+
+ModalState modal_state(const LinkageModel& m, const LinkageCoordinates& c, const LinkageWorkspace& w, int body,
+                       bool with_accel) {
+  const ElasticLink* link = m.elastic(body);
+  const int modes = link ? link->modes() : 0, i0 = m.modal_index(body);
+  ModalState s{Eigen::VectorXd::Zero(modes), Eigen::VectorXd::Zero(modes), Eigen::VectorXd::Zero(modes)};
+  for (int k = 0; k < modes; ++k) {
+    s.eta_m(k) = c.q_offsets(i0 + k);
+    s.eta_dot_m_s(k) = c.z_rate(i0 + k);
+    if (with_accel) s.eta_ddot_m_s2(k) = w.z_accel(i0 + k);
+  }
+  return s;
+}
+
+namespace {
 }  // namespace
 
 Vec2 site_position(const LinkageWorkspace& w, const Site& s) {
@@ -36,6 +103,7 @@ Vec2 site_position(const LinkageWorkspace& w, const Site& s) {
 
 void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w) {
   const int n = m.coordinates(), nz = n + 1;
+  w.z_rate_cache = c.z_rate;
   const BodyFrame ground = ground_frame(nz);
   auto frame = [&](int b) -> const BodyFrame& { return b == kGround ? ground : w.body[static_cast<std::size_t>(b)]; };
   // The crank: origin O2, angle z[n].
@@ -138,9 +206,14 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
   w.M = ZMat::Zero(nz, nz);
   w.Q = ZVec::Zero(nz);
   const double g = m.rig().gravity_m_s2;
+  w.strain_energy_J = w.modal_damping_power_W = 0;
   for (int k = 0; k < kBodies; ++k) {
     const BodyData& bd = m.body(k);
     const BodyFrame& b = w.body[static_cast<std::size_t>(k)];
+    if (const ElasticLink* link = m.elastic(k)) {
+      add_elastic_body(m, c, *link, k, w);
+      continue;
+    }
     const Vec2 rc = rotate(b.u, bd.centre_m);
     const ZJac Jc = point_jacobian(b, rc);
     const Vec2 ac = point_bias(b, rc);
@@ -165,10 +238,16 @@ double kinetic_energy_J(const LinkageWorkspace& w, const LinkageCoordinates& c) 
   return 0.5 * c.z_rate.dot(w.M * c.z_rate);
 }
 
-double potential_energy_J(const LinkageModel& m, const LinkageWorkspace& w) {
+double potential_energy_J(const LinkageModel& m, const LinkageWorkspace& w, const LinkageCoordinates& c) {
   double v = 0;
   for (int k = 0; k < kBodies; ++k) {
     const BodyFrame& b = w.body[static_cast<std::size_t>(k)];
+    if (const ElasticLink* link = m.elastic(k)) {
+      // m·R_y + (A·(S0 + S̄·η))_y
+      const Eigen::Vector2d s = link->first_moment_kg_m + link->shape_moment * modal_state(m, c, w, k, false).eta_m;
+      v += link->mass_kg * b.p.y + rotate(b.u, {s(0), s(1)}).y;
+      continue;
+    }
     v += m.body(k).mass_kg * (b.p + rotate(b.u, m.body(k).centre_m)).y;
   }
   return m.rig().gravity_m_s2 * v;

@@ -18,11 +18,12 @@
 #include <Eigen/Dense>
 
 #include "mechanism/kinematics.hpp"
+#include "sim/flex/elastic_body.hpp"
 #include "sim/linkage/linkage_model.hpp"
 
 namespace fourbar {
 
-inline constexpr int kMaxFull = 8;  ///< n + 1 ≤ 7 (six coordinates and the crank)
+inline constexpr int kMaxFull = kMaxFullCoordinates;
 using ZVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxFull, 1>;
 using ZRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxFull>;
 using ZJac = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxFull>;
@@ -33,7 +34,7 @@ struct LinkageCoordinates {
   CrankState crank;
   Vec2 u2;                   ///< (cos θ2, sin θ2)
   std::array<Vec2, 2> u;     ///< coupler and rocker directions (u3, u4)
-  ZVec q_offsets;            ///< size n: the offsets d at their indices (angle entries unused)
+  ZVec q_offsets;            ///< size n: the offsets d and the modal η at their indices (angle entries unused)
   ZVec z_rate;               ///< size n + 1: q̇ and ω2
 };
 
@@ -69,10 +70,14 @@ struct LinkageWorkspace {
   // position and velocity stage
   std::array<BodyFrame, kBodies> body;
   std::array<PairState, kJoints> pair;  ///< valid for the clearance joints
+  ZVec z_rate_cache;                    ///< ż of the last forward_kinematics
   // acceleration stage
   ZMat M;
   ZVec Q, z_accel;
   double crank_torque_Nm = 0;
+  /// Elastic links (solve_accelerations): strain energy ½ηᵀKη and the modal
+  /// damping's dissipated power η̇ᵀDη̇ (≥ 0), summed over the elastic bodies.
+  double strain_energy_J = 0, modal_damping_power_W = 0;
 };
 
 /// Frames of all bodies, the pairs' geometry and relative velocities.
@@ -88,8 +93,15 @@ void pair_forces(const LinkageModel& m, const std::array<double, kJoints>& chi, 
 /// M, Q (gravity, pair forces, biases), z̈ with z̈[n] = α2, the motor torque.
 void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w);
 
-/// ½·żᵀ·M·ż (needs solve_accelerations' M) and the potential energy of gravity.
+/// ½·żᵀ·M·ż (needs solve_accelerations' M) and the potential energy of gravity
+/// (an elastic body's mass centre moves with its modes).
 double kinetic_energy_J(const LinkageWorkspace& w, const LinkageCoordinates& c);
-double potential_energy_J(const LinkageModel& m, const LinkageWorkspace& w);
+double potential_energy_J(const LinkageModel& m, const LinkageWorkspace& w, const LinkageCoordinates& c);
+
+/// An elastic body's frame and modes as sim/flex's states (accelerations from
+/// w.z_accel when `with_accel`, else zero).
+FrameState frame_state(const LinkageWorkspace& w, int body, bool with_accel);
+ModalState modal_state(const LinkageModel& m, const LinkageCoordinates& c, const LinkageWorkspace& w, int body,
+                       bool with_accel);
 
 }  // namespace fourbar

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "common/error.hpp"
+#include "sim/flex/elastic_body.hpp"
+#include "sim/flex/rig_elastic_link.hpp"
 
 namespace fourbar {
 
@@ -79,6 +81,40 @@ LinkageModel build_linkage(const Rig& rig, const LinkageSpec& spec) {
         p.offset_index = next_offset;
         next_offset += 2;
       }
+  // Elastic links: modal coordinates after the offsets.
+  for (int b : {coupler, rocker}) {
+    if (!spec.elastic[static_cast<std::size_t>(b)]) continue;
+    const RigLink which = b == coupler ? RigLink::coupler : RigLink::rocker;
+    std::optional<ElasticLinkSpec> es = rig_elastic_spec(rig, which);
+    if (!es)
+      throw InputError(std::string("[linkage] elastic_links names \"") + to_string(which) + "\" but the rig has no [" +
+                       to_string(which) + ".elastic] table; add one (docs/flex.md) or remove the link");
+    const int have = static_cast<int>(es->shapes.size());
+    const int want = spec.elastic_modes > 0 ? spec.elastic_modes : have;
+    if (want > have)
+      throw InputError("[linkage] elastic_modes = " + std::to_string(want) + " but the rig's [" + to_string(which) +
+                       ".elastic] gives " + std::to_string(have) + " modes; lower elastic_modes or raise modes");
+    if (want > 4)
+      throw InputError("[linkage] elastic_modes: at most 4 modes per link (the rig's [" + std::string(to_string(which)) +
+                       ".elastic] gives " + std::to_string(have) + "); set elastic_modes <= 4");
+    es->shapes.resize(static_cast<std::size_t>(want));
+    if (es->measured_frequencies_Hz.size() > es->shapes.size()) es->measured_frequencies_Hz.resize(es->shapes.size());
+    auto& link = m.elastic_[static_cast<std::size_t>(b)];
+    link = build_elastic_link(*es);
+    // The joints sit at the link's ends; the deformed site positions must be
+    // the rigid ones there (pinned–pinned modes vanish at both ends), else the
+    // placement below would need the deflection's Jacobian.
+    for (double s_m : {0.0, link->length_m}) {
+      const Vec2 d = deflection(*link, s_m, Eigen::VectorXd::Ones(want));
+      if (std::abs(d.x) + std::abs(d.y) > 1e-12 * link->length_m)
+        throw InputError(std::string("[") + to_string(which) + ".elastic]: a mode moves a joint; only pinned-pinned modes");
+    }
+    m.modal_index_[static_cast<std::size_t>(b)] = next_offset;
+    next_offset += want;
+  }
+  if (next_offset + 1 > kMaxFullCoordinates)
+    throw InputError("[linkage] elastic_modes: too many coordinates (" + std::to_string(next_offset) +
+                     "); at most 4 modes per link");
   m.n_ = next_offset;
   m.hysteresis_ = hysteresis_factor(spec.law.damping, spec.law.restitution, spec.law.exponent);
   return m;

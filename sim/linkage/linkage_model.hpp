@@ -30,6 +30,7 @@
 // left (use model = "nominal").
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,7 @@
 #include "mechanism/vec2.hpp"
 #include "sim/contact/contact_force.hpp"
 #include "sim/contact/film_force.hpp"
+#include "sim/flex/elastic_link.hpp"
 
 namespace fourbar {
 
@@ -46,6 +48,8 @@ inline constexpr int kBodies = 3;
 
 enum class LinkJoint { crank_coupler = 0, coupler_rocker = 1, rocker_ground = 2 };
 inline constexpr int kJoints = 3;
+/// n + 1 at most: six joint coordinates, four modes on each of two links, the crank.
+inline constexpr int kMaxFullCoordinates = 16;
 /// "crank_coupler", "coupler_rocker", "rocker_ground" (impacts.csv's `joint`).
 const char* to_string(LinkJoint j);
 
@@ -59,6 +63,10 @@ struct LinkageSpec {
   double damping_floor_speed_m_s = 1e-5;
   double settle_speed_m_s = 1e-6;  ///< an onset faster than this is an impact
   double tolerance = 1e-10;        ///< CVODE relative and absolute, on the scaled state
+  /// Elastic bodies (LinkBody order; the crank stays rigid): the rig's
+  /// [<link>.elastic] table as sim/flex's floating frame with pinned–pinned modes.
+  std::array<bool, kBodies> elastic{false, false, false};
+  int elastic_modes = 0;  ///< modes per elastic link; 0: the rig table's `modes`
 };
 
 /// A point fixed in a body (or the ground) frame.
@@ -103,6 +111,14 @@ class LinkageModel {
   const std::vector<int>& clearance_joints() const { return clearance_joints_; }
   /// Generalised coordinates n (the crank angle is z[n] in the full set).
   int coordinates() const { return n_; }
+  /// The elastic link of a body, or nullptr for a rigid one. Its modal
+  /// coordinates η sit in q from modal_index(b) on (after the joint offsets).
+  const ElasticLink* elastic(int b) const {
+    const auto& e = elastic_[static_cast<std::size_t>(b)];
+    return e ? &*e : nullptr;
+  }
+  int modal_index(int b) const { return modal_index_[static_cast<std::size_t>(b)]; }
+  bool any_elastic() const { return elastic_[1].has_value() || elastic_[2].has_value(); }
   /// Largest clearance: the angle scale is this over l3.
   double reference_clearance_m() const { return xi_ref_; }
   double hysteresis() const { return hysteresis_; }
@@ -117,13 +133,17 @@ class LinkageModel {
   std::array<JointData, kJoints> joints_{};
   std::array<Placement, 2> placements_{};
   std::vector<int> clearance_joints_;
+  std::array<std::optional<ElasticLink>, kBodies> elastic_{};
+  std::array<int, kBodies> modal_index_{-1, -1, -1};
   int cut_ = 0, n_ = 0;
   double xi_ref_ = 0, hysteresis_ = 0;
 };
 
 /// Builds and validates once; InputError (naming the [linkage] key) when no
 /// joint has clearance, a clearance is negative or not finite, the contact
-/// stiffness is missing, or a lubricant lacks the bearing's radius or length.
+/// stiffness is missing, or a lubricant lacks the bearing's radius or length;
+/// an elastic link needs the rig's [<link>.elastic] table and at most its
+/// `modes` modes.
 LinkageModel build_linkage(const Rig& rig, const LinkageSpec& spec);
 
 }  // namespace fourbar

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/number_text.hpp"
 #include "common/units.hpp"
 #include "sim/clearance/run.hpp"
 #include "sim/linkage/tabulated_crank.hpp"
@@ -32,6 +33,7 @@ LinkageRun run_linkage(const Scene& scene) {
   }
   LinkageSimulator sim(model, *crank);
   sim.set_sample_times(times);
+  sim.set_sensors(scene.linkage.sensors);
   sim.start_centred(0.0);
   sim.advance_to(out.duration_s);
   out.contacts = sim.contacts();
@@ -49,6 +51,16 @@ LinkageRun run_linkage(const Scene& scene) {
   const char* per_joint[] = {"gap_mm", "penetration_mm", "contact_force_N", "fx_N", "fy_N"};
   for (int j : out.clearance_joints)
     for (const char* p : per_joint) out.series.names.push_back(std::string(to_string(static_cast<LinkJoint>(j))) + "_" + p);
+  const char* link_names[] = {"coupler", "rocker"};
+  for (const LinkSensor& x : scene.linkage.sensors)
+    out.series.names.push_back(std::string(link_names[x.body - 1]) + "_acc_" + format_double(x.distance_m * 1e3) + "mm_" +
+                               format_double(x.offset_m * 1e3) + "mm_m_s2");
+  for (int b = 1; b < kBodies; ++b)
+    if (const ElasticLink* link = model.elastic(b)) {
+      for (int k = 0; k < link->modes(); ++k)
+        out.series.names.push_back(std::string(link_names[b - 1]) + "_eta" + std::to_string(k + 1) + "_um");
+      out.series.names.push_back(std::string(link_names[b - 1]) + "_midspan_deflection_um");
+    }
   out.series.columns.assign(out.series.names.size(), std::vector<double>(times.size()));
   const std::vector<LinkageSample>& samples = sim.samples();
   const auto main = static_cast<std::size_t>(model.cut_joint());
@@ -84,6 +96,13 @@ LinkageRun run_linkage(const Scene& scene) {
                        js.pin_force_N.y})
         out.series.columns[col++][i] = v;
     }
+    for (double v : s.sensor_m_s2) out.series.columns[col++][i] = v;
+    for (int b = 1; b < kBodies; ++b)
+      if (const ElasticLink* link = model.elastic(b)) {
+        const auto bu = static_cast<std::size_t>(b - 1);
+        for (int k = 0; k < link->modes(); ++k) out.series.columns[col++][i] = s.modal_m[bu][static_cast<std::size_t>(k)] * 1e6;
+        out.series.columns[col++][i] = s.midspan_deflection_m[bu] * 1e6;
+      }
   }
   return out;
 }

@@ -1,5 +1,8 @@
 #include "sim/linkage/linkage_settings.hpp"
 
+#include <cmath>
+#include <string>
+
 #include "common/number_text.hpp"
 #include "sim/clearance/settings.hpp"
 
@@ -48,6 +51,43 @@ LinkageSettings read_linkage_settings(TomlSection& s, const Rig& rig) {
                                          "force depends on both); add them to the rig or remove the viscosity");
     spec.film.radius_m = *rig.bearing.pin_radius_m;
     spec.film.length_m = *rig.bearing.length_m;
+  }
+  if (s.has("elastic_links")) {
+    for (const std::string& name : s.strings("elastic_links")) {
+      const bool coupler = name == "coupler";
+      if (!coupler && name != "rocker")
+        s.fail("elastic_links", "names \"" + name + "\"; only \"coupler\" and \"rocker\" can be elastic");
+      if (!(coupler ? rig.coupler_elastic : rig.rocker_elastic))
+        s.fail("elastic_links", "names \"" + name + "\" but the rig has no [" + name +
+                                    ".elastic] table; add one (docs/flex.md) or remove the link");
+      spec.elastic[coupler ? 1U : 2U] = true;
+    }
+  }
+  if (s.has("elastic_modes")) {
+    const double modes = s.in_range("elastic_modes", 1.0, 4.0);
+    if (modes != std::floor(modes)) s.fail("elastic_modes", "must be a whole number of modes, 1 to 4");
+    spec.elastic_modes = static_cast<int>(modes);
+    for (int b : {1, 2}) {
+      const auto& e = b == 1 ? rig.coupler_elastic : rig.rocker_elastic;
+      if (spec.elastic[static_cast<std::size_t>(b)] && e && e->modes < spec.elastic_modes)
+        s.fail("elastic_modes", "asks for " + std::to_string(spec.elastic_modes) + " modes but the rig's [" +
+                                    (b == 1 ? "coupler" : "rocker") + ".elastic] gives " + std::to_string(e->modes) +
+                                    "; lower elastic_modes or raise the table's modes");
+    }
+  }
+  for (int b : {1, 2}) {
+    const std::string key = b == 1 ? "coupler_sensors_mm" : "rocker_sensors_mm";
+    if (!s.has(key)) continue;
+    const std::vector<double> v = s.numbers(key);
+    const double L_mm = (b == 1 ? rig.coupler.length_m : rig.rocker.length_m) * 1e3;
+    if (v.empty() || v.size() % 2 != 0)
+      s.fail(key, "must hold (distance_mm, offset_mm) pairs, e.g. [154.5, 0.0, 300.0, 5.0]");
+    for (std::size_t i = 0; i < v.size(); i += 2) {
+      if (!(v[i] > 0 && v[i] <= L_mm))
+        s.fail(key, "has a distance of " + format_double(v[i]) + " mm; it must be in (0, " + format_double(L_mm) +
+                        "] mm, measured from the link's first joint");
+      out.sensors.push_back({b, v[i] * 1e-3, v[i + 1] * 1e-3});
+    }
   }
   spec.tolerance = s.in_range("tolerance", 1e-14, 1e-3, 1e-10);
   spec.settle_speed_m_s = s.in_range("settle_speed_mm_s", 0.0, 1e6, 1e-3) * 1e-3;

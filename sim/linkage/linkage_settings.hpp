@@ -11,6 +11,7 @@
 #include "common/toml_section.hpp"
 #include "mechanism/rig.hpp"
 #include "sim/linkage/linkage_model.hpp"
+#include "sim/linkage/linkage_sensor.hpp"
 
 namespace fourbar {
 
@@ -21,6 +22,9 @@ struct LinkageSettings {
   std::filesystem::path crank_table;
   /// `duration_s` with a crank table (default: the table's length).
   std::optional<double> duration_s;
+  /// `coupler_sensors_mm`, `rocker_sensors_mm`: (distance from the link's
+  /// first joint, lateral offset) pairs; each adds a tangential-reading column.
+  std::vector<LinkSensor> sensors;
 };
 
 /// Reads and validates the section; InputError naming the key otherwise.

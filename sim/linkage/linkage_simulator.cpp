@@ -36,7 +36,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
         dry(m.spec().film.viscosity_Pa_s <= 0),
         per_joint(dry ? 4 : 5),
         size(static_cast<std::size_t>(2 * n + 1) +
-             m.clearance_joints().size() * static_cast<std::size_t>(per_joint)),
+             m.clearance_joints().size() * static_cast<std::size_t>(per_joint) + (m.any_elastic() ? 1U : 0U)),
         integ(m.spec().tolerance, size, static_cast<std::size_t>(2 * n), m.clearance_joints().size()) {}
 
   const LinkageModel& model;
@@ -48,7 +48,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
   LinkageIntegrator integ;
   // scales
   double w = 1, delta = 1, energy = 1, force = 1;
-  std::array<double, 8> pos_scale{};  // per coordinate
+  std::array<double, kMaxFull> pos_scale{};  // per coordinate
   // clock
   double origin_s = 0, t = 0, seg_start = 0, start_abs = 0;
   double absolute(double time) const { return origin_s + time; }
@@ -85,6 +85,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
   };
   std::array<Episode, kJoints> ep{};
   std::vector<double> sample_times;
+  std::vector<LinkSensor> sensors;
   std::size_t next_sample = 0;
   std::vector<LinkageSample> samples;
   std::vector<LinkageContact> contacts;
@@ -93,6 +94,8 @@ struct LinkageSimulator::Impl final : LinkageOde {
   std::size_t work_index() const { return static_cast<std::size_t>(2 * n); }
   /// Quadrature base of the k-th clearance joint: contact loss, friction loss, impulse n, impulse t, (film).
   std::size_t quad(std::size_t k) const { return work_index() + 1 + k * static_cast<std::size_t>(per_joint); }
+  /// The modal damping's dissipation (elastic links only), after the joints' quadratures.
+  std::size_t modal_loss_index() const { return quad(model.clearance_joints().size()); }
 
   // ---- state conversion ----
   void coordinates(double time, const double* y, LinkageCoordinates& c) const {
@@ -149,6 +152,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
       q[3] = ps.friction_force_N * w / force;
       if (!dry) q[4] = ps.film_power_W / energy;
     }
+    if (model.any_elastic()) dy[modal_loss_index()] = ws.modal_damping_power_W / energy;
   }
 
   void witnesses(double time, const double* y, double* g) override {
@@ -170,7 +174,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
   }
 
   double total_energy(const LinkageCoordinates& c, const LinkageWorkspace& ws) const {
-    double e = kinetic_energy_J(ws, c) + potential_energy_J(model, ws);
+    double e = kinetic_energy_J(ws, c) + potential_energy_J(model, ws, c) + ws.strain_energy_J;
     for (int j : model.clearance_joints()) e += ws.pair[static_cast<std::size_t>(j)].elastic_energy_J;
     return e;
   }
@@ -181,6 +185,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
       d += y[quad(k)] + y[quad(k) + 1];
       if (!dry) d += y[quad(k) + 4];
     }
+    if (model.any_elastic()) d += y[modal_loss_index()];
     return d;
   }
 
@@ -206,6 +211,11 @@ struct LinkageSimulator::Impl final : LinkageOde {
       if (pl.offset_index >= 0)
         pos_scale[static_cast<std::size_t>(pl.offset_index)] = pos_scale[static_cast<std::size_t>(pl.offset_index) + 1] =
             model.joint(pl.joint).clearance_m;
+    // Modal coordinates: scaled by the largest clearance (a deflection of that size is an event).
+    for (int b = 0; b < kBodies; ++b)
+      if (const ElasticLink* link = model.elastic(b))
+        for (int k = 0; k < link->modes(); ++k)
+          pos_scale[static_cast<std::size_t>(model.modal_index(b) + k)] = model.reference_clearance_m();
     origin_s = start_abs = t0;
     t = seg_start = 0;
   }
@@ -360,7 +370,15 @@ struct LinkageSimulator::Impl final : LinkageOde {
     s.alpha4_rad_s2 = ws.z_accel(1);
     s.crank_torque_Nm = ws.crank_torque_Nm;
     s.kinetic_energy_J = kinetic_energy_J(ws, c);
-    s.potential_energy_J = potential_energy_J(model, ws);
+    s.potential_energy_J = potential_energy_J(model, ws, c);
+    s.strain_energy_J = ws.strain_energy_J;
+    for (const LinkSensor& x : sensors) s.sensor_m_s2.push_back(sensor_reading(model, c, ws, x).tangential_m_s2);
+    for (int b = 1; b < kBodies; ++b)
+      s.midspan_deflection_m[static_cast<std::size_t>(b - 1)] = midspan_deflection_m(model, c, ws, b);
+    for (int b = 1; b < kBodies; ++b)
+      if (const ElasticLink* link = model.elastic(b))
+        for (int k = 0; k < link->modes(); ++k)
+          s.modal_m[static_cast<std::size_t>(b - 1)][static_cast<std::size_t>(k)] = c.q_offsets(model.modal_index(b) + k);
     for (int j : model.clearance_joints()) {
       const PairState& ps = ws.pair[static_cast<std::size_t>(j)];
       JointSample& js = s.joint[static_cast<std::size_t>(j)];
@@ -437,6 +455,8 @@ void LinkageSimulator::set_sample_times(std::vector<double> times) {
   impl_->next_sample = 0;
 }
 
+void LinkageSimulator::set_sensors(std::vector<LinkSensor> sensors) { impl_->sensors = std::move(sensors); }
+
 void LinkageSimulator::advance_to(double t_end) { impl_->advance_to(t_end); }
 double LinkageSimulator::time() const { return impl_->absolute(impl_->t); }
 const std::vector<LinkageSample>& LinkageSimulator::samples() const { return impl_->samples; }
@@ -465,6 +485,7 @@ LinkageDiagnostics LinkageSimulator::diagnostics() {
     b.film_loss_J = s.dry ? 0.0 : y[s.quad(k) + 4] * s.energy;
   }
   d.dissipated_J = s.losses(y) * s.energy;
+  d.modal_damping_loss_J = s.model.any_elastic() ? y[s.modal_loss_index()] * s.energy : 0.0;
   d.energy_end_J = s.total_energy(c, ws);
   d.energy_residual_J = d.energy_end_J - d.energy_start_J - d.crank_work_J + d.dissipated_J;
   d.steps = s.integ.steps();

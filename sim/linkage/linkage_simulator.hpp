@@ -17,6 +17,7 @@
 
 #include "sim/clearance/crank_motion.hpp"
 #include "sim/linkage/linkage_model.hpp"
+#include "sim/linkage/linkage_sensor.hpp"
 
 namespace fourbar {
 
@@ -41,6 +42,11 @@ struct LinkageSample {
   double theta3_rad = 0, theta4_rad = 0, omega3_rad_s = 0, omega4_rad_s = 0;
   double alpha3_rad_s2 = 0, alpha4_rad_s2 = 0, crank_torque_Nm = 0;
   double kinetic_energy_J = 0, potential_energy_J = 0;
+  double strain_energy_J = 0;  ///< elastic links' ½ηᵀKη
+  /// Modal coordinates η (m) of the coupler [0] and rocker [1], zero on a rigid link.
+  std::array<std::array<double, 4>, 2> modal_m{};
+  std::array<double, 2> midspan_deflection_m{};  ///< coupler, rocker (0 when rigid)
+  std::vector<double> sensor_m_s2;               ///< tangential readings, set_sensors' order
   bool in_contact = false;  ///< any joint
   std::array<JointSample, kJoints> joint{};
 };
@@ -66,6 +72,7 @@ struct LinkageJointBooks {
 struct LinkageDiagnostics {
   std::array<LinkageJointBooks, kJoints> joint{};
   double crank_work_J = 0, energy_start_J = 0, energy_end_J = 0, dissipated_J = 0;
+  double modal_damping_loss_J = 0;  ///< elastic links' 2ζωM damping (part of dissipated_J)
   double energy_residual_J = 0, max_energy_residual_J = 0, energy_scale_J = 1;
   std::size_t steps = 0;
 };
@@ -79,6 +86,8 @@ class LinkageSimulator {
   /// The nominal links at t0 with every pin centred and moving with its bushing.
   void start_centred(double t0);
   void set_sample_times(std::vector<double> times);
+  /// Accelerometers whose tangential reading each sample records.
+  void set_sensors(std::vector<LinkSensor> sensors);
   void advance_to(double t_end);
 
   double time() const;

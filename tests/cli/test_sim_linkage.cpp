@@ -65,6 +65,22 @@ TEST(SimLinkageCommand, SiconosSceneReadsTheSharedCrankTable) {
     EXPECT_GT(j.at("linkage").at("joints").at(name).at("impacts").get<int>(), 0) << name;
 }
 
+TEST(SimLinkageCommand, ElasticCouplerSceneWritesSensorAndModalColumns) {
+  TempDir dir;
+  const auto r = run_fourbar("sim " FOURBAR_SOURCE_DIR "/data/scenes/thesis_linkage_elastic_coupler_350rpm.toml --out " +
+                             dir.path().string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string series = testing::read_file(dir.path() / "series.csv");
+  for (const char* c : {"coupler_acc_154.5mm_0mm_m_s2", "coupler_acc_309mm_0mm_m_s2", "coupler_eta1_um",
+                        "coupler_eta2_um", "coupler_midspan_deflection_um"})
+    EXPECT_NE(series.find(c), std::string::npos) << c;
+  std::ifstream in(dir.path() / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const auto& e = j.at("linkage").at("energy");
+  EXPECT_GT(e.at("modal_damping_J").get<double>(), 0.0);
+  EXPECT_LT(e.at("residual_rel").get<double>(), 1e-8);
+}
+
 TEST(SimLinkageCommand, BadLinkageValuesExitTwoNamingTheKey) {
   TempDir dir;
   dir.write("rig.toml", testing::thesis_rig_toml());
@@ -83,7 +99,11 @@ contact_stiffness_N_per_m_n = 1e10
                         Case{"coupler_rocker_radial_mm = 0.0\n", "coupler_rocker_radial_mm"},
                         Case{"crank_coupler_radial_mm = 300.0\n", "crank_coupler_radial_mm"},
                         Case{"contact = \"rough\"\n", "contact"},
-                        Case{"crank_motion = \"missing.csv\"\n", "crank_speed_rpm"}}) {
+                        Case{"crank_motion = \"missing.csv\"\n", "crank_speed_rpm"},
+                        Case{"elastic_links = [\"coupler\"]\n", "elastic_links"},  // the rig has no [coupler.elastic]
+                        Case{"elastic_links = [\"crank\"]\n", "elastic_links"},
+                        Case{"coupler_sensors_mm = [400.0, 0.0]\n", "coupler_sensors_mm"},
+                        Case{"rocker_sensors_mm = [100.0]\n", "rocker_sensors_mm"}}) {
     const auto scene = dir.write("scene.toml", base + c.extra);
     const auto r = run_fourbar("sim " + scene.string() + " --out " + (dir.path() / "out").string());
     EXPECT_EQ(r.status, 2) << c.extra;

@@ -61,7 +61,7 @@ TEST(LinkageDynamics, ClearanceAtBMatchesTheClosedFormModel) {
                 1e-12 * (1 + std::abs(b.tangential_speed_m_s)));
     // Kinetic and potential energy as the thesis model's.
     EXPECT_NEAR(kinetic_energy_J(w, q), cm.kinetic_energy_J(c, m), 1e-12);
-    EXPECT_NEAR(potential_energy_J(lm, w), cm.potential_energy_J(c, m), 1e-12);
+    EXPECT_NEAR(potential_energy_J(lm, w, q), cm.potential_energy_J(c, m), 1e-12);
   }
 }
 

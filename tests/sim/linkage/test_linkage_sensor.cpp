@@ -1,0 +1,102 @@
+// An accelerometer on the linkage model's coupler and rocker: on rigid links
+// the closed form analyze/conversion.hpp inverts (m_t = a_J·n + r·α − h·ω² +
+// g·cos θ); on an elastic coupler with one mode, at mid-span (slope 0, Φy = 1)
+// the same plus the modal part η̈ − ω²·η.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "mechanism/kinematics.hpp"
+#include "sim/linkage/linkage_sensor.hpp"
+
+namespace fourbar {
+namespace {
+
+LinkageSpec spec_at_b(bool elastic) {
+  LinkageSpec s;
+  s.clearance_m = {0, 0.254e-3, 0};
+  s.law = {1e10, 1.5, DampingLaw::calibrated, 0.5};
+  s.elastic = {false, elastic, false};
+  s.elastic_modes = 1;
+  return s;
+}
+
+/// m_t of analyze/conversion.hpp (sign +1) for a link of direction u, speed ω, acceleration α.
+double closed_form(Vec2 aJ, Vec2 u, double om, double al, double r, double h, double g) {
+  return dot(aJ, u.perp()) + r * al - h * om * om + g * u.x;
+}
+
+void random_state(const Rig& rig, const LinkageModel& lm, std::mt19937& gen, LinkageCoordinates& q) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const CrankState c{3.2 * u(gen), 40 * u(gen), 300 * u(gen)};
+  const NominalMotion nm = solve_motion(rig, c);
+  const int n = lm.coordinates();
+  q.crank = c;
+  q.u2 = unit(c.angle_rad);
+  q.u = {unit(std::atan2(nm.pose.u3.y, nm.pose.u3.x) + 1e-3 * u(gen)),
+         unit(std::atan2(nm.pose.u4.y, nm.pose.u4.x) + 1e-3 * u(gen))};
+  q.q_offsets = ZVec::Zero(n);
+  q.z_rate = ZVec::Zero(n + 1);
+  q.z_rate(0) = nm.omega3_rad_s + u(gen);
+  q.z_rate(1) = nm.omega4_rad_s + u(gen);
+  for (int i = 2; i < n; ++i) {
+    q.q_offsets(i) = 1e-5 * u(gen);
+    q.z_rate(i) = 1e-2 * u(gen);
+  }
+  q.z_rate(n) = c.speed_rad_s;
+}
+
+TEST(LinkageSensor, RigidLinksReadTheClosedForm) {
+  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
+  const LinkageModel lm = build_linkage(rig, spec_at_b(false));
+  std::mt19937 gen(11);
+  for (int k = 0; k < 20; ++k) {
+    LinkageCoordinates q;
+    random_state(rig, lm, gen, q);
+    LinkageWorkspace w;
+    forward_kinematics(lm, q, w);
+    solve_accelerations(lm, q, w);
+    const double l2 = rig.crank.length_m, a2 = q.crank.accel_rad_s2, w2 = q.crank.speed_rad_s;
+    const Vec2 aA = l2 * (a2 * q.u2.perp() - w2 * w2 * q.u2);
+    for (auto [r, h] : {std::pair{0.309, 0.0}, std::pair{0.15, 0.01}}) {
+      const SensorReading s = sensor_reading(lm, q, w, {1, r, h});
+      const double ref = closed_form(aA, q.u[0], q.z_rate(0), w.z_accel(0), r, h, rig.gravity_m_s2);
+      EXPECT_NEAR(s.tangential_m_s2, ref, 1e-10 * (1 + std::abs(ref))) << k;
+    }
+    // Rocker: its first joint O4 is fixed.
+    const SensorReading s4 = sensor_reading(lm, q, w, {2, 0.2, 0.0});
+    const double ref4 = closed_form({0, 0}, q.u[1], q.z_rate(1), w.z_accel(1), 0.2, 0.0, rig.gravity_m_s2);
+    EXPECT_NEAR(s4.tangential_m_s2, ref4, 1e-10 * (1 + std::abs(ref4))) << k;
+    EXPECT_EQ(midspan_deflection_m(lm, q, w, 1), 0.0);
+  }
+}
+
+TEST(LinkageSensor, ElasticCouplerAddsTheModalPart) {
+  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
+  const LinkageModel lm = build_linkage(rig, spec_at_b(true));
+  const int i = lm.modal_index(1);
+  std::mt19937 gen(13);
+  double largest = 0;
+  for (int k = 0; k < 20; ++k) {
+    LinkageCoordinates q;
+    random_state(rig, lm, gen, q);
+    LinkageWorkspace w;
+    forward_kinematics(lm, q, w);
+    solve_accelerations(lm, q, w);
+    const double l2 = rig.crank.length_m, a2 = q.crank.accel_rad_s2, w2 = q.crank.speed_rad_s;
+    const Vec2 aA = l2 * (a2 * q.u2.perp() - w2 * w2 * q.u2);
+    const double L = rig.coupler.length_m, om = q.z_rate(0);
+    const double rigid = closed_form(aA, q.u[0], om, w.z_accel(0), L / 2, 0.0, rig.gravity_m_s2);
+    const double modal = w.z_accel(i) - om * om * q.q_offsets(i);
+    const SensorReading s = sensor_reading(lm, q, w, {1, L / 2, 0.0});
+    EXPECT_NEAR(s.tangential_m_s2, rigid + modal, 1e-9 * (1 + std::abs(rigid) + std::abs(modal))) << k;
+    EXPECT_DOUBLE_EQ(midspan_deflection_m(lm, q, w, 1), q.q_offsets(i));
+    largest = std::max(largest, std::abs(modal) / (1 + std::abs(rigid)));
+  }
+  EXPECT_GT(largest, 1e-3);  // the modal part is not negligible at these states
+}
+
+}  // namespace
+}  // namespace fourbar
