@@ -29,6 +29,9 @@ struct RecordingInfo {
   double sample_rate_hz = 0;
   std::uint64_t frames = 0;
   double start_time_s = 0;     ///< time of frame 0 (a CSV time column may not start at 0)
+  /// Wall-clock time of the start as the file states it (TDMS wf_start_time
+  /// in UTC, a UFF58 date line, a CSV preamble's start), empty when it does not.
+  std::string started_at;
   /// Per channel: the column name for text formats, the variable name for
   /// MATLAB files, empty for audio files.
   std::vector<std::string> channel_names;

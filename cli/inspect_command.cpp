@@ -52,6 +52,7 @@ void print_inspection(std::ostream& os, const RecordingInspection& r) {
      << (i.rate_variable ? " (from the variable '" + *i.rate_variable + "')" : "") << ", " << i.frames << " samples = "
      << num(i.duration_s(), "%.6g") << " s";
   if (i.start_time_s != 0) os << " from t = " << num(i.start_time_s, "%.6g") << " s";
+  if (!i.started_at.empty()) os << ", started " << i.started_at;
   os << "\n\n";
   std::size_t w = 4;
   for (const auto& ch : r.channels) w = std::max(w, ch.name.size() + (ch.unit.empty() ? 0 : ch.unit.size() + 3));
