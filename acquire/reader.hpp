@@ -51,6 +51,7 @@ struct ReaderOptions {
   std::optional<double> sample_rate_hz;  ///< required for text without a time column
   std::optional<std::string> time_column;  ///< text: name of the time column (default: auto)
   std::optional<std::string> rate_variable;  ///< MATLAB: the scalar variable holding the sample rate in Hz
+  std::optional<std::size_t> header_line;  ///< text: 1-based line of the column names (default: found below any preamble)
 };
 
 class Reader {

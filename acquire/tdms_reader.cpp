@@ -20,7 +20,7 @@ std::string object_label(const TdmsObject& o) { return "'" + o.group + "/" + o.c
 /// The channel's sample rate from wf_increment (0 when it has none).
 double rate_of(const TdmsObject& o) {
   const TdmsProperty* p = o.property("wf_increment");
-  return p && p->number && *p->number > 0 && std::isfinite(*p->number) ? 1.0 / *p->number : 0.0;
+  return p && p->number && *p->number > 0 && std::isfinite(1.0 / *p->number) ? 1.0 / *p->number : 0.0;
 }
 
 std::string unit_of(const TdmsObject& o) {

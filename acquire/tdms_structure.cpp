@@ -332,6 +332,9 @@ TdmsStructure read_tdms_structure(const std::filesystem::path& file) {
             throw InputError(obj + ": raw data of dimension " + std::to_string(dims) + " (TDMS allows only 1; damaged file)");
           if (e.type == tdms_type::kString) {
             e.bytes = c.u64();
+            if (e.count > e.bytes / 4)  // an end offset of 4 bytes per string, at least
+              throw InputError(obj + ": " + std::to_string(e.count) + " strings in " + std::to_string(e.bytes) +
+                               " bytes (damaged file)");
           } else {
             const std::uint32_t size = tdms_type_size(e.type);
             if (size == 0)

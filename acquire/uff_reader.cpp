@@ -183,7 +183,7 @@ class UffParser {
                        "uniformly sampled data; export with even spacing");
     if (!(count >= 1) || count > 1e12 || count != std::floor(count))
       throw InputError(rec + ": " + format_double(count) + " values in record 7 (damaged file)");
-    if (!(r.dx > 0))
+    if (!(r.dx > 0) || !std::isfinite(1.0 / r.dx))
       throw InputError(rec + ": abscissa increment " + format_double(r.dx) + " in record 7 must be positive (damaged file)");
     r.count = static_cast<std::uint64_t>(count);
     const std::string_view r8 = header_line("record 8");
@@ -241,7 +241,7 @@ class UffParser {
           if (auto v = number(s)) r.values.push_back(*v), ++parsed;
         if (parsed != t.size()) {  // fields that touch: cut at the format's width
           r.values.resize(r.values.size() - parsed);
-          for (std::size_t at = 0; at < l.size() && !trim(l.substr(at, width)).empty(); at += width) {
+          for (std::size_t at = 0; at < l.size() && !trim(l.substr(at)).empty(); at += width) {
             auto v = number(l.substr(at, width));
             if (!v)
               throw InputError(at_line() + ": '" + std::string(trim(l.substr(at, width))) + "' is not a finite number "

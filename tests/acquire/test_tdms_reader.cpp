@@ -18,6 +18,7 @@
 namespace fourbar {
 namespace {
 
+using testing::append_tdms_segment;
 using testing::TdmsBytes;
 using testing::TdmsTestObject;
 using testing::TempDir;
@@ -36,7 +37,7 @@ double value_for(std::uint32_t code, std::uint64_t i) {
   switch (code) {
     case 1: return static_cast<double>(static_cast<int>(i * 37 % 256) - 128);
     case 2: return static_cast<double>(static_cast<int>(i * 7919 % 65536) - 32768);
-    case 3: return -2147483648.0 + k * 123456789.0;
+    case 3: return static_cast<double>(static_cast<std::int64_t>(i * 123456789ull % 4294967296ull) - 2147483648LL);
     case 4: return -9007199254740992.0 + k * 1e12;  // −2^53 upwards: exact in a double
     case 5: return static_cast<double>(i * 37 % 256);
     case 6: return static_cast<double>(i * 7919 % 65536);

@@ -46,14 +46,25 @@ TEST(UffReader, PyuffAsciiAndBinaryOfOneRecordReadTheSameValues) {
   const auto va = read_all(*a, 1000), vb = read_all(*b, 777);
   ASSERT_EQ(va.size(), 79292u);
   ASSERT_EQ(vb.size(), 79292u);
-  // The ASCII file holds each single-precision value of the binary file printed as E13.5.
-  std::size_t differ = 0;
+  // The ASCII file holds each value printed as E13.5 (6 significant digits),
+  // the binary file the same value stored as a float: they agree to half a
+  // unit of the 6th digit plus half a float ulp (the ASCII was printed from
+  // the value before it was rounded to float: 650 values lie on the other
+  // side of a rounding boundary than their float does, 0.8 %).
+  std::size_t differ = 0, printed_equal = 0;
   for (std::size_t k = 0; k < va.size(); ++k) {
     char printed[32];
     std::snprintf(printed, sizeof printed, "%.5E", vb[k]);
-    differ += std::strtod(printed, nullptr) != va[k];
+    printed_equal += std::strtod(printed, nullptr) == va[k];
+    if (vb[k] == 0) {
+      differ += va[k] != 0;
+      continue;
+    }
+    const double digit = std::pow(10.0, std::floor(std::log10(std::abs(vb[k]))) - 5);
+    differ += std::abs(va[k] - vb[k]) > 0.5 * digit + std::abs(vb[k]) * 0x1p-24;
   }
-  EXPECT_EQ(differ, 0u) << "values of the ASCII file that are not the binary file's value printed to 6 digits";
+  EXPECT_EQ(differ, 0u) << "ASCII values farther from the binary value than the two formats' rounding";
+  EXPECT_GT(printed_equal, va.size() * 99 / 100) << "nearly every ASCII value is the float printed to 6 digits";
   double peak = 0;
   for (double v : vb) peak = std::max(peak, std::abs(v));
   EXPECT_GT(peak, 1e-3) << "a microphone signal, not zeros";
