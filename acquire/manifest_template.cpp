@@ -52,6 +52,13 @@ std::string common_unit(const RecordingInspection& r) {
 }
 
 
+/// True when every channel states an acceleration unit (UFF58, TDMS): the
+/// DAQ software has calibrated them already.
+bool all_acceleration(const RecordingInspection& r) {
+  for (const auto& ch : r.channels)
+    if (ch.unit != "m/s^2" && ch.unit != "g") return false;
+  return !r.channels.empty();
+}
 
 }  // namespace
 
@@ -73,8 +80,8 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
                                       "-bit integer samples are read as +-1 = full scale)");
   } else if (unit == "V" || unit == "mV") {
     os << "full_scale_V = " << (unit == "V" ? "1" : "0.001") << "  # the export states every channel in " << unit << "\n";
-  } else if (unit == "m/s^2" || unit == "g") {
-    os << "full_scale_V = 1  # the file holds acceleration in " << unit << ", not volts: volts_per_unit converts\n";
+  } else if (all_acceleration(r)) {
+    os << "full_scale_V = 1  # the file holds acceleration (m/s^2 or g), not volts: volts_per_unit converts\n";
   } else {
     os << fill_in("full_scale_V", "volts per recorded unit (1 when the " + info.format + " file holds volts" +
                                       (unit.empty() ? "" : "; its channels are in " + unit) + ")");

@@ -11,6 +11,8 @@
 #include <cstring>
 #include <fstream>
 
+#include "acquire/inspect.hpp"
+#include "acquire/manifest_template.hpp"
 #include "acquire/reader.hpp"
 #include "common/error.hpp"
 #include "support/realdata.hpp"
@@ -144,6 +146,13 @@ TEST(UffReader, RecordsAreChannelsInEveryFormAndByteOrder) {
       const auto got = read_all(*r, 7);
       ASSERT_EQ(got.size(), 40u);
       for (std::size_t i = 0; i < 20; ++i) EXPECT_EQ(got[2 * i], a[i]) << f << " value " << i;
+      // The template calibrates channels in physical units: volts_per_unit per m/s^2 at full_scale_V = 1.
+      r->rewind();
+      const std::string t = manifest_template(inspect_recording(*r), {});
+      EXPECT_NE(t.find("full_scale_V = 1  # the file holds acceleration"), std::string::npos) << t;
+      EXPECT_NE(t.find("column = \"acc1\"\nrole = \"FILL IN\""), std::string::npos) << t;
+      EXPECT_NE(t.find("volts_per_unit = 1  # the file holds m/s^2"), std::string::npos) << t;
+      EXPECT_NE(t.find("volts_per_unit = 0.1019716213  # the file holds g"), std::string::npos) << t;
     }
   }
   // A double-precision binary record keeps every bit.
