@@ -123,7 +123,7 @@ class UffParser {
     if (e == std::string::npos) e = b_.size();
     l = std::string_view(b_).substr(pos_, e - pos_);
     if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-    pos_ = e + 1;
+    pos_ = e < b_.size() ? e + 1 : e;  // never past the end (a last line without a line end)
     ++line_;
     return true;
   }
