@@ -8,8 +8,10 @@
 #include <regex>
 #include <sstream>
 
+#include "acquire/csv_preamble.hpp"
 #include "acquire/csv_units.hpp"
 #include "common/error.hpp"
+#include "common/number_text.hpp"
 #include "common/toml_section.hpp"
 
 namespace fourbar {
@@ -62,17 +64,20 @@ class CsvReader final : public Reader {
     info_.format = "CSV";
     info_.sample_format = "TEXT";
     open_stream();
+    // Header: the first row followed by data rows of as many cells, below any
+    // preamble (or the manifest's header_line); the first line that is
+    // neither blank nor a comment when no data rows follow one.
+    const CsvPreamble preamble = find_csv_header(in_, file.string(), options.header_line);
     std::string line;
-    // Header: the first line that is neither blank nor a comment.
     while (std::getline(in_, line)) {
       ++line_no_;
       strip_cr(line);
-      if (!is_skipped(line)) break;
+      if (line_no_ == preamble.header_line) break;
       line.clear();
     }
     if (line.empty()) throw InputError(file.string() + ": no header row (the file is empty or only comments)");
     header_line_ = line_no_;
-    delimiter_ = line.find('\t') != std::string::npos ? '\t' : line.find(';') != std::string::npos ? ';' : ',';
+    delimiter_ = csv_delimiter(line);
     for (auto cell : split(line, delimiter_)) names_.push_back(as_utf8(cell));
     for (std::size_t c = 0; c < names_.size(); ++c) {
       if (names_[c].empty())
@@ -170,6 +175,10 @@ class CsvReader final : public Reader {
                          " Hz from the manifest must be positive");
       info_.sample_rate_hz = *options.sample_rate_hz;
       uniform_check_ = false;
+      if (preamble.sample_rate_hz && std::abs(*preamble.sample_rate_hz - info_.sample_rate_hz) > 1e-9 * info_.sample_rate_hz)
+        throw InputError(file.string() + ": the manifest's sample_rate_hz = " + format_double(info_.sample_rate_hz) +
+                         " contradicts the preamble's " + format_double(*preamble.sample_rate_hz) + " Hz (line " +
+                         std::to_string(preamble.rate_line) + "); delete sample_rate_hz from the manifest");
     } else if (time_col_ >= 0) {
       if (rows < 2) throw InputError(file.string() + ": one data row: the time column cannot give a sample rate");
       strip_cr(first), strip_cr(last);
@@ -180,9 +189,32 @@ class CsvReader final : public Reader {
                          "): zero sample rate; fix the time column or give sample_rate_hz in the manifest");
       info_.sample_rate_hz = static_cast<double>(rows - 1) / (tn - t0);
       info_.start_time_s = t0;
+      if (preamble.sample_rate_hz) {  // the stated rate, exact, when the time column agrees to half a sample
+        const double stated = *preamble.sample_rate_hz;
+        if (std::abs((tn - t0) - static_cast<double>(rows - 1) / stated) > 0.5 / stated)
+          throw InputError(file.string() + ":" + std::to_string(preamble.rate_line) + ": the preamble states " +
+                           format_double(stated) + " Hz but the time column '" + names_[time_col_] + "' spans " +
+                           format_double(tn - t0) + " s over " + std::to_string(rows - 1) + " intervals (" +
+                           format_double(info_.sample_rate_hz) + " Hz); one of them is wrong: fix it, or give "
+                           "sample_rate_hz in the manifest");
+        info_.sample_rate_hz = stated;
+      }
+    } else if (preamble.sample_rate_hz) {
+      info_.sample_rate_hz = *preamble.sample_rate_hz;
+      uniform_check_ = false;
     } else {
-      throw InputError(file.string() + ": no time column (name one 'time_s', or set time_column) and the manifest "
-                       "gives no sample_rate_hz; add one of them");
+      throw InputError(file.string() + ": no time column (name one 'time_s', or set time_column), no sample rate in a "
+                       "preamble above the header ('Sample rate;12800;Hz') and the manifest gives no sample_rate_hz; "
+                       "add one of them");
+    }
+    info_.started_at = preamble.started_at;
+    if (preamble.preamble_lines > 0) {
+      std::string n = "column names on line " + std::to_string(header_line_) + ", below " +
+                      std::to_string(preamble.preamble_lines) + " preamble line" + (preamble.preamble_lines == 1 ? "" : "s");
+      if (preamble.sample_rate_hz)
+        n += "; sample rate " + format_double(*preamble.sample_rate_hz) + " Hz from line " + std::to_string(preamble.rate_line);
+      if (!preamble.started_at.empty()) n += "; start " + preamble.started_at;
+      info_.notes.push_back(n);
     }
     rewind();
   }

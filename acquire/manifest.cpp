@@ -255,6 +255,7 @@ Manifest load_manifest(const std::filesystem::path& file) {
   if (root.has("sample_rate_hz")) m.sample_rate_hz = root.positive("sample_rate_hz");
   m.time_column = root.optional_string("time_column");
   m.rate_variable = root.optional_string("rate_variable");
+  if (root.has("header_line")) m.header_line = static_cast<std::size_t>(root.integer("header_line", 1, 1'000'000));
   if (m.rate_variable && m.sample_rate_hz)
     root.fail("rate_variable", "and 'sample_rate_hz' both given; keep one of them");
   m.crank_direction = root.choice("crank_direction", {"ccw", "cw"}, "ccw") == "ccw" ? 1.0 : -1.0;
@@ -351,6 +352,7 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
   if (m.sample_rate_hz) os << "sample_rate_hz = " << num(*m.sample_rate_hz) << "\n";
   if (m.time_column) os << "time_column = " << quoted(*m.time_column) << "\n";
   if (m.rate_variable) os << "rate_variable = " << quoted(*m.rate_variable) << "\n";
+  if (m.header_line) os << "header_line = " << *m.header_line << "\n";
   os << "crank_direction = \"" << (m.crank_direction > 0 ? "ccw" : "cw") << "\"\n";
   if (m.start_s) os << "start_s = " << num(*m.start_s) << "\n";
   if (m.end_s) os << "end_s = " << num(*m.end_s) << "\n";

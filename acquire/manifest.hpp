@@ -106,11 +106,12 @@ struct Manifest {
   std::optional<std::string> time_column;
   std::optional<std::string> rate_variable;  ///< MATLAB recordings: the variable holding the rate in Hz
   std::optional<double> start_s, end_s;  ///< the part to analyse (acquire/time_range.hpp); --start-s/--end-s override
+  std::optional<std::size_t> header_line;    ///< text recordings: the line of the column names
   double crank_direction = 1;          ///< +1: the crank turns counter-clockwise (θ2 increases), −1 clockwise
   std::vector<ChannelSpec> channels;   ///< as listed, `[[channel]]`
   std::string notes;
 
-  ReaderOptions reader_options() const { return {sample_rate_hz, time_column, rate_variable}; }
+  ReaderOptions reader_options() const { return {sample_rate_hz, time_column, rate_variable, header_line}; }
   /// The crank-angle source's main channel: the crank_pulse channel, or
   /// encoder_a. Its thresholds, offset and tooth keys apply.
   const ChannelSpec& pulse_channel() const;

@@ -52,6 +52,13 @@ std::string common_unit(const RecordingInspection& r) {
 }
 
 
+/// True when every channel states an acceleration unit (UFF58, TDMS): the
+/// DAQ software has calibrated them already.
+bool all_acceleration(const RecordingInspection& r) {
+  for (const auto& ch : r.channels)
+    if (ch.unit != "m/s^2" && ch.unit != "g") return false;
+  return !r.channels.empty();
+}
 
 }  // namespace
 
@@ -73,6 +80,8 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
                                       "-bit integer samples are read as +-1 = full scale)");
   } else if (unit == "V" || unit == "mV") {
     os << "full_scale_V = " << (unit == "V" ? "1" : "0.001") << "  # the export states every channel in " << unit << "\n";
+  } else if (all_acceleration(r)) {
+    os << "full_scale_V = 1  # the file holds acceleration (m/s^2 or g), not volts: volts_per_unit converts\n";
   } else {
     os << fill_in("full_scale_V", "volts per recorded unit (1 when the " + info.format + " file holds volts" +
                                       (unit.empty() ? "" : "; its channels are in " + unit) + ")");
@@ -82,6 +91,7 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
   if (options.sample_rate_hz) os << "sample_rate_hz = " << number(*options.sample_rate_hz) << "  # as given to inspect\n";
   else if (info.rate_variable) os << "rate_variable = " << toml_quoted(*info.rate_variable) << "  # the variable holding the sample rate in Hz\n";
   if (options.time_column) os << "time_column = " << toml_quoted(*options.time_column) << "\n";
+  if (options.header_line) os << "header_line = " << *options.header_line << "  # the line of the column names\n";
   os << fill_in("crank_direction", "\"ccw\" when the crank angle increases counter-clockwise in the rig frame "
                                    "(README \"Sensor orientation\"), \"cw\" when it turns the other way");
   os << "# start_s = 0    # optional: only the turns from this recording time (s) on; acquire/analyze warn with\n"
@@ -115,8 +125,13 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
     else
       os << fill_in("role", "coupler_tangential, coupler_normal, rocker_tangential or rocker_normal "
                             "(a channel you do not use: delete this table)");
-    os << fill_in("volts_per_unit", "sensor sensitivity x amplifier gain in V per m/s^2, from the calibration sheet "
-                                    "(or sensitivity_mV_per_m_s2 and gain instead)");
+    if (ch.unit == "m/s^2")
+      os << "volts_per_unit = 1  # the file holds m/s^2 (with full_scale_V = 1)\n";
+    else if (ch.unit == "g")
+      os << "volts_per_unit = 0.1019716213  # the file holds g: 1 / 9.80665 (with full_scale_V = 1)\n";
+    else
+      os << fill_in("volts_per_unit", "sensor sensitivity x amplifier gain in V per m/s^2, from the calibration sheet "
+                                      "(or sensitivity_mV_per_m_s2 and gain instead)");
     os << fill_in("axis_sign", "1 when the sensor axis points along +n (tangential) or +u (normal) of its link, "
                                "-1 when mounted the other way round");
     os << fill_in("position_mm", "sensor position along its link: on the coupler from the crank pin A, on the rocker "

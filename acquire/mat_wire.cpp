@@ -66,7 +66,7 @@ struct WireIn {
 // A field added to RecordingInfo must be sent by fourbar-read-mat too (encode,
 // decode) — or the MATLAB path would drop it silently. (Size on x86-64 with
 // libstdc++, the platform fourbar builds on.)
-static_assert(sizeof(RecordingInfo) == 248, "RecordingInfo changed: send the new field in encode() and decode()");
+static_assert(sizeof(RecordingInfo) == 280, "RecordingInfo changed: send the new field in encode() and decode()");
 
 std::string encode(const MatContents& c) {
   WireOut w;
@@ -80,6 +80,7 @@ std::string encode(const MatContents& c) {
   w.u64(i.rate_variable ? 1 : 0);
   if (i.rate_variable) w.str(*i.rate_variable);
   w.strs(i.notes);
+  w.str(i.started_at);
   w.u64(c.columns.size());
   for (const auto& col : c.columns) {
     w.u64(col.size());
@@ -102,6 +103,7 @@ std::optional<MatContents> decode(std::string_view bytes, const std::filesystem:
   i.channel_names = r.strs(), i.channel_units = r.strs();
   if (r.u64() == 1) i.rate_variable = r.str();
   i.notes = r.strs();
+  i.started_at = r.str();
   for (std::uint64_t n = r.u64(); !r.bad && n > 0; --n) {
     const std::uint64_t len = r.u64();
     if (r.bad || len > (r.s.size() - r.at) / sizeof(double)) return std::nullopt;

@@ -29,6 +29,9 @@ struct RecordingInfo {
   double sample_rate_hz = 0;
   std::uint64_t frames = 0;
   double start_time_s = 0;     ///< time of frame 0 (a CSV time column may not start at 0)
+  /// Wall-clock time of the start as the file states it (TDMS wf_start_time
+  /// in UTC, a UFF58 date line, a CSV preamble's start), empty when it does not.
+  std::string started_at;
   /// Per channel: the column name for text formats, the variable name for
   /// MATLAB files, empty for audio files.
   std::vector<std::string> channel_names;
@@ -48,6 +51,7 @@ struct ReaderOptions {
   std::optional<double> sample_rate_hz;  ///< required for text without a time column
   std::optional<std::string> time_column;  ///< text: name of the time column (default: auto)
   std::optional<std::string> rate_variable;  ///< MATLAB: the scalar variable holding the sample rate in Hz
+  std::optional<std::size_t> header_line;  ///< text: 1-based line of the column names (default: found below any preamble)
 };
 
 class Reader {

@@ -8,6 +8,8 @@
 #include "acquire/mat_reader.hpp"
 #include "acquire/reader.hpp"
 #include "acquire/sndfile_reader.hpp"
+#include "acquire/tdms_reader.hpp"
+#include "acquire/uff_reader.hpp"
 #include "common/error.hpp"
 
 namespace fourbar {
@@ -18,6 +20,10 @@ std::span<const ReaderFormat> reader_formats() {
                    sndfile_claims, open_sndfile_reader},
       ReaderFormat{"matlab", "MATLAB .mat v5/v7/v7.3 (libmatio): numeric variables or matrix columns as channels",
                    mat_claims, open_mat_reader},
+      ReaderFormat{"tdms", "NI TDMS (.tdms, versions 4712/4713): numeric channels of the longest length, wf_increment as the rate",
+                   tdms_claims, open_tdms_reader},
+      ReaderFormat{"uff58", "Universal File Format dataset 58/58b time histories (.uff, .unv): each record a channel",
+                   uff_claims, open_uff_reader},
       ReaderFormat{"text", "CSV/TSV text (.csv, .tsv, .txt): header row, optional units row, optional time column, ',' ';' or tab",
                    csv_claims, open_csv_reader},
   };

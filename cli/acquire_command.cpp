@@ -22,7 +22,8 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Reads a recording (WAV/W64/RF64/FLAC/CAF/AIFF via libsndfile, or CSV/TSV text)
+constexpr const char* kDetails = R"(Reads a recording (WAV/W64/RF64/FLAC/CAF/AIFF via libsndfile, MATLAB .mat,
+NI TDMS, UFF dataset 58/58b, or CSV/TSV text)
 and its manifest (default: REC with extension .toml beside it), finds the
 crank pulses, fits the crank angle through them. Without --out it only
 checks and prints a summary (format, channels, pulses, revolutions, speed,
@@ -46,7 +47,7 @@ float64 little-endian rows (numpy: fromfile(f, '<f8').reshape(-1, ncols));
 summary.json "series" lists their columns and row counts.
 
 Manifest (TOML) keys: rig, clearance_mm, full_scale_V, adc_range_V,
-sample_rate_hz, time_column, crank_direction (ccw|cw), notes; per
+sample_rate_hz, time_column, header_line, crank_direction (ccw|cw), notes; per
 [[channel]]: index | column, name, role (coupler_tangential coupler_normal
 rocker_tangential rocker_normal crank_pulse crank_index encoder_a encoder_b
 ignore), sensitivity_mV_per_m_s2 + gain | sensitivity_mV_per_g + gain |
@@ -200,7 +201,7 @@ int run_acquire(const Invocation& inv) {
   double start_s = 0, end_s = 0;
   bool no_samples = false, binary = false, csv_comments = false, quiet = false;
   po::options_description opts("options");
-  opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, CSV)")(
+  opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, .mat, .tdms, .uff, CSV)")(
       "manifest,m", po::value(&manifest_file), "manifest TOML (default: the recording's name with .toml)")(
       "out,o", po::value(&out_dir)->implicit_value(""),
       "output folder (alone: out/<recording name>/acquire); without --out: check and summarise only")(

@@ -16,7 +16,7 @@ namespace fourbar::cli {
 namespace {
 
 constexpr const char* kDetails = R"(Reads a recording without a manifest (WAV/W64/RF64/FLAC/CAF/AIFF, MATLAB
-.mat v5/v7/v7.3, CSV/TSV text) and prints its format, sample rate and
+.mat v5/v7/v7.3, NI TDMS, UFF dataset 58/58b, CSV/TSV text) and prints its format, sample rate and
 duration, and per channel: min, max, mean (the DC level), RMS, AC RMS (about
 the mean), clipping (samples at the digital rails of an integer format, or
 runs of >= 3 equal samples at the channel's min or max), whether it is a
@@ -29,7 +29,9 @@ with the channels, the crank-pulse channel and its polarity, and "FILL IN"
 for each value only the set-up can tell (rig, sensitivities, axis signs,
 positions, AC coupling, crank offset and direction). acquire, analyze and
 report refuse the manifest while a "FILL IN" is left, naming the key.
-A text file without a time column needs --sample-rate-hz; a .mat file
+A text file without a time column or a preamble's sample rate needs
+--sample-rate-hz; --header-line N names the line of its column names when
+the search below the preamble does not find them; a .mat file
 without a time variable or rate scalar needs --rate-variable or
 --sample-rate-hz (both are written into the template).
 )";
@@ -52,6 +54,7 @@ void print_inspection(std::ostream& os, const RecordingInspection& r) {
      << (i.rate_variable ? " (from the variable '" + *i.rate_variable + "')" : "") << ", " << i.frames << " samples = "
      << num(i.duration_s(), "%.6g") << " s";
   if (i.start_time_s != 0) os << " from t = " << num(i.start_time_s, "%.6g") << " s";
+  if (!i.started_at.empty()) os << ", started " << i.started_at;
   os << "\n\n";
   std::size_t w = 4;
   for (const auto& ch : r.channels) w = std::max(w, ch.name.size() + (ch.unit.empty() ? 0 : ch.unit.size() + 3));
@@ -82,14 +85,16 @@ void print_inspection(std::ostream& os, const RecordingInspection& r) {
 int run_inspect(const Invocation& inv) {
   std::string recording, rate_variable, time_column;
   double sample_rate_hz = 0;
+  std::size_t header_line = 0;
   bool want_template = false;
   po::options_description opts("options");
-  opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, .mat, CSV)")(
+  opts.add_options()("recording", po::value(&recording)->required(), "the recording (WAV, FLAC, …, .mat, .tdms, .uff, CSV)")(
       "manifest-template", po::bool_switch(&want_template),
       "write a manifest template to stdout instead of the summary (FILL IN marks what to enter)")(
       "sample-rate-hz", po::value(&sample_rate_hz), "sample rate of a text or .mat recording that does not give one")(
       "rate-variable", po::value(&rate_variable), ".mat: the scalar variable that holds the sample rate in Hz")(
-      "time-column", po::value(&time_column), "text: the time column's name, when not t/time/time_s");
+      "time-column", po::value(&time_column), "text: the time column's name, when not t/time/time_s")(
+      "header-line", po::value(&header_line), "text: the line number (from 1) of the column names, when not found below the preamble");
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
@@ -103,6 +108,10 @@ int run_inspect(const Invocation& inv) {
   }
   if (!rate_variable.empty()) options.rate_variable = rate_variable;
   if (!time_column.empty()) options.time_column = time_column;
+  if (vm.count("header-line")) {
+    if (header_line < 1) throw InputError("inspect: --header-line counts lines from 1");
+    options.header_line = header_line;
+  }
   const auto reader = open_recording(recording, options);
   const RecordingInspection r = inspect_recording(*reader);
   if (want_template) std::cout << manifest_template(r, options);

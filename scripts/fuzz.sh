@@ -25,7 +25,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(rig scene manifest csv audio mat csv_units session)
+[ "${#targets[@]}" -gt 0 ] || targets=(rig scene manifest csv audio mat csv_units session tdms uff)
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)

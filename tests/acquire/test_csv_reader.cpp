@@ -125,5 +125,40 @@ TEST(ReaderRegistry, UnknownAndMissingFiles) {
   EXPECT_NE(error_of(empty).find("empty"), std::string::npos);
 }
 
+TEST(CsvReader, HeaderBelowAPreambleOrOnTheManifestsLine) {
+  TempDir dir;
+  // Preamble lines of other cell counts, one of as many cells as the data
+  // ("Channels;…") and a units row under the header.
+  const auto f = dir.write("p.csv",
+                           "Exported by Recorder 7\n"
+                           "Start;2026-11-27 10:15:32\n"
+                           "Sample rate;2,5;kHz\n"
+                           "Channels;AI0;AI1\n"
+                           "\n"
+                           "Time;AI0;AI1\n"
+                           "s;V;[m/s^2]\n"
+                           "0,0000;1,5;2\n"
+                           "0,0004;2,5;3\n"
+                           "0,0008;3,5;4\n");
+  auto r = open_recording(f);
+  EXPECT_EQ(r->info().channel_names, (std::vector<std::string>{"AI0", "AI1"}));
+  EXPECT_EQ(r->info().channel_units, (std::vector<std::string>{"V", "m/s^2"}));
+  EXPECT_EQ(r->info().sample_rate_hz, 2500.0);  // the preamble's, exact; the time column agrees
+  EXPECT_EQ(r->info().started_at, "2026-11-27 10:15:32");
+  EXPECT_EQ(read_all(*r), (std::vector<double>{1.5, 2, 2.5, 3, 3.5, 4}));
+  ASSERT_EQ(r->info().notes.size(), 1u);
+  EXPECT_EQ(r->info().notes[0], "column names on line 6, below 4 preamble lines; sample rate 2500 Hz from line 3; start 2026-11-27 10:15:32");
+
+  // The manifest's header_line: "Channels;AI0;AI1" is then the header (and Time a channel without a time column).
+  r = open_recording(f, {.sample_rate_hz = 2500.0, .header_line = 4});
+  EXPECT_EQ(r->info().channel_names, (std::vector<std::string>{"Channels", "AI0", "AI1"}));
+  EXPECT_NE(error_of(f, {.header_line = 5}).find("p.csv:5: header_line names a blank or comment line"), std::string::npos);
+  EXPECT_NE(error_of(f, {.header_line = 99}).find("header_line = 99 but the file has 10 lines"), std::string::npos);
+
+  // A plain file is read as before: the first row is the header, and a bad first data row is an error naming it.
+  const auto bad = dir.write("b.csv", "time_s,a\n0,nan\n0.001,2\n0.002,3\n");
+  EXPECT_NE(error_of(bad).find("b.csv:2:2 (column 'a'): 'nan' is not a finite number"), std::string::npos) << error_of(bad);
+}
+
 }  // namespace
 }  // namespace fourbar

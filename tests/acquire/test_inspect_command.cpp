@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -13,6 +15,7 @@
 
 #include "format_writers.hpp"
 #include "support/clean_failure.hpp"
+#include "support/realdata.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -192,6 +195,86 @@ TEST(InspectCommand, BadInput) {
   const auto bare = dir.write("bare.csv", "a,b\n1,2\n3,4\n");
   testing::expect_clean_failure(run_fourbar("inspect " + bare.string()), "sample_rate_hz", dir.path() / "none");
   EXPECT_EQ(run_fourbar("inspect " + bare.string() + " --sample-rate-hz 100").status, 0);
+}
+
+/// A DAQ export as such software writes it: a preamble (who, start, rate)
+/// above `Time [s];coupler_t [V];…`, semicolons and decimal commas.
+void write_preamble_export(const std::filesystem::path& file, const testing::TestSignals& s, const std::string& rate_line,
+                           bool time_column) {
+  std::ofstream out(file);
+  out << "Exported by LabDAQ 4.2 (demo)\nStart;27.11.2026 10:15:32\n" << rate_line << "\n";
+  out << (time_column ? "Time [s]" : "");
+  for (std::size_t c = 0; c < s.names.size(); ++c) out << (c > 0 || time_column ? ";" : "") << s.names[c] << " [V]";
+  out << "\n";
+  char cell[32];
+  for (std::size_t i = 0; i < s.columns[0].size(); ++i) {
+    std::string row;
+    if (time_column) std::snprintf(cell, sizeof cell, "%.6f", static_cast<double>(i) / s.rate_hz), row = cell;
+    for (const auto& c : s.columns) std::snprintf(cell, sizeof cell, "%.9g", c[i]), row += (row.empty() && !time_column ? "" : ";") + std::string(cell);
+    std::replace(row.begin(), row.end(), '.', ',');
+    out << row << "\n";
+  }
+}
+
+TEST(InspectCommand, DaqExportWithAPreambleAboveTheHeader) {
+  TempDir dir;
+  const auto s = testing::inspection_signals();
+  const auto rec = dir.path() / "daq.csv";
+  write_preamble_export(rec, s, "Sample rate;10000;Hz", true);
+  auto r = run_fourbar("inspect " + rec.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("CSV TEXT, 4 channels, 10000 Hz, 20000 samples = 2 s, started 27.11.2026 10:15:32"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("coupler_t [V]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("crank pulses on channel 1: 1200 rpm"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("note: column names on line 4, below 3 preamble lines; sample rate 10000 Hz from line 3; start "
+                       "27.11.2026 10:15:32"), std::string::npos) << r.out;
+  // acquire reads it with a manifest that names columns only.
+  dir.write("daq.toml", "rig = \"" + kRig + "\"\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
+  r = run_fourbar("acquire " + rec.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("10000 Hz"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("complete revolutions, 1200"), std::string::npos) << r.out;
+
+  // Without a time column the preamble's rate is the rate.
+  write_preamble_export(rec, s, "Sample rate: 10 kHz", false);
+  r = run_fourbar("inspect " + rec.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("CSV TEXT, 4 channels, 10000 Hz, 20000 samples = 2 s"), std::string::npos) << r.out;
+
+  // A preamble rate the time column contradicts: an error naming the line.
+  write_preamble_export(rec, s, "Sample rate;12800;Hz", true);
+  testing::expect_clean_failure(run_fourbar("inspect " + rec.string()),
+                                rec.string() + ":3: the preamble states 12800 Hz but the time column 'Time [s]' spans 1.9999 s",
+                                dir.path() / "none");
+}
+
+TEST(InspectCommand, RecordingsWrittenByOtherSoftware) {
+  FOURBAR_REALDATA_FILE(tdms, "tdms/Digital_Input.tdms");
+  // README of realdata: SignalExpress 2011, NI-DAQ digital line Dev1/port3/line7, 2 kHz for 10 s, two decimated groups.
+  auto r = run_fourbar("inspect " + tdms.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Digital_Input.tdms: TDMS U8, 1 channel, 2000 Hz, 20000 samples = 10 s, started 2012-07-09T23:58:24"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Dev1_port3_line7 - line 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Decimated Data_Level1/Dev1_port3_line7 - line 0': 400 values at 40 Hz"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Decimated Data_Level2/Dev1_port3_line7 - line 0': 8 values at 0.8 Hz"), std::string::npos) << r.out;
+  auto t = run_fourbar("inspect " + tdms.string() + " --manifest-template");
+  ASSERT_EQ(t.status, 0) << t.err;
+  EXPECT_NE(t.out.find("column = \"Dev1_port3_line7 - line 0\""), std::string::npos) << t.out;
+
+  // README: one microphone record (ordinate type 21, Pa), 65 536 Hz, 79 292 samples (1.21 s), dated 18-Apr-16.
+  for (const char* name : {"uff58/Sample_UFF58_ascii.uff", "uff58/Sample_UFF58b_bin.uff"}) {
+    const auto f = testing::realdata_dir() / name;
+    r = run_fourbar("inspect " + f.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find(": UFF58 FLOAT, 1 channel, 65536 Hz, 79292 samples = 1.2099 s, started 18-Apr-16 13:49:58"),
+              std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Mic 01.0Scalar [Pa]"), std::string::npos) << r.out;
+    t = run_fourbar("inspect " + f.string() + " --manifest-template");
+    ASSERT_EQ(t.status, 0) << t.err;
+    EXPECT_NE(t.out.find("column = \"Mic 01.0Scalar\""), std::string::npos) << t.out;
+    EXPECT_NE(t.out.find("its channels are in Pa"), std::string::npos) << t.out;
+  }
 }
 
 }  // namespace
