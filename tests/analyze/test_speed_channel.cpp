@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "acquire/reader.hpp"
+#include "common/error.hpp"
 #include "acquire/wheel_setup.hpp"
 #include "virtual_rig/recording_writer.hpp"
 #include "virtual_session.hpp"
@@ -30,7 +31,7 @@ constexpr double kRpmPerV = 100;
 /// ('tacho', in volts), and its manifest: crank_speed, the pulse kept for the
 /// zero or ignored.
 std::filesystem::path with_speed_channel(const VirtualSetup& v, const VirtualRigResult& written, bool keep_pulse,
-                                         const std::string& name) {
+                                         const std::string& name, double stall_from_s = -1, double stall_to_s = -1) {
   const auto reader = open_recording(written.recording, {});
   const RecordingInfo& info = reader->info();
   const auto C = static_cast<std::size_t>(info.channels);
@@ -43,7 +44,8 @@ std::filesystem::path with_speed_channel(const VirtualSetup& v, const VirtualRig
   for (std::size_t f = 0; f < info.frames; ++f) {
     for (std::size_t c = 0; c < C; ++c) out.push_back(all[f * C + c]);
     const double t = static_cast<double>(f) / info.sample_rate_hz;
-    out.push_back(units::rad_s_to_rpm(std::abs(drive.at(t).speed_rad_s)) / kRpmPerV / m.full_scale_V);
+    const double rpm = t >= stall_from_s && t <= stall_to_s ? 0.0 : units::rad_s_to_rpm(std::abs(drive.at(t).speed_rad_s));
+    out.push_back(rpm / kRpmPerV / m.full_scale_V);
   }
   const std::filesystem::path file = v.dir.path() / (name + ".wav");
   std::vector<std::string> names(C + 1, "x");
@@ -174,6 +176,32 @@ TEST(AnalyzeSpeedChannel, WithoutPulseTheZeroIsUnknownAndSaid) {
     EXPECT_LE(r.alpha3, 0.005);
     EXPECT_LE(r.omega3, 0.001);
   }
+}
+
+// A stop in the speed track (0 rpm from 2.0 to 2.5 s) cannot be integrated to
+// a turn count: refused naming the channel, the span and the fix.
+TEST(AnalyzeSpeedChannel, AStopInTheTrackIsRefusedNamingTheSpan) {
+  VirtualSetup v = lab(350);
+  v.spec.revolutions = 20;
+  const VirtualRigResult written = v.write("stall_src.wav", false);
+  const std::filesystem::path file = with_speed_channel(v, written, false, "stall", 2.0, 2.5);
+  AnalyzeOptions o;
+  o.progress = false;
+  std::string what;
+  try {
+    analyze_recording(file, {}, o);
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  std::printf("  %s\n", what.c_str());
+  EXPECT_NE(what.find("'tacho'"), std::string::npos) << what;
+  EXPECT_NE(what.find("from 2 s"), std::string::npos) << what;
+  EXPECT_NE(what.find("start_s/end_s"), std::string::npos) << what;
+  // The running part before the stop reads.
+  AnalyzeOptions before = o;
+  before.range.end_s = 1.9;
+  const RecordingAnalysis a = analyze_recording(file, {}, before);
+  EXPECT_GE(a.revolutions, 9u);
 }
 
 }  // namespace
