@@ -140,7 +140,7 @@ VirtualSetup lab(double rpm) {
 /// 250 → 350 rpm: ω = 250 rpm·(1 + 0.4·sin(2πt/T)) with T four times the recording.
 VirtualSetup run_up() {
   VirtualSetup v = lab(250);
-  const double duration_s = v.spec.revolutions * 60.0 / 300;  // about: the mean is near 300 rpm
+  const double duration_s = v.spec.revolutions.value_or(30) * 60.0 / 300;  // about: the mean is near 300 rpm
   v.spec.speed_fluctuation = 0.4;
   v.spec.speed_fluctuation_period_s = 4 * duration_s;
   return v;
