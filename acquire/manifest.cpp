@@ -74,6 +74,10 @@ void check_angle_source(const Manifest& m) {
     if (pulses > 1)
       throw InputError(f + std::to_string(pulses) + " channels have role = \"crank_pulse\" beside the speed channel '" +
                        s.name + "'; give at most one (once per turn: it sets the angle's zero)");
+    if (pulses == 1 && s.crank_offset_given)
+      throw InputError(f + "channel '" + s.name + "' key 'crank_offset_deg' beside the crank_pulse channel '" +
+                       m.channel_with(ChannelRole::crank_pulse)->name +
+                       "': the pulse sets the zero; give crank_offset_deg on the pulse channel and remove it here");
     if (pulses == 1 && m.channel_with(ChannelRole::crank_pulse)->pulses_per_rev != 1)
       throw InputError(f + "channel '" + m.channel_with(ChannelRole::crank_pulse)->name +
                        "' key 'pulses_per_rev' beside the speed channel '" + s.name +
@@ -196,7 +200,11 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
       s.fail("smoothing_period_turns", "is given but crank_smoothing is not \"spline\"; set crank_smoothing = \"spline\" or remove it");
     }
   }
-  if (c.role == ChannelRole::crank_speed && s.has("rpm_per_V")) c.rpm_per_V = s.positive("rpm_per_V");
+  if (c.role == ChannelRole::crank_speed) {
+    if (s.has("rpm_per_V")) c.rpm_per_V = s.positive("rpm_per_V");
+    c.crank_offset_given = s.has("crank_offset_deg");
+    c.crank_offset_rad = deg_to_rad(s.in_range("crank_offset_deg", -360, 360, 0.0));
+  }
   if (auto n = s.optional_string("notes")) c.notes = *n;
   s.finish();
   return c;
@@ -394,6 +402,7 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
         os << "crank_smoothing = \"spline\"\nsmoothing_period_turns = " << num(c.smoothing_period_turns) << "\n";
     }
     if (c.rpm_per_V) os << "rpm_per_V = " << num(*c.rpm_per_V) << "\n";
+    if (c.crank_offset_given) os << "crank_offset_deg = " << deg(c.crank_offset_rad) << "\n";
     if (!c.notes.empty()) os << "notes = " << quoted(c.notes) << "\n";
   }
   return os.str();

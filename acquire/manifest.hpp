@@ -84,6 +84,9 @@ struct ChannelSpec {
   // A crank_speed channel: rpm = recorded value (no rpm_per_V), or
   // recorded value · full_scale_V · rpm_per_V (a tacho voltage).
   std::optional<double> rpm_per_V;
+  /// crank_speed without a crank_pulse: crank_offset_deg given (the crank
+  /// angle at the first sample analysed), so the zero is known.
+  bool crank_offset_given = false;
   /// On crank_pulse or encoder_a (crank_smoothing = "spline", crank_smoothing.hpp): the shortest
   /// period of a speed change, in turns, that the crank motion keeps; 0 (crank_smoothing = "none",
   /// the default): the motion through every edge.

@@ -101,13 +101,22 @@ SpeedAngle speed_angle_edges(const std::vector<double>& rpm, double sample_rate_
       out.warnings.push_back("the crank angle integrated from " + label(speed) + " misses the pulses of '" + pulse->name +
                              "' by up to " + format_number(out.zero_spread_deg, 3) + "° over " +
                              std::to_string(phase.size()) + " pulses: the speed's scale is off or the track lags; " + fix);
+  } else if (speed.crank_offset_given) {
+    out.source = "speed channel '" + speed.name + "' integrated, zero from its crank_offset_deg";
+    out.warnings.push_back("the crank angle is integrated from " + label(speed) +
+                           " with its zero from crank_offset_deg (the crank angle at the first sample analysed: it "
+                           "moves with start_s); a once-per-turn crank_pulse channel would fix the zero from the data");
   } else {
     out.source = "speed channel '" + speed.name + "' integrated, zero unknown";
     out.warnings.push_back(
-        "the crank angle is integrated from " + label(speed) + (pulse ? " and the pulse channel '" + pulse->name + "' has no edges in it" : std::string(" without a crank_pulse channel")) +
-        ": its zero is unknown (0° is where the analysed part starts). The α and ω magnitudes and their spread over the "
-        "turn are right, but their phase against the crank angle is arbitrary: do not compare crank angles with the "
-        "simulation or another recording; add the once-per-turn pulse as role = \"crank_pulse\" to fix the zero");
+        "the crank angle is integrated from " + label(speed) +
+        (pulse ? " and the pulse channel '" + pulse->name + "' has no edges in it"
+               : std::string(" without a crank_pulse channel")) +
+        ": its zero is unknown, taken as 0° at the first sample analysed. The turns, the speed and the spread are "
+        "right, but the crank-angle phase is arbitrary, and so are α and ω: the conversion needs the crank angle (the "
+        "gravity projection, the sensor's offset from the link line), so they are wrong in shape as well as phase. "
+        "Add the once-per-turn pulse as role = \"crank_pulse\", or give crank_offset_deg on '" + speed.name +
+        "' (the crank angle at the first sample analysed)");
   }
 
   // Virtual edges at every 2π/P of the angle from the zero, numbered from the first whole turn.

@@ -7,8 +7,11 @@
 // (wheel_decode.hpp) so that plan_wheel_revolutions and everything after it
 // is unchanged. The angle's zero: the median phase of the integrated angle at
 // the once-per-turn crank_pulse edges when there is one; without one it is
-// the angle at the recording's first sample and said so (α/ω magnitudes are
-// right, the crank-angle phase is arbitrary). A speed ≤ 0 or not finite in
+// 0° at the first sample analysed plus the channel's crank_offset_deg when
+// given; with neither a pulse nor an offset it is unknown and said so: the
+// turns and speeds are right, the crank-angle phase arbitrary, and α/ω wrong
+// too (the conversion needs the crank angle: gravity, the sensor's offset;
+// 37 % α3 error on the virtual rig, tests/analyze/test_speed_channel). A speed ≤ 0 or not finite in
 // the part analysed is bad input naming the channel and the span.
 
 #include <filesystem>

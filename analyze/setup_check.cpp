@@ -352,8 +352,7 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     return wrap_deg(a.crank_deg[0] + 360.0 * static_cast<double>(b.s) / static_cast<double>(N));
   };
   const double offset_diff = wrap_deg(360.0 * static_cast<double>(best.s) / static_cast<double>(N));
-  // A crank angle integrated from a speed track alone has no zero to check (acquire/speed_angle.hpp).
-  const bool offset_off = std::abs(offset_diff) > lim.offset_tolerance_deg && pulse.role != ChannelRole::crank_speed;
+  const bool offset_off = std::abs(offset_diff) > lim.offset_tolerance_deg;
   const double conf_crank = confidence(u_best, 1 - best_crank_m.score / n_ch);
   const double conf_dir = tau != dir_m ? confidence(u_best, 1 - best_dir_m.score / n_ch) : 0.0;
   const double conf_offset = offset_off ? confidence(u_best, 1 - best_offset_m.score / n_ch) : 0.0;

@@ -57,7 +57,7 @@ debounce_ms, pulses_per_rev + (a crank_index channel | missing_teeth) for a
 tooth wheel; encoder_a: lines_per_rev (with an encoder_b channel, optional
 crank_index = Z); correct_tooth_spacing; crank_smoothing (none|spline) +
 smoothing_period_turns; crank_speed: rpm_per_V (default: values in rpm;
-an optional crank_pulse sets the zero); notes.
+an optional crank_pulse sets the zero, else crank_offset_deg); notes.
 Meanings and the sensor frame: docs/acquire.md.
 Warnings (repaired pulses, gaps, clipping) go to stderr and summary.json.
 )";

@@ -56,6 +56,11 @@ TEST_F(SpeedManifest, SpeedAloneRoundTrips) {
   const Manifest back = load_manifest(dir.write("back.toml", manifest_to_toml(m, dir.path())));
   EXPECT_EQ(manifest_to_toml(back, dir.path()), manifest_to_toml(m, dir.path()));
   EXPECT_EQ(back.speed_channel()->rpm_per_V.value_or(0), 100);
+  EXPECT_FALSE(back.speed_channel()->crank_offset_given);
+  const Manifest given = load(kSpeed + "crank_offset_deg = 40\n");
+  EXPECT_TRUE(given.speed_channel()->crank_offset_given);
+  const Manifest given_back = load_manifest(dir.write("given.toml", manifest_to_toml(given, dir.path())));
+  EXPECT_NEAR(given_back.pulse_channel().crank_offset_rad, 40 * 3.14159265358979 / 180, 1e-9);
 }
 
 TEST_F(SpeedManifest, RpmWithoutScaleAndAPulseForTheZero) {
@@ -101,6 +106,12 @@ pulses_per_rev = 60
 missing_teeth = 2
 )");
   EXPECT_NE(wheel.find("pulses_per_rev"), std::string::npos) << wheel;
+  const std::string offset = error_of(kSpeed + R"(crank_offset_deg = 12
+[[channel]]
+index = 2
+role = "crank_pulse"
+)");
+  EXPECT_NE(offset.find("crank_offset_deg"), std::string::npos) << offset;
   const std::string scale = error_of(R"(
 [[channel]]
 index = 1
