@@ -56,7 +56,8 @@ SpeedAngle speed_angle_edges(const std::vector<double>& rpm, double sample_rate_
   std::size_t begin = 0, end = rpm.size();  // the samples in the range
   while (begin < end && !range.holds(time_of(begin))) ++begin;
   while (end > begin && !range.holds(time_of(end - 1))) --end;
-  const std::string fix = std::string(speed.rpm_per_V ? "check rpm_per_V and full_scale_V" : "the values are read as rpm (give rpm_per_V for a voltage)");
+  const std::string fix = std::string(speed.rpm_per_V ? "check rpm_per_V and full_scale_V"
+                                                  : "check the scale: the values are read as rpm (give rpm_per_V for a voltage)");
   // A stop or a reversal cannot be integrated to a turn count: bad input, with the span.
   for (std::size_t i = begin; i < end; ++i) {
     if (rpm[i] > 0 && std::isfinite(rpm[i])) continue;
@@ -65,7 +66,7 @@ SpeedAngle speed_angle_edges(const std::vector<double>& rpm, double sample_rate_
     throw InputError(manifest_file.string() + ": " + label(speed) + " reads " + format_number(rpm[i], 4) +
                      " rpm: a speed ≤ 0 (or not a number) from " + format_number(time_of(i), 6) + " s to " +
                      format_number(time_of(j), 6) + " s, through which no crank angle can be integrated; analyse "
-                     "the running part only (start_s/end_s in the manifest or --start-s/--end-s), " + fix);
+                     "the running part only (start_s/end_s in the manifest or --start-s/--end-s); " + fix);
   }
   if (end - begin < 2) return out;
 
