@@ -21,12 +21,12 @@ double angle_in(double theta0, double w0, double w1, double dt, double tau) {
   return theta0 + w0 * tau + 0.5 * (w1 - w0) / dt * tau * tau;
 }
 
-/// The τ in [0, dt] at which the angle grows by `d` ≥ 0 from theta0.
+/// The τ in [0, dt] at which the angle grows by `d` ≥ 0 from theta0: the
+/// root τ ≥ 0 of a·τ² + w0·τ − d = 0 (w0, w1 > 0) in the form without
+/// cancellation, which is d/w0 at a = 0.
 double time_to(double w0, double w1, double dt, double d) {
   const double a = 0.5 * (w1 - w0) / dt;
-  if (std::abs(a) * dt * dt < 1e-12 * std::max(d, 1e-300) || a == 0) return d / w0;
-  // a·τ² + w0·τ − d = 0, the root with τ ≥ 0 (w0, w1 > 0): the stable form.
-  const double tau = 2 * d / (w0 + std::sqrt(w0 * w0 + 4 * a * d));
+  const double tau = 2 * d / (w0 + std::sqrt(std::max(0.0, w0 * w0 + 4 * a * d)));
   return std::clamp(tau, 0.0, dt);
 }
 

@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "acquire/manifest.hpp"
+#include "acquire/speed_angle.hpp"
+#include "common/units.hpp"
 #include "common/error.hpp"
 #include "support/temp_dir.hpp"
 
@@ -126,6 +130,48 @@ role = "crank_speed"
 pulses_per_rev = 60
 )");
   EXPECT_NE(stray.find("pulses_per_rev"), std::string::npos) << stray;
+}
+
+// The virtual edges against the closed form of a linear run-up, 250 → 350 rpm
+// in 2 s at 1 kHz (the speed linear between samples: the trapezoid integral
+// is exact): θ(t) = ω0·t + β·t²/2, so edge p at t = (√(ω0² + 2β·θp) − ω0)/β.
+// With pulses where θ = 2π·k + 1 rad the turns start at the pulses.
+TEST(SpeedAngle, EdgesOfALinearRunUpMatchTheClosedForm) {
+  const double fs = 1000, w0 = 250 * units::kPi / 30, w1 = 350 * units::kPi / 30, beta = (w1 - w0) / 2;
+  std::vector<double> rpm;
+  for (int i = 0; i <= 2000; ++i) rpm.push_back((w0 + beta * i / fs) * 30 / units::kPi);
+  ChannelSpec speed;
+  speed.name = "tacho", speed.role = ChannelRole::crank_speed, speed.index = 1;
+  auto time_at = [&](double theta) { return (std::sqrt(w0 * w0 + 2 * beta * theta) - w0) / beta; };
+  const SpeedAngle alone = speed_angle_edges(rpm, fs, 0, speed, nullptr, {}, {}, "m.toml");
+  ASSERT_EQ(alone.edges.segments.size(), 1u);
+  const NumberedSegment& seg = alone.edges.segments[0];
+  EXPECT_EQ(alone.edges.positions_per_rev, kSpeedPositionsPerRev);
+  EXPECT_FALSE(alone.zero_known);
+  ASSERT_EQ(alone.warnings.size(), 1u);
+  EXPECT_NE(alone.warnings[0].find("zero is unknown"), std::string::npos);
+  const double total = w0 * 2 + beta * 2;  // θ at 2 s
+  EXPECT_EQ(seg.time_s.size(), static_cast<std::size_t>(std::floor(total / (2 * units::kPi / 360))) + 1);
+  double worst = 0;
+  for (std::size_t i = 0; i < seg.time_s.size(); ++i) {
+    EXPECT_EQ(seg.position[i], static_cast<std::int64_t>(i));
+    worst = std::max(worst, std::abs(seg.time_s[i] - time_at(2 * units::kPi * static_cast<double>(i) / 360)));
+  }
+  EXPECT_LT(worst, 1e-9);
+
+  ChannelSpec pulse;
+  pulse.name = "pulse", pulse.role = ChannelRole::crank_pulse, pulse.index = 2;
+  std::vector<double> pulses;
+  for (int k = 0; 2 * units::kPi * k + 1 < total; ++k) pulses.push_back(time_at(2 * units::kPi * k + 1));
+  const SpeedAngle zeroed = speed_angle_edges(rpm, fs, 0, speed, &pulse, pulses, {}, "m.toml");
+  EXPECT_TRUE(zeroed.zero_known);
+  EXPECT_LT(zeroed.zero_spread_deg, 1e-6);
+  EXPECT_TRUE(zeroed.warnings.empty());
+  const NumberedSegment& z = zeroed.edges.segments.at(0);
+  EXPECT_EQ(z.position.front(), 0);
+  EXPECT_NEAR(z.time_s.front(), pulses.front(), 1e-9);
+  for (std::size_t i = 0; i < z.time_s.size(); ++i)
+    if (z.position[i] % 360 == 0) EXPECT_NEAR(z.time_s[i], pulses.at(static_cast<std::size_t>(z.position[i] / 360)), 1e-9);
 }
 
 }  // namespace
