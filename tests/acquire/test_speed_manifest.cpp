@@ -133,13 +133,13 @@ pulses_per_rev = 60
 }
 
 // The virtual edges against the closed form of a linear run-up, 250 → 350 rpm
-// in 2 s at 1 kHz (the speed linear between samples: the trapezoid integral
+// in 2 s at 1 kHz (the last sample at 1.999 s) (the speed linear between samples: the trapezoid integral
 // is exact): θ(t) = ω0·t + β·t²/2, so edge p at t = (√(ω0² + 2β·θp) − ω0)/β.
 // With pulses where θ = 2π·k + 1 rad the turns start at the pulses.
 TEST(SpeedAngle, EdgesOfALinearRunUpMatchTheClosedForm) {
   const double fs = 1000, w0 = 250 * units::kPi / 30, w1 = 350 * units::kPi / 30, beta = (w1 - w0) / 2;
   std::vector<double> rpm;
-  for (int i = 0; i <= 2000; ++i) rpm.push_back((w0 + beta * i / fs) * 30 / units::kPi);
+  for (int i = 0; i < 2000; ++i) rpm.push_back((w0 + beta * i / fs) * 30 / units::kPi);
   ChannelSpec speed;
   speed.name = "tacho", speed.role = ChannelRole::crank_speed, speed.index = 1;
   auto time_at = [&](double theta) { return (std::sqrt(w0 * w0 + 2 * beta * theta) - w0) / beta; };
@@ -150,7 +150,7 @@ TEST(SpeedAngle, EdgesOfALinearRunUpMatchTheClosedForm) {
   EXPECT_FALSE(alone.zero_known);
   ASSERT_EQ(alone.warnings.size(), 1u);
   EXPECT_NE(alone.warnings[0].find("zero is unknown"), std::string::npos);
-  const double total = w0 * 2 + beta * 2;  // θ at 2 s
+  const double T = 1.999, total = w0 * T + beta * T * T / 2;  // θ at the last sample
   EXPECT_EQ(seg.time_s.size(), static_cast<std::size_t>(std::floor(total / (2 * units::kPi / 360))) + 1);
   double worst = 0;
   for (std::size_t i = 0; i < seg.time_s.size(); ++i) {
