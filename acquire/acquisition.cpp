@@ -10,6 +10,7 @@
 #include "acquire/pulse_pass.hpp"
 #include "acquire/pulse_thresholds.hpp"
 #include "acquire/sample_tagging.hpp"
+#include "acquire/speed_angle.hpp"
 #include "acquire/streaming_pass.hpp"
 #include "acquire/wheel_decode.hpp"
 #include "acquire/wheel_pass.hpp"
@@ -82,17 +83,46 @@ AcquisitionReport acquire(Reader& reader, const Manifest& manifest, const Acquir
   clock.lap(AcquirePass::scan);
   report.channel_stats = std::move(scan.channel_stats);
   report.pulse_stats = scan.pulse_stats;
-  ThresholdChoice thresholds = pulse_thresholds(scan.pulse_histogram, scan.pulse_stats, manifest, info.file,
-                                                &scan.pulse_local);
-  report.thresholds = thresholds.thresholds;
-  append(report.warnings, std::move(thresholds.warnings));
+  const ChannelSpec* speed = manifest.speed_channel();
+  const ChannelSpec* speed_zero = speed ? manifest.channel_with(ChannelRole::crank_pulse) : nullptr;
+  if (!speed || speed_zero) {  // a speed track alone has no thresholds
+    ThresholdChoice thresholds = pulse_thresholds(scan.pulse_histogram, scan.pulse_stats, manifest, info.file,
+                                                  &scan.pulse_local);
+    report.thresholds = thresholds.thresholds;
+    append(report.warnings, std::move(thresholds.warnings));
+  }
 
   RevolutionSchedule schedule;
   SignalExcerpt excerpt;
   TimeRange& range = report.range;
   range.start_s = options.range.start_s ? options.range.start_s : manifest.start_s;
   range.end_s = options.range.end_s ? options.range.end_s : manifest.end_s;
-  if (manifest.multi_edge_angle()) {
+  if (speed) {
+    std::vector<double> pulse_s;
+    if (speed_zero) {
+      const EdgePassResult edges = edge_pass(stream, manifest, report.thresholds, &scan.pulse_local);
+      report.edges_debounced = edges.edges_debounced;
+      report.edge_level_V = edges.edge_level_V;
+      const PulseTrain train = pulse_train_from_edges(edges, options.pulses, manifest, info.file);
+      for (const auto& seg : train.segments)
+        for (const Pulse& p : seg)
+          if (!p.inserted) pulse_s.push_back(p.time_s);
+    }
+    const std::vector<double> rpm = speed_track_pass(stream, manifest, *speed);
+    clock.lap(AcquirePass::pulses);
+    SpeedAngle angle = speed_angle_edges(rpm, info.sample_rate_hz, info.start_time_s, *speed, speed_zero, pulse_s,
+                                         range, manifest.file);
+    append(report.warnings, std::move(angle.warnings));
+    trim_numbered_edges(angle.edges, range);
+    WheelSchedule wheel = plan_wheel_revolutions(angle.edges, manifest, info.sample_rate_hz, options.grid_points_per_rev);
+    wheel.report.source = angle.source;
+    report.pulses = std::move(wheel.turns);
+    report.wheel = std::move(wheel.report);
+    append(report.warnings, std::move(wheel.warnings));
+    schedule = std::move(wheel.schedule);
+    if (options.excerpt_revolutions > 0)
+      excerpt = excerpt_window(report.pulses, options.excerpt_revolutions, info.sample_rate_hz, info.start_time_s, info.frames);
+  } else if (manifest.multi_edge_angle()) {
     const WheelEdges edges = wheel_edge_pass(stream, manifest, report.thresholds);
     clock.lap(AcquirePass::pulses);
     NumberedEdges numbered = number_edges(edges, manifest, info.file);

@@ -32,6 +32,7 @@ constexpr std::array kRoles{
     std::pair{ChannelRole::crank_index, "crank_index"},
     std::pair{ChannelRole::encoder_a, "encoder_a"},
     std::pair{ChannelRole::encoder_b, "encoder_b"},
+    std::pair{ChannelRole::crank_speed, "crank_speed"},
     std::pair{ChannelRole::ignore, "ignore"},
 };
 
@@ -61,7 +62,32 @@ int count(const Manifest& m, ChannelRole role) {
 void check_angle_source(const Manifest& m) {
   const std::string f = m.file.string() + ": ";
   const int pulses = count(m, ChannelRole::crank_pulse), a = count(m, ChannelRole::encoder_a),
-            b = count(m, ChannelRole::encoder_b), index = count(m, ChannelRole::crank_index);
+            b = count(m, ChannelRole::encoder_b), index = count(m, ChannelRole::crank_index),
+            speeds = count(m, ChannelRole::crank_speed);
+  if (speeds > 1)
+    throw InputError(f + std::to_string(speeds) +
+                     " channels have role = \"crank_speed\"; the crank angle is integrated from one rpm track: keep one "
+                     "and set the others to role = \"ignore\"");
+  if (speeds == 1) {
+    const ChannelSpec& s = *m.channel_with(ChannelRole::crank_speed);
+    if (a > 0 || b > 0 || index > 0)
+      throw InputError(f + "channel '" + s.name + "' has role = \"crank_speed\" beside an encoder or a crank_index "
+                           "channel; the crank angle comes from one source: remove the speed channel (set it to role = "
+                           "\"ignore\") or the encoder/index channels");
+    if (pulses > 1)
+      throw InputError(f + std::to_string(pulses) + " channels have role = \"crank_pulse\" beside the speed channel '" +
+                       s.name + "'; give at most one (once per turn: it sets the angle's zero)");
+    if (pulses == 1 && s.crank_offset_given)
+      throw InputError(f + "channel '" + s.name + "' key 'crank_offset_deg' beside the crank_pulse channel '" +
+                       m.channel_with(ChannelRole::crank_pulse)->name +
+                       "': the pulse sets the zero; give crank_offset_deg on the pulse channel and remove it here");
+    if (pulses == 1 && m.channel_with(ChannelRole::crank_pulse)->pulses_per_rev != 1)
+      throw InputError(f + "channel '" + m.channel_with(ChannelRole::crank_pulse)->name +
+                       "' key 'pulses_per_rev' beside the speed channel '" + s.name +
+                       "': with a speed channel the crank_pulse only sets the angle's zero, once per turn; remove "
+                       "pulses_per_rev (and missing_teeth), or remove the speed channel to use the wheel");
+    return;
+  }
   if (index > 1) throw InputError(f + std::to_string(index) + " channels have role = \"crank_index\"; give at most one");
   if (a > 0 || b > 0) {
     if (a != 1 || b != 1)
@@ -75,7 +101,8 @@ void check_angle_source(const Manifest& m) {
   if (pulses != 1)
     throw InputError(f + std::to_string(pulses) +
                      " channels have role = \"crank_pulse\"; exactly one must (the once-per-revolution crank pulse, "
-                     "or a tooth wheel with pulses_per_rev), or describe an encoder as encoder_a and encoder_b");
+                     "or a tooth wheel with pulses_per_rev), or describe an encoder as encoder_a and encoder_b, or an rpm "
+                     "track as crank_speed");
   const ChannelSpec& p = *m.channel_with(ChannelRole::crank_pulse);
   const std::string key = "channel '" + p.name + "' key ";
   if (p.pulses_per_rev == 1 && index > 0)
@@ -189,6 +216,11 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
       s.fail("smoothing_period_turns", "is given but crank_smoothing is not \"spline\"; set crank_smoothing = \"spline\" or remove it");
     }
   }
+  if (c.role == ChannelRole::crank_speed) {
+    if (s.has("rpm_per_V")) c.rpm_per_V = s.positive("rpm_per_V");
+    c.crank_offset_given = s.has("crank_offset_deg");
+    c.crank_offset_rad = deg_to_rad(s.in_range("crank_offset_deg", -360, 360, 0.0));
+  }
   if (auto n = s.optional_string("notes")) c.notes = *n;
   s.finish();
   return c;
@@ -206,7 +238,9 @@ std::vector<std::string> channel_role_names() {
   return v;
 }
 
-bool is_accelerometer(ChannelRole r) { return !is_angle_channel(r) && r != ChannelRole::ignore; }
+bool is_accelerometer(ChannelRole r) {
+  return !is_angle_channel(r) && r != ChannelRole::ignore && r != ChannelRole::crank_speed;
+}
 bool is_angle_channel(ChannelRole r) {
   return r == ChannelRole::crank_pulse || r == ChannelRole::crank_index || r == ChannelRole::encoder_a ||
          r == ChannelRole::encoder_b;
@@ -217,6 +251,7 @@ bool is_tangential(ChannelRole r) { return r == ChannelRole::coupler_tangential 
 const ChannelSpec& Manifest::pulse_channel() const {
   if (const ChannelSpec* c = channel_with(ChannelRole::crank_pulse)) return *c;
   if (const ChannelSpec* c = channel_with(ChannelRole::encoder_a)) return *c;
+  if (const ChannelSpec* c = channel_with(ChannelRole::crank_speed)) return *c;
   throw InputError(file.string() + ": no channel has role = \"crank_pulse\"");  // load_manifest prevents this
 }
 
@@ -228,7 +263,7 @@ const ChannelSpec* Manifest::channel_with(ChannelRole role) const {
 
 bool Manifest::multi_edge_angle() const {
   const ChannelSpec& p = pulse_channel();
-  return p.role == ChannelRole::encoder_a || p.pulses_per_rev > 1;
+  return speed_channel() || p.role == ChannelRole::encoder_a || p.pulses_per_rev > 1;
 }
 
 std::filesystem::path sidecar_manifest_path(const std::filesystem::path& recording) {
@@ -385,6 +420,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
       if (c.smoothing_period_turns > 0)
         os << "crank_smoothing = \"spline\"\nsmoothing_period_turns = " << num(c.smoothing_period_turns) << "\n";
     }
+    if (c.rpm_per_V) os << "rpm_per_V = " << num(*c.rpm_per_V) << "\n";
+    if (c.crank_offset_given) os << "crank_offset_deg = " << deg(c.crank_offset_rad) << "\n";
     if (!c.notes.empty()) os << "notes = " << quoted(c.notes) << "\n";
   }
   return os.str();

@@ -39,6 +39,7 @@ enum class ChannelRole {
   crank_index,  ///< once-per-turn mark beside a tooth wheel or an encoder (Z)
   encoder_a,    ///< quadrature encoder, channel A
   encoder_b,    ///< quadrature encoder, channel B
+  crank_speed,  ///< a processed speed track (rpm), integrated to the crank angle (acquire/speed_angle.hpp)
   ignore
 };
 
@@ -86,6 +87,12 @@ struct ChannelSpec {
   int missing_teeth = 0;               ///< crank_pulse: teeth left out of the wheel (a 60−2 wheel: 2)
   int lines_per_rev = 0;               ///< encoder_a: encoder lines per turn (4 edges each)
   bool correct_tooth_spacing = false;  ///< estimate each tooth's angle over the turns and use it
+  // A crank_speed channel: rpm = recorded value (no rpm_per_V), or
+  // recorded value · full_scale_V · rpm_per_V (a tacho voltage).
+  std::optional<double> rpm_per_V;
+  /// crank_speed without a crank_pulse: crank_offset_deg given (the crank
+  /// angle at the first sample analysed), so the zero is known.
+  bool crank_offset_given = false;
   /// On crank_pulse or encoder_a (crank_smoothing = "spline", crank_smoothing.hpp): the shortest
   /// period of a speed change, in turns, that the crank motion keeps; 0 (crank_smoothing = "none",
   /// the default): the motion through every edge.
@@ -113,8 +120,10 @@ struct Manifest {
 
   ReaderOptions reader_options() const { return {sample_rate_hz, time_column, rate_variable, header_line}; }
   /// The crank-angle source's main channel: the crank_pulse channel, or
-  /// encoder_a. Its thresholds, offset and tooth keys apply.
+  /// encoder_a, or (no pulse) crank_speed. Its thresholds, offset and tooth keys apply.
   const ChannelSpec& pulse_channel() const;
+  /// The crank_speed channel (the crank angle integrated from an rpm track), or null.
+  const ChannelSpec* speed_channel() const { return channel_with(ChannelRole::crank_speed); }
   /// The channel with this role, or null.
   const ChannelSpec* channel_with(ChannelRole role) const;
   /// True when the crank angle comes from more than one edge per turn (a

@@ -98,7 +98,8 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
         "# end_s = 60     # the values to type when a coast-down, a stall or a run-up should be cut\n";
   if (r.pulse_channel < 0)
     os << "\n# No channel looks like a crank-pulse train: give the pulse channel role = \"crank_pulse\"\n"
-          "# (and polarity, crank_offset_deg), and delete its accelerometer keys.\n";
+          "# (and polarity, crank_offset_deg), and delete its accelerometer keys; or an rpm track\n"
+          "# role = \"crank_speed\" (rpm_per_V when it is a voltage; a pulse, if any, sets the zero).\n";
 
   for (const auto& ch : r.channels) {
     os << "\n";

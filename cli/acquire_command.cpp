@@ -50,7 +50,7 @@ Manifest (TOML) keys: rig, clearance_mm, full_scale_V, adc_range_V,
 sample_rate_hz, time_column, header_line, crank_direction (ccw|cw), notes; per
 [[channel]]: index | column, name, role (coupler_tangential coupler_normal
 rocker_tangential rocker_normal crank_pulse crank_index encoder_a encoder_b
-ignore), sensitivity_mV_per_m_s2 + gain | sensitivity_mV_per_g + gain |
+crank_speed ignore), sensitivity_mV_per_m_s2 + gain | sensitivity_mV_per_g + gain |
 volts_per_unit, axis_sign,
 position_mm (from the crank pin A on the coupler, from the pivot O4 on the
 rocker), offset_mm, ac_coupled + highpass_hz; crank_pulse: polarity
@@ -58,7 +58,8 @@ rocker), offset_mm, ac_coupled + highpass_hz; crank_pulse: polarity
 debounce_ms, pulses_per_rev + (a crank_index channel | missing_teeth) for a
 tooth wheel; encoder_a: lines_per_rev (with an encoder_b channel, optional
 crank_index = Z); correct_tooth_spacing; crank_smoothing (none|spline) +
-smoothing_period_turns; notes.
+smoothing_period_turns; crank_speed: rpm_per_V (default: values in rpm;
+an optional crank_pulse sets the zero, else crank_offset_deg); notes.
 Meanings and the sensor frame: docs/acquire.md.
 Warnings (repaired pulses, gaps, clipping) go to stderr and summary.json.
 )";

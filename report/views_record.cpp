@@ -73,6 +73,10 @@ json channel_sheet_json(const Manifest& m, const AcquisitionReport& acq, const j
       for (std::size_t i = 0; i < acq.channels.size() && i < acq.channel_stats.size(); ++i)
         if (acq.channels[i].name == c.name) row["recorded"] = stats_json(acq.channel_stats[i], acq.clipping_checked);
       row["setup_check"] = channel_check(sc, c.name);
+    } else if (c.role == ChannelRole::crank_speed) {  // the crank angle integrated from it (acquire/speed_angle)
+      row["unit"] = c.rpm_per_V ? "V" : "rpm";
+      if (c.rpm_per_V) row["rpm_per_V"] = *c.rpm_per_V;
+      row["zero"] = m.channel_with(ChannelRole::crank_pulse) ? "at the crank_pulse" : "unknown (no crank_pulse)";
     } else if (is_angle_channel(c.role)) {
       row["unit"] = "V";
       if (clip.checked) row["input_range"] = {{"min", clip.low * m.full_scale_V}, {"max", clip.high * m.full_scale_V}};
