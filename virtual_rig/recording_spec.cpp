@@ -94,6 +94,12 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   spec.speed_fluctuation = r.in_range("speed_fluctuation_pct", 0, 50, 0.0) * 1e-2;
   if (r.has("speed_fluctuation_period_s"))
     spec.speed_fluctuation_period_s = r.in_range("speed_fluctuation_period_s", 1e-3, 1e6);
+  spec.daq_filter = read_daq_filter(r);
+  spec.multiplexed = r.choice("sampling", {"simultaneous", "multiplexed"}, "simultaneous") == "multiplexed";
+  if (r.has("skew_us")) {
+    if (!spec.multiplexed) r.fail("skew_us", "is for sampling = \"multiplexed\"; add that key or remove this one");
+    spec.skew_s = r.in_range("skew_us", 0, 1e6) * 1e-6;
+  }
   spec.seed = static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<long long>::max(), 1));
   if (auto n = r.optional_string("notes")) spec.notes = *n;
   if (r.has("warmup_revolutions")) {

@@ -41,6 +41,14 @@ struct RecordingSpec {
   double speed_fluctuation = 0;       ///< ε
   std::optional<double> speed_fluctuation_period_s;  ///< default: 10 mean revolutions
   std::vector<double> speed_harmonics;  ///< relative speed change at 1×, 2×, … the mean turn rate
+  /// `sampling = "multiplexed"`: one ADC scans the channels in order,
+  /// channel i sampled i·skew after channel 0 (`skew_us`; default the scan
+  /// spread over the sample period, 1/(fs·channels)). The manifest states it.
+  bool multiplexed = false;
+  std::optional<double> skew_s;
+  /// The DAQ's anti-alias filter on the accelerometer channels (`daq_filter…`);
+  /// the sensors' mounted resonances are in `sensors` (sensor_resonance_Hz/_Q).
+  DaqFilter daq_filter;
   WheelSpec wheel;                    ///< a tooth wheel or encoder in place of the pulse (`[recording.wheel]`)
   std::uint64_t seed = 1;
   std::vector<ChannelSpec> sensors;   ///< accelerometers, in channel order
