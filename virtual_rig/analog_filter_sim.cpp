@@ -18,7 +18,7 @@ AnalogFilterSim::AnalogFilterSim(std::vector<AnalogSection> sections, double fs)
     w_.push_back(units::kTwoPi * s.f0_hz);
     w_max = std::max(w_max, w_.back() * (s.order == 2 ? std::max(1.0, 1.0 / s.q) : 1.0));
   }
-  substeps_ = std::max(1, static_cast<int>(std::ceil(w_max / (0.5 * fs))));
+  substeps_ = std::max(1, static_cast<int>(std::ceil(w_max / (0.25 * fs))));
   h_ = 1.0 / (fs * substeps_);
   const std::size_t n = 2 * sections_.size();
   state_.assign(n, 0.0), k1_ = k2_ = k3_ = k4_ = tmp_ = state_;
@@ -43,12 +43,13 @@ void AnalogFilterSim::derivative(const std::vector<double>& y, double x, std::ve
   }
 }
 
-double AnalogFilterSim::operator()(double x) {
-  if (sections_.empty()) return x;
+double AnalogFilterSim::step(double t0_s, const std::function<double(double)>& x_at) {
+  if (sections_.empty()) return x_prev_ = x_at(t0_s + h_ * substeps_);
   const std::size_t n = state_.size();
+  double x0 = x_prev_;
   for (int s = 0; s < substeps_; ++s) {
-    const double a = static_cast<double>(s) / substeps_, b = static_cast<double>(s + 1) / substeps_;
-    const double x0 = x_prev_ + a * (x - x_prev_), x1 = x_prev_ + b * (x - x_prev_), xm = 0.5 * (x0 + x1);
+    const double ts = t0_s + h_ * s;
+    const double xm = x_at(ts + 0.5 * h_), x1 = x_at(ts + h_);
     derivative(state_, x0, k1_);
     for (std::size_t i = 0; i < n; ++i) tmp_[i] = state_[i] + 0.5 * h_ * k1_[i];
     derivative(tmp_, xm, k2_);
@@ -57,8 +58,9 @@ double AnalogFilterSim::operator()(double x) {
     for (std::size_t i = 0; i < n; ++i) tmp_[i] = state_[i] + h_ * k3_[i];
     derivative(tmp_, x1, k4_);
     for (std::size_t i = 0; i < n; ++i) state_[i] += h_ / 6 * (k1_[i] + 2 * k2_[i] + 2 * k3_[i] + k4_[i]);
+    x0 = x1;
   }
-  x_prev_ = x;
+  x_prev_ = x0;
   return state_[n - 2];
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 // A cascade of analog low-pass sections (acquire/analog_response.hpp: an
 // accelerometer's mounted resonance, a Butterworth anti-alias filter) run on
-// a sampled input: the sections' ODEs integrated by RK4 with the input
-// linear between samples, in sub-steps short enough for the highest corner
-// (ω0·h ≤ 0.5), so the simulated response matches H(jω) in band and the
-// sections above the Nyquist frequency still act.
+// a continuous input: the sections' ODEs integrated by RK4, the input
+// evaluated at each stage's time (not interpolated between samples, which
+// would lose (πf/fs)²/3 of the gain: 4.5 % at 0.12·fs), in sub-steps short
+// enough for the highest corner (ω0·h ≤ 0.25), so the simulated response
+// matches H(jω) in band and the sections above the Nyquist frequency act.
 
+#include <functional>
 #include <vector>
 
 #include "acquire/analog_response.hpp"
@@ -18,8 +20,10 @@ class AnalogFilterSim {
   bool empty() const { return sections_.empty(); }
   /// Sets the state to the steady response to a constant input x.
   void prime(double x);
-  /// Advances one sample with the new input; returns the output.
-  double operator()(double x);
+  /// Advances from t0_s (the previous call's end; the input there is the
+  /// last one seen) to t1_s = t0_s + 1/fs, the input x_at(t) evaluated at
+  /// the stages inside; returns the output at t1_s.
+  double step(double t0_s, const std::function<double(double)>& x_at);
 
  private:
   void derivative(const std::vector<double>& y, double x, std::vector<double>& dy) const;

@@ -217,7 +217,7 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
         if (!hp[c] && analog[c].empty()) continue;
         double f = force_at(c, t, &st);
         if (i == -warm) analog[c].prime(f);
-        f = analog[c](f);
+        if (!analog[c].empty()) f = analog[c].step(t - 1.0 / fs, [&](double tau) { return force_at(c, tau, nullptr); });
         if (!hp[c]) continue;
         if (i == -warm) hp[c]->prime(f);
         (*hp[c])(f);
@@ -288,7 +288,8 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       for (std::size_t c = 0; c < nsens; ++c) {
         const ChannelSpec& s = spec.sensors[c];
         const double force = force_at(c, t, &st);
-        const double analog_out = analog[c](force);
+        const double analog_out =
+            analog[c].empty() ? force : analog[c].step(t - 1.0 / fs, [&](double tau) { return force_at(c, tau, nullptr); });
         const double sensed = hp[c] ? (*hp[c])(analog_out) : analog_out;
         if (truth) {
           row.push_back(force);

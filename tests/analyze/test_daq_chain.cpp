@@ -160,7 +160,7 @@ TEST(DaqChain, SensorResonanceIsRemovedWhenTheManifestStatesIt) {
   EXPECT_LT(e.known.alpha4, ref.alpha4 + 2e-4);
 }
 
-TEST(DaqChain, ManifestSkewKeysAreCheckedAtTheBoundary) {
+TEST(DaqChain, ManifestKeysAreCheckedAtTheBoundary) {
   VirtualSetup v;
   const VirtualRigResult w = v.write("plain.wav", false);
   const auto add = [&](const std::string& extra, const std::string& name) {
@@ -186,6 +186,38 @@ TEST(DaqChain, ManifestSkewKeysAreCheckedAtTheBoundary) {
   EXPECT_NE(message(add("sampling = \"interleaved\"", "c.toml")).find("sampling"), std::string::npos);
   EXPECT_EQ(message(add("sampling = \"multiplexed\"\nskew_us = 10", "d.toml")), "");
   EXPECT_NEAR(load_manifest(add("sampling = \"multiplexed\"\nskew_us = 10", "e.toml")).channel_skew_s, 10e-6, 1e-15);
+  // The anti-alias filter: an unknown type lists the known ones; keys of
+  // another type or a missing order/cutoff name the key.
+  const std::string unknown = message(add("daq_filter = \"chebyshev\"", "f.toml"));
+  EXPECT_NE(unknown.find("daq_filter"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("butterworth"), std::string::npos) << unknown;
+  EXPECT_NE(message(add("daq_filter = \"butterworth\"\ndaq_filter_order = 4", "g.toml")).find("daq_filter_cutoff_Hz"),
+            std::string::npos);
+  EXPECT_NE(message(add("daq_filter_delay_us = 300", "h.toml")).find("daq_filter_delay_us"), std::string::npos);
+  const Manifest bw = load_manifest(add("daq_filter = \"butterworth\"\ndaq_filter_order = 5\ndaq_filter_cutoff_Hz = 4000", "i.toml"));
+  EXPECT_EQ(bw.daq_filter.order, 5);
+  EXPECT_EQ(daq_filter_sections(bw.daq_filter).size(), 3u);
+  // Written back and read again: the same filter.
+  EXPECT_EQ(load_manifest(add(daq_filter_toml(bw.daq_filter), "j.toml")).daq_filter.cutoff_hz, 4000.0);
+  // A resonance needs both keys, within range.
+  const auto with_channel_key = [&](const std::string& key, const std::string& name) {
+    std::ifstream in(w.manifest);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    const auto at = s.find("role = \"coupler_tangential\"");
+    s.insert(s.find('\n', at) + 1, key + "\n");
+    const auto p = w.manifest.parent_path() / name;
+    std::ofstream(p) << s;
+    return p;
+  };
+  EXPECT_NE(message(with_channel_key("sensor_resonance_Hz = 20000", "k.toml")).find("sensor_resonance_Q"),
+            std::string::npos);
+  EXPECT_NE(message(with_channel_key("sensor_resonance_Hz = 20000\nsensor_resonance_Q = 0.1", "l.toml"))
+                .find("sensor_resonance_Q"),
+            std::string::npos);
+  const Manifest r = load_manifest(with_channel_key("sensor_resonance_Hz = 20000\nsensor_resonance_Q = 25", "m.toml"));
+  EXPECT_EQ(r.channel_with(ChannelRole::coupler_tangential)->sensor_resonance_hz, 20000.0);
 }
 
 }  // namespace
