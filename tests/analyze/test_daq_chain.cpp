@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
+#include <numbers>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -26,7 +28,19 @@ using testing::VirtualSetup;
 
 struct Errors {
   double alpha3 = 0, omega3 = 0, alpha4 = 0, omega4 = 0;
+  double phase3_order4_deg = 0, phase3_order8_deg = 0;  // arg(estimate/truth) of α3's crank order
 };
+
+/// arg(est/truth) of crank order k of two revolution averages (degrees).
+double order_phase_deg(const std::vector<double>& est, const std::vector<double>& truth, int k) {
+  std::complex<double> e = 0, t = 0;
+  const std::size_t N = est.size();
+  for (std::size_t i = 0; i < N; ++i) {
+    const std::complex<double> w = std::polar(1.0, -2 * std::numbers::pi * k * static_cast<double>(i) / N);
+    e += est[i] * w, t += truth[i] * w;
+  }
+  return std::arg(e / t) * 180 / std::numbers::pi;
+}
 
 Errors run(const VirtualSetup& v, const VirtualRigResult& written, const std::filesystem::path& manifest) {
   AnalyzeOptions o;
@@ -35,10 +49,13 @@ Errors run(const VirtualSetup& v, const VirtualRigResult& written, const std::fi
   const RecordingAnalysis a = analyze_recording(written.recording, manifest, o);
   const testing::GridTruth t = testing::grid_truth(v, written, a, a.revolution_numbers);
   const std::size_t N = a.grid_points_per_rev;
-  return {rel_rms_error(a.coupler->alpha_rad_s2.mean, row_mean(t.alpha3, N)),
+  const std::vector<double> alpha3 = row_mean(t.alpha3, N);
+  return {rel_rms_error(a.coupler->alpha_rad_s2.mean, alpha3),
           rel_rms_error(a.coupler->omega_rad_s.mean, row_mean(t.omega3, N)),
           rel_rms_error(a.rocker->alpha_rad_s2.mean, row_mean(t.alpha4, N)),
-          rel_rms_error(a.rocker->omega_rad_s.mean, row_mean(t.omega4, N))};
+          rel_rms_error(a.rocker->omega_rad_s.mean, row_mean(t.omega4, N)),
+          order_phase_deg(a.coupler->alpha_rad_s2.mean, alpha3, 4),
+          order_phase_deg(a.coupler->alpha_rad_s2.mean, alpha3, 8)};
 }
 
 /// The manifest without the lines starting with any of `keys`.
@@ -61,8 +78,8 @@ std::filesystem::path without_keys(const std::filesystem::path& manifest, std::i
 }
 
 void print(const char* what, const Errors& e) {
-  std::printf("  %-44s %8.4f%% %8.4f%% %8.4f%% %8.4f%%\n", what, 100 * e.alpha3, 100 * e.omega3, 100 * e.alpha4,
-              100 * e.omega4);
+  std::printf("  %-44s %8.4f%% %8.4f%% %8.4f%% %8.4f%% %8.3f %8.3f\n", what, 100 * e.alpha3, 100 * e.omega3,
+              100 * e.alpha4, 100 * e.omega4, e.phase3_order4_deg, e.phase3_order8_deg);
 }
 
 /// The thesis rig at 350 rpm sampled at 12.8 kHz, no noise: 24 revolutions.
@@ -104,13 +121,24 @@ TEST(DaqChain, MultiplexedSkewIsRemovedWhenTheManifestStatesIt) {
   const VirtualRigResult w = v.write("probe.wav", false);
   EXPECT_NEAR(load_manifest(w.manifest).channel_skew_s, 1.0 / (12800.0 * 4), 1e-12);
   const Effect e = measure(v, "multiplexed", {"sampling", "skew_us"});
-  std::printf("\n  averaged RMS error / RMS of truth, thesis rig 350 rpm, 12.8 kHz, no noise\n  %-44s %9s %9s %9s %9s\n",
-              "recording / manifest", "a3", "w3", "a4", "w4");
+  std::printf("\n  averaged RMS error / RMS of truth, thesis rig 350 rpm, 12.8 kHz, no noise; phase error of a3 orders 4, 8 (deg)\n"
+              "  %-44s %9s %9s %9s %9s %8s %8s\n",
+              "recording / manifest", "a3", "w3", "a4", "w4", "ph4", "ph8");
   print("simultaneous sampling", ref);
   print("multiplexed (skew 19.53 us)", e);
 
   EXPECT_GT(e.unknown.alpha3, 5 * e.known.alpha3);
   EXPECT_GT(e.unknown.alpha4, 3 * e.known.alpha4);
+  // The coupler channel leads the crank channel by 3 skews (58.6 µs): order
+  // k at 350 rpm is shifted by 360°·k·(350/60 Hz)·58.6 µs (0.49° at k = 4,
+  // 0.98° at 8) without the keys, and back to the reference with them.
+  const double lead_s = 3.0 / (12800.0 * 4), order_hz = 350.0 / 60;
+  EXPECT_NEAR(std::abs(e.unknown.phase3_order8_deg), 360 * 8 * order_hz * lead_s, 0.1);
+  EXPECT_NEAR(std::abs(e.unknown.phase3_order4_deg), 360 * 4 * order_hz * lead_s, 0.05);
+  // (order 8 is 10× weaker than order 4: the record ends' wrap-around in the
+  // correction leaves 0.07° there; order 4 is back to the reference.)
+  EXPECT_LT(std::abs(e.known.phase3_order8_deg), 0.1);
+  EXPECT_LT(std::abs(e.known.phase3_order4_deg), 0.01);
   EXPECT_LT(e.known.alpha3, ref.alpha3 + 2e-4);
   EXPECT_LT(e.known.alpha4, ref.alpha4 + 2e-4);
   EXPECT_LT(e.known.omega3, ref.omega3 + 2e-4);
