@@ -135,7 +135,7 @@ TEST(DaqChain, MultiplexedSkewIsRemovedWhenTheManifestStatesIt) {
   const double lead_s = 3.0 / (12800.0 * 4), order_hz = 350.0 / 60;
   EXPECT_NEAR(std::abs(e.unknown.phase3_order8_deg), 360 * 8 * order_hz * lead_s, 0.1);
   EXPECT_NEAR(std::abs(e.unknown.phase3_order4_deg), 360 * 4 * order_hz * lead_s, 0.05);
-  // (order 8 is 10× weaker than order 4: the record ends' wrap-around in the
+XX
   // correction leaves 0.07° there; order 4 is back to the reference.)
   EXPECT_LT(std::abs(e.known.phase3_order8_deg), 0.1);
   EXPECT_LT(std::abs(e.known.phase3_order4_deg), 0.01);
