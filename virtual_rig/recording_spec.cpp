@@ -1,5 +1,6 @@
 #include "virtual_rig/recording_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -43,6 +44,18 @@ ChannelRole role_of(const std::string& name) {
 }
 
 }  // namespace
+
+double recording_run_in_s(const RecordingSpec& spec) {
+  double run_in_s = 0;
+  for (const ChannelSpec& c : spec.sensors) {
+    if (c.ac_coupled) run_in_s = std::max(run_in_s, 12.0 / (units::kTwoPi * c.highpass_hz));
+    std::vector<AnalogSection> sections = daq_filter_sections(spec.daq_filter);
+    if (c.sensor_resonance_hz > 0) sections.push_back({2, c.sensor_resonance_hz, c.sensor_resonance_q});
+    for (const AnalogSection& a : sections)
+      run_in_s = std::max(run_in_s, 12.0 * (a.order == 2 ? 2.0 * a.q : 1.0) / (units::kTwoPi * a.f0_hz));
+  }
+  return run_in_s + spec.daq_filter.delay_s + 2.0 / spec.sample_rate_hz;
+}
 
 RecordingSpec read_recording_spec(const Scene& scene) {
   if (!scene.recording)

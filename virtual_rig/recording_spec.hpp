@@ -59,6 +59,11 @@ struct RecordingSpec {
   int warmup_revolutions = 20;
 };
 
+/// How long before t = 0 the recording asks for the motion: the filters'
+/// run-in (twelve decay times of the AC coupling's high-pass, the mounted
+/// resonance, the anti-alias filter) plus a linear-phase filter's delay.
+double recording_run_in_s(const RecordingSpec& spec);
+
 /// Parses `scene.recording`; InputError naming the scene file, line and key
 /// (an unknown key too). InputError when the scene has no [recording].
 RecordingSpec read_recording_spec(const Scene& scene);

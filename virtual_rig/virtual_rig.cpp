@@ -186,6 +186,11 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   // resonance and a Butterworth anti-alias filter (analog_filter_sim.hpp),
   // then the AC coupling's high-pass; all run in from before t = 0.
   const double skew_s = spec.multiplexed ? spec.skew_s.value_or(1.0 / (fs * static_cast<double>(nch))) : 0.0;
+  if (skew_s * static_cast<double>(nch - 1) >= 1.0 / fs)
+    throw InputError(scene.source.string() + ": key 'recording.skew_us' = " + format_double(skew_s * 1e6) +
+                     ": a scan of " + std::to_string(nch) + " channels must end within the sample period " +
+                     format_double(1e6 / fs) + " us; give at most " + format_double(1e6 / (fs * static_cast<double>(nch))) +
+                     " (the default)");
   std::vector<double> sample_offset_s(nsens);
   std::vector<AnalogFilterSim> analog;
   std::vector<std::optional<HighPass>> hp(nsens);
