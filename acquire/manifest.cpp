@@ -174,6 +174,13 @@ ChannelSpec read_channel_spec(TomlSection& s, bool with_index, const std::vector
     c.ac_coupled = s.boolean("ac_coupled", false);
     if (c.ac_coupled) c.highpass_hz = s.positive("highpass_hz");
     else if (s.has("highpass_hz")) s.fail("highpass_hz", "is given but ac_coupled is not true; set ac_coupled = true or remove it");
+    if (s.has("sensor_resonance_Hz") != s.has("sensor_resonance_Q"))
+      s.fail(s.has("sensor_resonance_Hz") ? "sensor_resonance_Q" : "sensor_resonance_Hz",
+             "is missing: a mounted resonance needs both sensor_resonance_Hz and sensor_resonance_Q (calibration sheet)");
+    if (s.has("sensor_resonance_Hz")) {
+      c.sensor_resonance_hz = s.in_range("sensor_resonance_Hz", 1, 1e7);
+      c.sensor_resonance_q = s.in_range("sensor_resonance_Q", 0.5, 1e4);
+    }
   }
   if (is_angle_channel(c.role)) {
     c.polarity = s.choice("polarity", {"rising", "falling"}, "rising") == "rising" ? PulsePolarity::rising
@@ -266,6 +273,17 @@ bool Manifest::multi_edge_angle() const {
   return speed_channel() || p.role == ChannelRole::encoder_a || p.pulses_per_rev > 1;
 }
 
+double Manifest::sample_delay_s(const ChannelSpec& channel) const {
+  // A linear-phase anti-alias filter delays the accelerometer channels.
+  const double filter_s = is_accelerometer(channel.role) ? -daq_filter.delay_s : 0.0;
+  if (channel_skew_s == 0) return filter_s;
+  const ChannelSpec& p = pulse_channel();
+  if (!channel.index || !p.index)
+    throw InputError(file.string() + ": channel '" + (channel.index ? p.name : channel.name) +
+                     "' has no channel index yet; sampling = \"multiplexed\" needs the channels bound to the recording");
+  return filter_s + channel_skew_s * static_cast<double>(*channel.index - *p.index);
+}
+
 std::filesystem::path sidecar_manifest_path(const std::filesystem::path& recording) {
   std::filesystem::path p = recording;
   return p.replace_extension(".toml");
@@ -298,6 +316,15 @@ Manifest load_manifest(const std::filesystem::path& file) {
   if (root.has("end_s")) m.end_s = root.number("end_s");
   if (m.start_s && m.end_s && !(*m.end_s > *m.start_s))
     root.fail("end_s", "must be after start_s (" + format_number(*m.start_s) + " s)");
+  m.daq_filter = read_daq_filter(root);
+  if (root.choice("sampling", {"simultaneous", "multiplexed"}, "simultaneous") == "multiplexed") {
+    if (!root.has("skew_us"))
+      root.fail("sampling", "= \"multiplexed\" needs 'skew_us', the time between neighbouring channels' samples "
+                            "(for a scan over the whole sample period: 1e6/(sample rate · channels))");
+    m.channel_skew_s = root.in_range("skew_us", 0, 1e6) * 1e-6;
+  } else if (root.has("skew_us")) {
+    root.fail("skew_us", "is for sampling = \"multiplexed\"; add that key or remove this one");
+  }
   if (auto n = root.optional_string("notes")) m.notes = *n;
 
   auto sections = root.sections("channel");
@@ -391,6 +418,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
   os << "crank_direction = \"" << (m.crank_direction > 0 ? "ccw" : "cw") << "\"\n";
   if (m.start_s) os << "start_s = " << num(*m.start_s) << "\n";
   if (m.end_s) os << "end_s = " << num(*m.end_s) << "\n";
+  os << daq_filter_toml(m.daq_filter);
+  if (m.channel_skew_s > 0) os << "sampling = \"multiplexed\"\nskew_us = " << num(m.channel_skew_s * 1e6) << "\n";
   if (!m.notes.empty()) os << "notes = " << quoted(m.notes) << "\n";
   for (const auto& c : m.channels) {
     os << "\n[[channel]]\n";
@@ -405,6 +434,9 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
       if (c.offset_m != 0) os << "offset_mm = " << mm(c.offset_m) << "\n";
       os << "ac_coupled = " << (c.ac_coupled ? "true" : "false") << "\n";
       if (c.ac_coupled) os << "highpass_hz = " << num(c.highpass_hz) << "\n";
+      if (c.sensor_resonance_hz > 0)
+        os << "sensor_resonance_Hz = " << num(c.sensor_resonance_hz) << "\nsensor_resonance_Q = "
+           << num(c.sensor_resonance_q) << "\n";
     }
     if (is_angle_channel(c.role)) {
       os << "polarity = \"" << (c.polarity == PulsePolarity::rising ? "rising" : "falling") << "\"\n";

@@ -25,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "acquire/analog_response.hpp"
 #include "acquire/reader.hpp"
 #include "mechanism/rig.hpp"
 
@@ -76,6 +77,9 @@ struct ChannelSpec {
   double offset_m = 0;                 ///< perpendicular to the link, +n side
   bool ac_coupled = false;             ///< piezo sensor / AC-coupled amplifier
   double highpass_hz = 0;              ///< its first-order high-pass corner (when ac_coupled)
+  /// Mounted resonance from the calibration sheet (`sensor_resonance_Hz`,
+  /// `sensor_resonance_Q`; 0: not known): a second-order low-pass section.
+  double sensor_resonance_hz = 0, sensor_resonance_q = 0;
 
   // The crank-pulse channel.
   PulsePolarity polarity = PulsePolarity::rising;
@@ -115,6 +119,11 @@ struct Manifest {
   std::optional<double> start_s, end_s;  ///< the part to analyse (acquire/time_range.hpp); --start-s/--end-s override
   std::optional<std::size_t> header_line;    ///< text recordings: the line of the column names
   double crank_direction = 1;          ///< +1: the crank turns counter-clockwise (θ2 increases), −1 clockwise
+  /// `sampling = "multiplexed"`: one ADC scans the channels in index order,
+  /// channel i sampled `skew_us`·i after channel 0 (`skew_us`, required then;
+  /// a scan over the whole period: 1e6/(fs·channels)). 0: simultaneous.
+  double channel_skew_s = 0;
+  DaqFilter daq_filter;                ///< the anti-alias filter on the accelerometer channels (`daq_filter…`)
   std::vector<ChannelSpec> channels;   ///< as listed, `[[channel]]`
   std::string notes;
 
@@ -129,6 +138,10 @@ struct Manifest {
   /// True when the crank angle comes from more than one edge per turn (a
   /// tooth wheel with an index or missing teeth, or a quadrature encoder).
   bool multi_edge_angle() const;
+  /// Time of the signal in `channel`'s samples (its bound index) minus that
+  /// in the crank channel's: the multiplexed scan's skew, less a
+  /// linear-phase anti-alias filter's group delay on accelerometer channels.
+  double sample_delay_s(const ChannelSpec& channel) const;
 };
 
 /// Whether `name` can name a channel: non-empty, without spaces, commas,

@@ -7,7 +7,7 @@ namespace fourbar {
 
 namespace {
 
-AccelerometerMount mount_of(const ChannelSpec& c) {
+AccelerometerMount mount_of(const Manifest& manifest, const ChannelSpec& c) {
   AccelerometerMount m;
   m.channel = c.name;
   m.link = is_on_coupler(c.role) ? SensedLink::coupler : SensedLink::rocker;
@@ -17,6 +17,9 @@ AccelerometerMount mount_of(const ChannelSpec& c) {
   m.offset_m = c.offset_m;
   m.axis_sign = 1;  // acquire has applied the manifest's axis_sign
   m.high_pass_corner_hz = c.ac_coupled ? c.highpass_hz : 0.0;
+  m.sample_delay_s = manifest.sample_delay_s(c);
+  m.known_response = daq_filter_sections(manifest.daq_filter);
+  if (c.sensor_resonance_hz > 0) m.known_response.push_back({2, c.sensor_resonance_hz, c.sensor_resonance_q});
   return m;
 }
 
@@ -34,7 +37,7 @@ AnalysisChannels analysis_channels(const Manifest& manifest) {
       out.warnings.push_back("channel '" + c.name + "' is a second " + to_string(c.role) + " channel: analysed is '" +
                              slot->mount.channel + "' only");
     else
-      slot = AnalysisChannel{index, mount_of(c)};
+      slot = AnalysisChannel{index, mount_of(manifest, c)};
     ++index;
   }
   if (!coupler.tangential)

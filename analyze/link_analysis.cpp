@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "analyze/known_response.hpp"
 #include "common/error.hpp"
 #include "common/reused_vector.hpp"
 
@@ -82,6 +83,14 @@ std::vector<double> RecordAnalyzer::converted(const AccelerometerMount& mount, s
 
 void RecordAnalyzer::converted(const AccelerometerMount& mount, std::span<const double> reading,
                                std::span<const double> link_alpha, std::span<double> out) {
+  if (mount.sample_delay_s != 0 || !mount.known_response.empty()) {
+    // What the manifest states of the channel's timing and analog path is
+    // undone first (known_response.hpp).
+    std::vector<double> aligned(reading.begin(), reading.end());
+    undo_known_response(aligned, fs_, mount.sample_delay_s, mount.known_response);
+    convert_reading(rig_, mount, (*tables_)[mount.link], crank_, fs_, aligned, link_alpha, out);
+    return;
+  }
   convert_reading(rig_, mount, (*tables_)[mount.link], crank_, fs_, reading, link_alpha, out);
 }
 

@@ -12,6 +12,9 @@
 // sign +1). Accelerometers measure specific force (a_P − g_vec), not a_P.
 
 #include <string>
+#include <vector>
+
+#include "acquire/analog_response.hpp"
 
 #include "mechanism/rig.hpp"
 
@@ -36,6 +39,13 @@ struct AccelerometerMount {
   double offset_m = 0;              ///< perpendicular offset h along +n (0: on the link line)
   int axis_sign = 1;                ///< +1: a positive reading is specific force along +n (+u); −1: opposite
   double high_pass_corner_hz = 0;   ///< AC-coupled (piezo) sensor: first-order high-pass corner; 0: DC-coupled
+  /// Known sample-time offset of this channel after the crank channel (a
+  /// multiplexed ADC's skew, a linear-phase filter's delay); removed before
+  /// conversion with `known_response` (known_response.hpp).
+  double sample_delay_s = 0;
+  /// The analog path's known sections (the DAQ's filter, the sensor's
+  /// mounted resonance) on this channel; divided out in band.
+  std::vector<AnalogSection> known_response;
 };
 
 /// The mount reduced to the link frame, validated.

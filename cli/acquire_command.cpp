@@ -47,13 +47,17 @@ float64 little-endian rows (numpy: fromfile(f, '<f8').reshape(-1, ncols));
 summary.json "series" lists their columns and row counts.
 
 Manifest (TOML) keys: rig, clearance_mm, full_scale_V, adc_range_V,
-sample_rate_hz, time_column, header_line, crank_direction (ccw|cw), notes; per
+sample_rate_hz, time_column, header_line, crank_direction (ccw|cw), sampling
+(simultaneous|multiplexed) + skew_us, daq_filter (none|butterworth|
+linear_phase) + daq_filter_order + daq_filter_cutoff_Hz | daq_filter_delay_us,
+notes; per
 [[channel]]: index | column, name, role (coupler_tangential coupler_normal
 rocker_tangential rocker_normal crank_pulse crank_index encoder_a encoder_b
 crank_speed ignore), sensitivity_mV_per_m_s2 + gain | sensitivity_mV_per_g + gain |
 volts_per_unit, axis_sign,
 position_mm (from the crank pin A on the coupler, from the pivot O4 on the
-rocker), offset_mm, ac_coupled + highpass_hz; crank_pulse: polarity
+rocker), offset_mm, ac_coupled + highpass_hz, sensor_resonance_Hz +
+sensor_resonance_Q; crank_pulse: polarity
 (rising|falling), threshold_low_V + threshold_high_V, crank_offset_deg,
 debounce_ms, pulses_per_rev + (a crank_index channel | missing_teeth) for a
 tooth wheel; encoder_a: lines_per_rev (with an encoder_b channel, optional

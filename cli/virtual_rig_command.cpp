@@ -36,12 +36,15 @@ The scene's [recording] table (docs/virtual-rig.md lists every key):
   sample_rate_hz, duration_s | revolutions, sample_format (pcm16 pcm24 pcm32
   float double), full_scale_V, quantisation_bits, noise_snr_db,
   hum_frequency_hz, hum_mV, hum_harmonics, speed_fluctuation_pct,
-  speed_fluctuation_period_s, seed, notes, warmup_revolutions (clearance
-  scenes, default 20);
+  speed_fluctuation_period_s, sampling (simultaneous|multiplexed) + skew_us,
+  daq_filter (none|butterworth|linear_phase) + daq_filter_order +
+  daq_filter_cutoff_Hz | daq_filter_delay_us, seed, notes,
+  warmup_revolutions (clearance scenes, default 20);
   [recording.pulse] name, angle_deg, low_V, high_V, polarity, width_deg,
   rise_us, jitter_us, noise_mV, missing, echo, echo_delay_ms;
   [[recording.sensor]] name, role, position_mm, offset_mm, axis_sign,
-  sensitivity_mV_per_m_s2 + gain | volts_per_unit, ac_coupled, highpass_hz.
+  sensitivity_mV_per_m_s2 + gain | volts_per_unit, ac_coupled, highpass_hz,
+  sensor_resonance_Hz + sensor_resonance_Q.
 )";
 
 }  // namespace
@@ -69,9 +72,7 @@ int run_virtual_rig(const Invocation& inv) {
   if (scene.model == Model::clearance) {
     // Simulated from warmup_revolutions turns before the earliest time the rig
     // asks for (the AC filters' run-in), to past the end.
-    double run_in_s = 0;
-    for (const auto& c : spec.sensors)
-      if (c.ac_coupled) run_in_s = std::max(run_in_s, 12.0 / (units::kTwoPi * c.highpass_hz));
+    const double run_in_s = recording_run_in_s(spec);
     const double period_s = units::kTwoPi / std::abs(drive.mean_speed_rad_s);
     const double duration_s = spec.duration_s ? *spec.duration_s : *spec.revolutions * period_s;
     motion = std::make_unique<ClearanceMotionSource>(scene.rig, drive, scene.clearance, scene.clearance_m(),

@@ -57,6 +57,10 @@ class LinkRinging {
   void advance_to(double time_s);
   /// The transverse acceleration the modes give a sensor of `role` now (m/s²).
   double sensor_acceleration(ChannelRole role) const;
+  /// The same at any time, in any order (a multiplexed channel's skewed
+  /// sample, an analog filter's sub-steps): from the modes' state just after
+  /// the last impulse at or before `time_s`, kept when the rig was built.
+  double sensor_acceleration_at(double time_s, ChannelRole role) const;
   bool empty() const { return modes_.empty(); }
 
  private:
@@ -64,10 +68,13 @@ class LinkRinging {
     double q = 0, v = 0;
   };
   void propagate(double dt_s);
+  static void propagate(const std::vector<LinkMode>& modes, std::vector<State>& state, double dt_s);
+  static double acceleration(const std::vector<LinkMode>& modes, const std::vector<State>& state, ChannelRole role);
 
   std::vector<LinkMode> modes_;
   std::vector<BearingImpulse> impulses_;
   std::vector<State> state_;
+  std::vector<std::vector<State>> after_impulse_;  ///< each mode's state just after impulse i
   std::size_t next_ = 0;  ///< first impulse not yet applied
   double time_s_ = 0;
   bool started_ = false;

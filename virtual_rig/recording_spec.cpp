@@ -1,5 +1,6 @@
 #include "virtual_rig/recording_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -44,6 +45,18 @@ ChannelRole role_of(const std::string& name) {
 }
 
 }  // namespace
+
+double recording_run_in_s(const RecordingSpec& spec) {
+  double run_in_s = 0;
+  for (const ChannelSpec& c : spec.sensors) {
+    if (c.ac_coupled) run_in_s = std::max(run_in_s, 12.0 / (units::kTwoPi * c.highpass_hz));
+    std::vector<AnalogSection> sections = daq_filter_sections(spec.daq_filter);
+    if (c.sensor_resonance_hz > 0) sections.push_back({2, c.sensor_resonance_hz, c.sensor_resonance_q});
+    for (const AnalogSection& a : sections)
+      run_in_s = std::max(run_in_s, 12.0 * (a.order == 2 ? 2.0 * a.q : 1.0) / (units::kTwoPi * a.f0_hz));
+  }
+  return run_in_s + spec.daq_filter.delay_s + 2.0 / spec.sample_rate_hz;
+}
 
 RecordingSpec read_recording_spec(const Scene& scene) {
   if (!scene.recording)
@@ -98,6 +111,12 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   spec.speed_fluctuation = r.in_range("speed_fluctuation_pct", 0, 50, 0.0) * 1e-2;
   if (r.has("speed_fluctuation_period_s"))
     spec.speed_fluctuation_period_s = r.in_range("speed_fluctuation_period_s", 1e-3, 1e6);
+  spec.daq_filter = read_daq_filter(r);
+  spec.multiplexed = r.choice("sampling", {"simultaneous", "multiplexed"}, "simultaneous") == "multiplexed";
+  if (r.has("skew_us")) {
+    if (!spec.multiplexed) r.fail("skew_us", "is for sampling = \"multiplexed\"; add that key or remove this one");
+    spec.skew_s = r.in_range("skew_us", 0, 1e6) * 1e-6;
+  }
   spec.seed = static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<long long>::max(), 1));
   if (auto n = r.optional_string("notes")) spec.notes = *n;
   if (r.has("warmup_revolutions")) {

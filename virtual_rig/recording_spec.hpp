@@ -42,6 +42,14 @@ struct RecordingSpec {
   double speed_fluctuation = 0;       ///< ε
   std::optional<double> speed_fluctuation_period_s;  ///< default: 10 mean revolutions
   std::vector<double> speed_harmonics;  ///< relative speed change at 1×, 2×, … the mean turn rate
+  /// `sampling = "multiplexed"`: one ADC scans the channels in order,
+  /// channel i sampled i·skew after channel 0 (`skew_us`; default the scan
+  /// spread over the sample period, 1/(fs·channels)). The manifest states it.
+  bool multiplexed = false;
+  std::optional<double> skew_s;
+  /// The DAQ's anti-alias filter on the accelerometer channels (`daq_filter…`);
+  /// the sensors' mounted resonances are in `sensors` (sensor_resonance_Hz/_Q).
+  DaqFilter daq_filter;
   WheelSpec wheel;                    ///< a tooth wheel or encoder in place of the pulse (`[recording.wheel]`)
   std::uint64_t seed = 1;
   std::vector<ChannelSpec> sensors;   ///< accelerometers, in channel order
@@ -54,6 +62,11 @@ struct RecordingSpec {
   /// (`[[recording.link_mode]]`, clearance scenes only; link_ringing.hpp).
   std::vector<LinkMode> link_modes;
 };
+
+/// How long before t = 0 the recording asks for the motion: the filters'
+/// run-in (twelve decay times of the AC coupling's high-pass, the mounted
+/// resonance, the anti-alias filter) plus a linear-phase filter's delay.
+double recording_run_in_s(const RecordingSpec& spec);
 
 /// Parses `scene.recording`; InputError naming the scene file, line and key
 /// (an unknown key too). InputError when the scene has no [recording].

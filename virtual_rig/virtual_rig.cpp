@@ -16,6 +16,7 @@
 #include "virtual_rig/clearance_motion_source.hpp"
 #include "virtual_rig/link_ringing.hpp"
 #include "virtual_rig/recording_writer.hpp"
+#include "virtual_rig/analog_filter_sim.hpp"
 #include "virtual_rig/sensor_signal.hpp"
 #include "virtual_rig/wheel_signal.hpp"
 
@@ -191,29 +192,54 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
                        "(model = \"clearance\"): the bearing impacts ring the links");
     ringing.emplace(spec.link_modes, bearing_impulses(clearance->impacts()));
   }
-  auto ring = [&](double t, ChannelRole role) {
-    if (!ringing) return 0.0;
-    ringing->advance_to(t);
-    return ringing->sensor_acceleration(role);
-  };
+  // At any time, in any order: a skewed channel and an analog filter's sub-steps ask out of order.
+  auto ring = [&](double t, ChannelRole role) { return ringing ? ringing->sensor_acceleration_at(t, role) : 0.0; };
   std::vector<double> rigid_sum(nsens, 0.0), rigid_sq(nsens, 0.0), ring_sq(nsens, 0.0);
 
-  // High-pass filters, run in from twelve time constants before t = 0.
+  // Each sensor channel's chain: the specific force at its sample time (a
+  // multiplexed ADC's skew, a linear-phase filter's delay), the mounted
+  // resonance and a Butterworth anti-alias filter (analog_filter_sim.hpp),
+  // then the AC coupling's high-pass; all run in from before t = 0.
+  const double skew_s = spec.multiplexed ? spec.skew_s.value_or(1.0 / (fs * static_cast<double>(nch))) : 0.0;
+  if (skew_s * static_cast<double>(nch - 1) >= 1.0 / fs)
+    throw InputError(scene.source.string() + ": key 'recording.skew_us' = " + format_double(skew_s * 1e6) +
+                     ": a scan of " + std::to_string(nch) + " channels must end within the sample period " +
+                     format_double(1e6 / fs) + " us; give at most " + format_double(1e6 / (fs * static_cast<double>(nch))) +
+                     " (the default)");
+  std::vector<double> sample_offset_s(nsens);
+  std::vector<AnalogFilterSim> analog;
   std::vector<std::optional<HighPass>> hp(nsens);
   double warmup_s = 0;
-  for (std::size_t c = 0; c < nsens; ++c)
-    if (spec.sensors[c].ac_coupled) {
-      hp[c].emplace(spec.sensors[c].highpass_hz, fs);
-      warmup_s = std::max(warmup_s, 12.0 / (units::kTwoPi * spec.sensors[c].highpass_hz));
+  for (std::size_t c = 0; c < nsens; ++c) {
+    const ChannelSpec& s = spec.sensors[c];
+    sample_offset_s[c] = skew_s * static_cast<double>(c) - spec.daq_filter.delay_s;
+    std::vector<AnalogSection> sections = daq_filter_sections(spec.daq_filter);
+    if (s.sensor_resonance_hz > 0) sections.push_back({2, s.sensor_resonance_hz, s.sensor_resonance_q});
+    for (const AnalogSection& a : sections)  // twelve decay times of each section
+      warmup_s = std::max(warmup_s, 12.0 * (a.order == 2 ? 2.0 * a.q : 1.0) / (units::kTwoPi * a.f0_hz));
+    analog.emplace_back(std::move(sections), fs);
+    if (s.ac_coupled) {
+      hp[c].emplace(s.highpass_hz, fs);
+      warmup_s = std::max(warmup_s, 12.0 / (units::kTwoPi * s.highpass_hz));
     }
+  }
+  const auto force_at = [&](std::size_t c, double t, const LinkState* st) {
+    const ChannelSpec& s = spec.sensors[c];
+    return specific_force(rig, sample_offset_s[c] != 0 || !st ? motion.at(t + sample_offset_s[c]) : *st, s.role,
+                          s.position_m, s.offset_m) +
+           ring(t + sample_offset_s[c], s.role);
+  };
   if (warmup_s > 0) {
     const auto warm = static_cast<std::int64_t>(std::ceil(warmup_s * fs));
     for (std::int64_t i = -warm; i < 0; ++i) {
-      const LinkState st = motion.at(static_cast<double>(i) / fs);
+      const double t = static_cast<double>(i) / fs;
+      const LinkState st = motion.at(t);
       for (std::size_t c = 0; c < nsens; ++c) {
+        if (!hp[c] && analog[c].empty()) continue;
+        double f = force_at(c, t, &st);
+        if (i == -warm) analog[c].prime(f);
+        if (!analog[c].empty()) f = analog[c].step(t - 1.0 / fs, [&](double tau) { return force_at(c, tau, nullptr); });
         if (!hp[c]) continue;
-        const double f = specific_force(rig, st, spec.sensors[c].role, spec.sensors[c].position_m, spec.sensors[c].offset_m) +
-                         ring(st.time_s, spec.sensors[c].role);
         if (i == -warm) hp[c]->prime(f);
         (*hp[c])(f);
       }
@@ -282,11 +308,13 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       }
       for (std::size_t c = 0; c < nsens; ++c) {
         const ChannelSpec& s = spec.sensors[c];
-        const double rigid = specific_force(rig, st, s.role, s.position_m, s.offset_m);
-        const double ringing_now = ring(t, s.role);
-        const double force = rigid + ringing_now;
+        const double force = force_at(c, t, &st);
+        const double ringing_now = ring(t + sample_offset_s[c], s.role);
+        const double rigid = force - ringing_now;
         rigid_sum[c] += rigid, rigid_sq[c] += rigid * rigid, ring_sq[c] += ringing_now * ringing_now;
-        const double sensed = hp[c] ? (*hp[c])(force) : force;
+        const double analog_out =
+            analog[c].empty() ? force : analog[c].step(t - 1.0 / fs, [&](double tau) { return force_at(c, tau, nullptr); });
+        const double sensed = hp[c] ? (*hp[c])(analog_out) : analog_out;
         if (truth) {
           row.push_back(force);
           if (hp[c]) row.push_back(sensed);
@@ -298,12 +326,12 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
         if (q_step > 0) v = std::clamp(std::nearbyint(v / q_step) * q_step, -spec.full_scale_V, spec.full_scale_V - q_step);
         block[f * nch + c] = v * to_recorded;
       }
-      double pv = idle + swing * shape(t);
+      double pv = idle + swing * shape(t + skew_s * static_cast<double>(nsens));
       if (ps.noise_V > 0) pv += ps.noise_V * normal(rng);
       pv = std::clamp(pv, -spec.full_scale_V, spec.full_scale_V);
       block[f * nch + nsens] = pv * to_recorded;
       for (std::size_t k = 0; k < extra.size(); ++k) {
-        double ev = idle + swing * extra[k](t);
+        double ev = idle + swing * extra[k](t + skew_s * static_cast<double>(nsens + 1 + k));
         if (ps.noise_V > 0) ev += ps.noise_V * normal(rng);
         block[f * nch + nsens + 1 + k] = std::clamp(ev, -spec.full_scale_V, spec.full_scale_V) * to_recorded;
       }
@@ -321,6 +349,8 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   m.full_scale_V = bits > 0 ? spec.full_scale_V : 1.0;
   if (bits == 0) m.adc_range_V = spec.full_scale_V;
   m.crank_direction = direction;
+  m.channel_skew_s = skew_s;
+  m.daq_filter = spec.daq_filter;
   m.notes = "written by fourbar virtual-rig from " + scene.source.string() +
             (scene.model == Model::clearance
                  ? "; motion: clearance model, e = " + format_double(scene.clearance.restitution) + ", contact " +
