@@ -204,7 +204,7 @@ TEST(Verdict, ChaoticScatterIsNotAMeasurementFault) {
 // Every output iterates one list of parts: a part more is one entry there.
 TEST(Verdict, PartsAreOneList) {
   const auto parts = verdict_parts();
-  ASSERT_EQ(parts.size(), 4u);
+  ASSERT_EQ(parts.size(), 5u);
   const Verdict v = verdict_of(clean());
   const json j = verdict_json(v);
   for (const VerdictPartInfo& p : parts) {
@@ -212,7 +212,8 @@ TEST(Verdict, PartsAreOneList) {
     EXPECT_EQ(j[p.key]["words"], (v.*p.part).words) << p.key;
   }
   EXPECT_EQ(std::string(parts[0].label), "set-up");
-  EXPECT_EQ(&(v.*parts[3].part), &v.agreement);
+  EXPECT_EQ(&(v.*parts[3].part), &v.family);
+  EXPECT_EQ(&(v.*parts[4].part), &v.agreement);
 }
 
 // a (scatter) is said with its standard error, and the sentence says whether

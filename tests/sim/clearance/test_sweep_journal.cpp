@@ -83,9 +83,11 @@ TEST(SweepResult, DamagedLinesAreRefused) {
   SweepPoint q;
   for (const char* bad : {"", "ok", "ok 0x1p+0", "ok 0x1p+0 0x1p+0 0x1p+0 0x1p+0 0x1p+0 0x1p+0",
                           "ok 0x1p+0 0x1p+0 0x1p+0 0x1p+0 0x1p+0 0x1p+0 0x1p+0 junk", "ok inf 0 0 0 0 0 0", "failed ",
-                          "fail x", "OK 0 0 0 0 0 0 0"})
+                          "fail x", "OK 0 0 0 0 0 0 0 0 0",
+                          "ok 0 0 0 0 0 0 0"})  // a line of the seven fields before the standard errors: run again
     EXPECT_FALSE(decode_sweep_result(bad, q)) << "'" << bad << "'";
-  EXPECT_TRUE(decode_sweep_result("ok 0 0 0 0 0 0 0", q));
+  EXPECT_TRUE(decode_sweep_result("ok 0 0 0 0 0 0 0 0 0", q));
+  EXPECT_FALSE(decode_sweep_result("ok 0 0 0 0 0 0 0 0 0 0", q));
 }
 
 TEST(SweepJournal, KeepsCompleteLinesOfTheSameInputsOnly) {
