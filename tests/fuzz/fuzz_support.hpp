@@ -16,6 +16,9 @@
 #include <string>
 #include <string_view>
 
+#include <vector>
+
+#include "acquire/reader.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fourbar::fuzz {
@@ -52,6 +55,18 @@ class Workspace {
 inline Workspace& workspace() {
   static Workspace w;
   return w;
+}
+
+/// Reads every frame twice (the pipeline rewinds); the frame count the
+/// reader promised is what reads back, or the target aborts.
+inline void read_all_twice(Reader& reader) {
+  std::vector<double> block(static_cast<std::size_t>(reader.info().channels) * 7);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::uint64_t frames = 0;
+    while (const std::size_t n = reader.read(block)) frames += n;
+    if (frames != reader.info().frames) std::abort();
+    reader.rewind();
+  }
 }
 
 }  // namespace fourbar::fuzz
