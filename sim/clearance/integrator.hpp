@@ -10,7 +10,7 @@
 #include <memory>
 #include <utility>
 
-#include "sim/clearance/settings.hpp"
+#include "sim/clearance/integrator_options.hpp"
 
 namespace fourbar {
 

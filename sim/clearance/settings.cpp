@@ -15,8 +15,6 @@ const char* to_string(ContactLaw c) {
   return "?";
 }
 
-const char* to_string(IntegratorKind k) { return k == IntegratorKind::cvode ? "cvode" : "odeint"; }
-
 const char* to_string(ClearanceKind k) { return k == ClearanceKind::compliant ? "compliant" : "three-mode"; }
 
 const char* to_string(ClearanceSettings::SteadyCriterion c) {

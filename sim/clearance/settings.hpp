@@ -8,6 +8,7 @@
 #include "common/toml_section.hpp"
 #include "sim/contact/contact_force.hpp"
 #include "sim/contact/film_force.hpp"
+#include "sim/clearance/integrator_options.hpp"
 
 namespace fourbar {
 
@@ -18,29 +19,11 @@ enum class ContactLaw {
   stick_slip  ///< Coulomb μ: stick when |f| ≤ μF, else slide with f = μF against the slip (thesis 5.3.3)
 };
 
-/// Which integrator library advances the smooth phases.
-enum class IntegratorKind {
-  cvode,  ///< SUNDIALS CVODE, variable-order Adams–Moulton (orders 1–12)
-  odeint  ///< Boost.Odeint, Dormand–Prince 5(4) with dense output
-};
-
-/// Which method advances the compliant model. CVODE's BDF with Newton
-/// iteration is the product's (the contact is stiff: docs/compliant.md "Why
-/// BDF"); the two Adams modes and Radau IIA exist for bench_compliant's
-/// comparison and have no scene key.
-enum class StiffMethod {
-  bdf,                ///< BDF orders 1–5, Newton iteration, dense Jacobian
-  adams_fixed_point,  ///< Adams–Moulton orders 1–12, fixed-point (functional) iteration
-  adams_newton,       ///< Adams–Moulton orders 1–12, Newton iteration, dense Jacobian
-  radau5              ///< Radau IIA, 3 stages, order 5 (not CVODE: radau_integrator.hpp)
-};
-
 /// Which clearance model: the thesis's three modes with instantaneous
 /// impacts, or a continuous (compliant) contact force.
 enum class ClearanceKind { three_mode, compliant };
 
 const char* to_string(ContactLaw c);
-const char* to_string(IntegratorKind k);
 const char* to_string(ClearanceKind k);
 
 /// The compliant model's contact (model = "compliant"; docs/clearance-model.md "Compliant contact").

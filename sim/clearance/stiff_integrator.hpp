@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "sim/clearance/settings.hpp"
+#include "sim/clearance/integrator_options.hpp"
 
 namespace fourbar {
 
