@@ -12,7 +12,7 @@
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 #include "sim/clearance/run.hpp"
-#include "sim/linkage/linkage_run.hpp"
+#include "sim/run/linkage_run.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/outputs.hpp"
 #include "mechanism/rig_report.hpp"

@@ -12,7 +12,7 @@
 #include "mechanism/kinematics.hpp"
 #include "sim/clearance/event_root.hpp"
 #include "sim/linkage/linkage_dynamics.hpp"
-#include "sim/linkage/linkage_integrator.hpp"
+#include "sim/integrate/linkage_integrator.hpp"
 
 namespace fourbar {
 

@@ -11,8 +11,8 @@
 #include <filesystem>
 
 #include "common/error.hpp"
-#include "sim/linkage/linkage_run.hpp"
-#include "sim/linkage/tabulated_crank.hpp"
+#include "sim/run/linkage_run.hpp"
+#include "sim/drive/tabulated_crank.hpp"
 #include "sim/scene.hpp"
 
 namespace fourbar {

@@ -1,4 +1,4 @@
-#include "sim/linkage/linkage_run.hpp"
+#include "sim/run/linkage_run.hpp"
 
 #include <cmath>
 #include <string>
@@ -6,7 +6,7 @@
 #include "common/number_text.hpp"
 #include "common/units.hpp"
 #include "sim/clearance/run.hpp"
-#include "sim/linkage/tabulated_crank.hpp"
+#include "sim/drive/tabulated_crank.hpp"
 #include "sim/outputs.hpp"
 
 namespace fourbar {

@@ -1,4 +1,4 @@
-#include "sim/linkage/linkage_integrator.hpp"
+#include "sim/integrate/linkage_integrator.hpp"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>

@@ -1,4 +1,4 @@
-#include "sim/linkage/tabulated_crank.hpp"
+#include "sim/drive/tabulated_crank.hpp"
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 
