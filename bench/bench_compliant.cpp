@@ -32,8 +32,8 @@
 #include <vector>
 
 #include "common/units.hpp"
-#include "sim/clearance/compliant_simulator.hpp"
-#include "sim/clearance/simulator.hpp"
+#include "sim/compliant/compliant_simulator.hpp"
+#include "sim/three_mode/simulator.hpp"
 
 using namespace fourbar;
 

@@ -16,7 +16,7 @@
 
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
-#include "sim/clearance/compliant_simulator.hpp"
+#include "sim/compliant/compliant_simulator.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
 
 using namespace fourbar;

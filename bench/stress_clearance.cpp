@@ -1,5 +1,5 @@
 // Stress sweep of the clearance simulator (issue 7): every case of
-// tests/sim/clearance/stress_case.hpp over
+// tests/sim/three_mode/stress_case.hpp over
 //   A. start angle every 5° (thesis rig and two rigs near a toggle; base
 //      scene: 0.254 mm, e = 0.5, smooth, 350 rpm),
 //   B. radial clearance 1 µm … 1 mm × e 0 … 1 × contact (smooth, rough,
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/clearance/stress_case.hpp"  // tests/sim/clearance/
+#include "sim/three_mode/stress_case.hpp"  // tests/sim/three_mode/
 
 using namespace fourbar;
 using stress::Case;

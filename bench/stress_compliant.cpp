@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "common/units.hpp"
-#include "sim/clearance/compliant_simulator.hpp"
+#include "sim/compliant/compliant_simulator.hpp"
 
 using namespace fourbar;
 

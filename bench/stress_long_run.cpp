@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "common/units.hpp"
-#include "sim/clearance/simulator.hpp"
+#include "sim/three_mode/simulator.hpp"
 
 using namespace fourbar;
 

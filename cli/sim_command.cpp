@@ -11,7 +11,7 @@
 #include "common/json_text.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
-#include "sim/clearance/run.hpp"
+#include "sim/run/run.hpp"
 #include "sim/run/linkage_run.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/outputs.hpp"

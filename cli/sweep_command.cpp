@@ -24,8 +24,8 @@
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 #include "common/version.hpp"
-#include "sim/clearance/sweep.hpp"
-#include "sim/clearance/sweep_journal.hpp"
+#include "sim/studies/sweep.hpp"
+#include "sim/studies/sweep_journal.hpp"
 
 namespace po = boost::program_options;
 

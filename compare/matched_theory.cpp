@@ -6,10 +6,10 @@
 #include "analyze/fft_filter.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
-#include "sim/clearance/compliant_simulator.hpp"
-#include "sim/clearance/contact_stiffness.hpp"
-#include "sim/clearance/crank_motion.hpp"
-#include "sim/clearance/simulator.hpp"
+#include "sim/compliant/compliant_simulator.hpp"
+#include "sim/compliant/contact_stiffness.hpp"
+#include "sim/drive/crank_motion.hpp"
+#include "sim/three_mode/simulator.hpp"
 #include "mechanism/kinematics.hpp"
 
 namespace fourbar {

@@ -26,7 +26,7 @@
 #include "analyze/averaging.hpp"
 #include "analyze/filter_design.hpp"
 #include "compare/link_quantity.hpp"
-#include "sim/clearance/settings.hpp"
+#include "sim/three_mode/settings.hpp"
 #include "mechanism/rig.hpp"
 
 namespace fourbar {

@@ -7,7 +7,7 @@
 #include "common/error.hpp"
 #include "common/toml_section.hpp"
 #include "common/units.hpp"
-#include "sim/clearance/contact_stiffness.hpp"
+#include "sim/compliant/contact_stiffness.hpp"
 #include "sim/outputs.hpp"
 
 namespace fourbar {

@@ -10,7 +10,7 @@
 
 #include <toml++/toml.h>
 
-#include "sim/clearance/settings.hpp"
+#include "sim/three_mode/settings.hpp"
 #include "sim/linkage/linkage_settings.hpp"
 #include "mechanism/rig.hpp"
 

@@ -5,8 +5,8 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
-#include "sim/clearance/compliant_simulator.hpp"
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/compliant/compliant_simulator.hpp"
+#include "sim/drive/crank_motion.hpp"
 
 namespace fourbar {
 

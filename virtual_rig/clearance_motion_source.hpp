@@ -1,6 +1,6 @@
 #pragma once
 // The clearance model as the virtual rig's motion: the three-mode simulator
-// (sim/clearance) driven by the rig's crank drive, run once over the whole
+// (sim/three_mode) driven by the rig's crank drive, run once over the whole
 // recording (plus its warm-up) and tabulated every half sample period.
 //
 // α is reported as the mean over one sample period, (ω(t + h/2) − ω(t − h/2))/h
@@ -13,8 +13,8 @@
 #include <memory>
 #include <vector>
 
-#include "sim/clearance/settings.hpp"
-#include "sim/clearance/simulator.hpp"
+#include "sim/three_mode/settings.hpp"
+#include "sim/three_mode/simulator.hpp"
 #include "virtual_rig/motion_source.hpp"
 
 namespace fourbar {

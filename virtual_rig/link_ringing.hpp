@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "acquire/manifest.hpp"
-#include "sim/clearance/run_records.hpp"
+#include "sim/record/run_records.hpp"
 
 namespace fourbar {
 

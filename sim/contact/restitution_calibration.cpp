@@ -10,7 +10,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include "common/error.hpp"
-#include "sim/clearance/stiff_integrator.hpp"
+#include "sim/integrate/stiff_integrator.hpp"
 
 namespace fourbar {
 

@@ -8,7 +8,7 @@
 // calibrated_hysteresis inverts it by TOMS 748 on c (once per (e, n) in a
 // process, then remembered). This is the default
 // damping law ("calibrated"): the published closed forms c(e) are
-// approximations of this map, measured in tests/sim/clearance/
+// approximations of this map, measured in tests/sim/contact/
 // test_contact_force.cpp and docs/clearance-model.md "Compliant contact".
 
 namespace fourbar {

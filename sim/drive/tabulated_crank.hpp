@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/drive/crank_motion.hpp"
 
 namespace fourbar {
 

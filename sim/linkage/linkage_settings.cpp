@@ -4,7 +4,7 @@
 #include <string>
 
 #include "common/number_text.hpp"
-#include "sim/clearance/settings.hpp"
+#include "sim/three_mode/settings.hpp"
 
 namespace fourbar {
 

@@ -10,7 +10,7 @@
 
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
-#include "sim/clearance/event_root.hpp"
+#include "sim/integrate/event_root.hpp"
 #include "sim/linkage/linkage_dynamics.hpp"
 #include "sim/integrate/linkage_integrator.hpp"
 

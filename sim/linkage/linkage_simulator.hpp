@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/drive/crank_motion.hpp"
 #include "sim/linkage/linkage_model.hpp"
 #include "sim/linkage/linkage_sensor.hpp"
 

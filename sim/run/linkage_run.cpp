@@ -5,7 +5,7 @@
 
 #include "common/number_text.hpp"
 #include "common/units.hpp"
-#include "sim/clearance/run.hpp"
+#include "sim/run/run.hpp"
 #include "sim/drive/tabulated_crank.hpp"
 #include "sim/outputs.hpp"
 

@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/drive/crank_motion.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
 #include "sim/nominal/run.hpp"
 #include "sim/scene.hpp"

@@ -10,8 +10,8 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "compare/matched_theory.hpp"
-#include "sim/clearance/compliant_simulator.hpp"
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/compliant/compliant_simulator.hpp"
+#include "sim/drive/crank_motion.hpp"
 
 namespace fourbar {
 namespace {

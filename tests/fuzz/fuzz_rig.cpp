@@ -2,7 +2,7 @@
 // with the bearing's bodies of its [clearance] table (radii, length, Young's
 // moduli, Poisson ratios). A rig that loads must be usable: its report walks
 // a whole turn, and with a clearance the compliant contact's stiffness
-// computed from its bodies (sim/clearance/contact_stiffness.cpp, what a
+// computed from its bodies (sim/compliant/contact_stiffness.cpp, what a
 // scene or session without contact_stiffness_N_per_m_n uses) is either
 // refused naming a key (InputError) or finite and positive.
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "fuzz_support.hpp"
 #include "mechanism/rig.hpp"
 #include "mechanism/rig_report.hpp"
-#include "sim/clearance/contact_stiffness.hpp"
+#include "sim/compliant/contact_stiffness.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace fourbar;

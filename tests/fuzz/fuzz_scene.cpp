@@ -1,5 +1,5 @@
 // Fuzz target: the scene loader with its [clearance] table (sim/scene.cpp,
-// sim/clearance/settings.cpp) and the virtual rig's [recording] table
+// sim/three_mode/settings.cpp) and the virtual rig's [recording] table
 // (virtual_rig/recording_spec.cpp). The scene may name "rig.toml".
 #include "common/error.hpp"
 #include "fuzz_support.hpp"

@@ -1,7 +1,7 @@
 // Fuzz target: a session folder's session.toml (report/session_settings.cpp):
 // title, notes, [analysis], [theory] with either model's keys (three-mode:
 // restitution, contact, friction_coefficient; compliant: the scene's
-// compliant keys, read by sim/clearance/compliant_settings.cpp) and the
+// compliant keys, read by sim/three_mode/compliant_settings.cpp) and the
 // [[recording]] tables that override them per recording. `fourbar fit`
 // reads the same file for its prior.
 //
@@ -31,7 +31,7 @@
 #include "mechanism/rig.hpp"
 #include "report/comparison_record.hpp"
 #include "report/session_settings.hpp"
-#include "sim/clearance/contact_stiffness.hpp"
+#include "sim/compliant/contact_stiffness.hpp"
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "common/units.hpp"
-#include "sim/clearance/crank_motion.hpp"
-#include "sim/clearance/simulator.hpp"
+#include "sim/drive/crank_motion.hpp"
+#include "sim/three_mode/simulator.hpp"
 #include "virtual_rig/clearance_motion_source.hpp"
 
 namespace fourbar {

@@ -10,8 +10,8 @@
 #include <functional>
 
 #include "sim/contact/contact_force.hpp"
-#include "sim/clearance/contact_stiffness.hpp"
-#include "sim/clearance/stiff_integrator.hpp"
+#include "sim/compliant/contact_stiffness.hpp"
+#include "sim/integrate/stiff_integrator.hpp"
 
 namespace fourbar {
 namespace {

@@ -11,8 +11,8 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
-#include "sim/clearance/compliant_simulator.hpp"
-#include "sim/clearance/measured_crank.hpp"
+#include "sim/compliant/compliant_simulator.hpp"
+#include "sim/drive/measured_crank.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
 
 namespace fourbar {

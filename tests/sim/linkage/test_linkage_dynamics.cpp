@@ -10,7 +10,7 @@
 #include <random>
 
 #include "mechanism/kinematics.hpp"
-#include "sim/clearance/model.hpp"
+#include "sim/three_mode/model.hpp"
 #include "sim/linkage/linkage_dynamics.hpp"
 
 namespace fourbar {
