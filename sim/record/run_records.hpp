@@ -9,8 +9,8 @@
 
 #include "mechanism/kinematics.hpp"
 #include "mechanism/vec2.hpp"
-#include "sim/three_mode/impact.hpp"
-#include "sim/three_mode/model.hpp"
+#include "sim/record/impact_result.hpp"
+#include "sim/record/link_motion.hpp"
 
 namespace fourbar {
 

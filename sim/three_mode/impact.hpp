@@ -14,6 +14,7 @@
 //   slip:    f = −σ·μ·F, σ = sign(v_t) before the impact    (eq. 5.4-2, μ11, μ12)
 // The thesis's f is the tangential impulse on the bushing along t, i.e. −f here.
 
+#include "sim/record/impact_result.hpp"
 #include "sim/three_mode/model.hpp"
 #include "sim/three_mode/settings.hpp"
 
@@ -23,18 +24,6 @@ struct ImpactLaw {
   double restitution = 1.0;
   ContactLaw contact = ContactLaw::smooth;
   double friction_coefficient = 0.0;
-};
-
-struct ImpactResult {
-  LinkMotion after;
-  double normal_impulse_Ns = 0;      ///< F ≥ 0 (pin pushed along −n)
-  double tangential_impulse_Ns = 0;  ///< f on the pin along t = n⊥
-  double normal_speed_before_m_s = 0, normal_speed_after_m_s = 0;
-  double tangential_speed_before_m_s = 0, tangential_speed_after_m_s = 0;
-  double motor_impulse_Nms = 0;      ///< τ̂ that holds ω2
-  double energy_loss_J = 0;          ///< −½·(v⁺ + v⁻)·P: dissipated at the contact
-  bool stuck = false;                ///< tangential slip stopped (rough / stick)
-  bool degenerate = false;           ///< the requested law had no physical solution; smooth used
 };
 
 /// Resolves one impact at the current configuration (positions unchanged).

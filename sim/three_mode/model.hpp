@@ -20,14 +20,9 @@
 #include "mechanism/kinematics.hpp"
 #include "mechanism/rig.hpp"
 #include "mechanism/vec2.hpp"
+#include "sim/record/link_motion.hpp"
 
 namespace fourbar {
-
-/// Coupler and rocker directions and rates at one instant.
-struct LinkMotion {
-  Vec2 u3, u4;
-  double omega3_rad_s = 0, omega4_rad_s = 0;
-};
 
 /// The bearing's state at one instant.
 struct BearingState {
