@@ -11,6 +11,7 @@
 # is any, 0 if the stack is clean, 2 on a usage error. CTest runs it on the
 # repository (test `layers`) and on a tree with known back edges
 # (test `layers_detects_back_edges`), so the checker itself is checked.
+# Inside sim/ the same rule holds between its rooms (the second table).
 set -uo pipefail
 
 # The stack, bottom first: folder and layer. This table is the rule.
@@ -23,6 +24,20 @@ declare -A layer=(
   [fit]=5
   [report]=6
   [cli]=7
+)
+
+# sim/'s rooms, bottom first (docs/architecture.md "Inside sim/"). A file
+# directly in sim/ (scene.*, outputs.*) is in the room `scene`. A room may
+# include its own files and those of rooms on a lower floor only.
+declare -A sim_room=(
+  [drive]=0 [integrate]=0 [flex]=0
+  [contact]=1 [record]=1
+  [three_mode]=2
+  [compliant]=3 [linkage]=3
+  [scene]=4
+  [nominal]=5
+  [run]=6
+  [studies]=7
 )
 
 root=${1:-"$(cd "$(dirname "$0")/.." && pwd)"}
@@ -39,6 +54,37 @@ why() {
   if [ "${layer[$2]}" -eq "${layer[$1]}" ]; then echo "$2 stands beside $1 (layer ${layer[$1]})"
   else echo "$2 (layer ${layer[$2]}) is above $1 (layer ${layer[$1]})"; fi
 }
+
+# The room of a path inside sim/ ("sim/three_mode/model.hpp" → three_mode,
+# "sim/scene.hpp" → scene).
+room_of() {
+  local rest=${1#sim/}
+  if [ "${rest#*/}" = "$rest" ]; then echo scene; else echo "${rest%%/*}"; fi
+}
+room_why() {
+  if [ "${sim_room[$2]}" -eq "${sim_room[$1]}" ]; then echo "sim/$2 stands beside sim/$1 (floor ${sim_room[$1]} of sim)"
+  else echo "sim/$2 (floor ${sim_room[$2]} of sim) is above sim/$1 (floor ${sim_room[$1]})"; fi
+}
+
+# sim/'s rooms: every file is in a room of the table, every sim include allowed.
+if [ -d sim ]; then
+  while IFS= read -r file; do
+    r=$(room_of "$file")
+    [ -n "${sim_room[$r]+x}" ] || report "$file: sim/$r is not a room of sim's stack (add it to sim_room)"
+  done < <(find sim -type f \( -name '*.hpp' -o -name '*.cpp' -o -name '*.h' \) | sort)
+  while IFS=: read -r file line text; do
+    inc=$(sed -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"([^"]*)".*/\1/' <<<"$text")
+    [ "${inc%%/*}" = sim ] || continue
+    from=$(room_of "$file") to=$(room_of "$inc")
+    [ -n "${sim_room[$from]+x}" ] || continue
+    if [ -z "${sim_room[$to]+x}" ]; then
+      report "$file:$line: includes \"$inc\" from sim/$to, which is not a room of sim's stack"
+    elif [ "$from" != "$to" ] && [ "${sim_room[$to]}" -ge "${sim_room[$from]}" ]; then
+      report "$file:$line: includes \"$inc\": $(room_why "$from" "$to")"
+    fi
+  done < <(grep -rnE --include='*.hpp' --include='*.cpp' --include='*.h' \
+             '^[[:space:]]*#[[:space:]]*include[[:space:]]*"' sim 2>/dev/null)
+fi
 
 for folder in "${!layer[@]}"; do
   [ -d "$folder" ] || continue
@@ -73,4 +119,4 @@ if [ "$violations" -gt 0 ]; then
   echo "check-layers: $violations back edge(s) in $root; the stack is in docs/architecture.md" >&2
   exit 1
 fi
-echo "check-layers: no back edges (${#layer[@]} layers' folders checked in $root)"
+echo "check-layers: no back edges (${#layer[@]} layers' folders and ${#sim_room[@]} rooms of sim checked in $root)"

