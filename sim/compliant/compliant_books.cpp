@@ -10,40 +10,17 @@
 #include "common/units.hpp"
 #include "sim/compliant/compliant_state.hpp"
 #include "sim/integrate/event_root.hpp"
-#include "sim/record/revolution_clock.hpp"
 
 namespace fourbar {
 
-int CompliantSimulator::Impl::revolution_of(double time) const {
-  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.index_at(crank, absolute(time));
-}
+int CompliantSimulator::Impl::revolution_of(double time) const { return books.revolution_of(crank, clock, time); }
 
-double CompliantSimulator::Impl::revolution_start(int k) const {
-  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.start_s(crank, k);
-}
+double CompliantSimulator::Impl::revolution_start(int k) const { return books.revolution_start(crank, k); }
 
-RevolutionRecord& CompliantSimulator::Impl::revolution(int k) {
-  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.record(crank, books.revolutions, k);
-}
+RevolutionRecord& CompliantSimulator::Impl::revolution(int k) { return books.revolution(crank, k); }
 
 void CompliantSimulator::Impl::book_interval(double ta, double tb) {
-  const bool contact = ep.active;
-  (contact ? books.diag.time_following_s : books.diag.time_free_s) += tb - ta;
-  if (!books.revolutions_on) return;
-  int k = std::max(0, revolution_of(ta));
-  double a = ta;
-  for (;;) {
-    RevolutionRecord& r = revolution(k);
-    const double end = local(r.end_time_s);
-    const double b = std::min(tb, end);
-    if (b > a) (contact ? r.following_time_s : r.free_time_s) += b - a;
-    if (end > tb) break;
-    RevolutionRecord& next = revolution(k + 1);
-    if (!next.has_start_state) record_start_state(next);
-    a = end;
-    ++k;
-    if (a >= tb) break;
-  }
+  books.book_interval(crank, clock, ta, tb, ep.active, [this](RevolutionRecord& r) { record_start_state(r); });
 }
 
 void CompliantSimulator::Impl::record_start_state(RevolutionRecord& r) {
@@ -53,29 +30,18 @@ void CompliantSimulator::Impl::record_start_state(RevolutionRecord& r) {
   r.has_start_state = true;
 }
 
-double CompliantSimulator::Impl::stat_time(long long i) const {
-  return local(crank.time_at_angle(books.rev_origin_rad +
-                                   books.rev_dir * units::kTwoPi * static_cast<double>(i) / books.stats_per_turn));
-}
+double CompliantSimulator::Impl::stat_time(long long i) const { return books.stat_time(crank, clock, i); }
 
 void CompliantSimulator::Impl::emit_statistics(double up_to) {
-  if (books.stats_per_turn <= 0) return;
-  for (double ts = stat_time(books.next_stat); ts <= up_to; ts = stat_time(++books.next_stat)) {
-    if (absolute(ts) < start_abs_s) continue;  // before the start
+  books.emit_statistics(crank, clock, up_to, [this](double ts) -> std::optional<double> {
+    if (absolute(ts) < start_abs_s) return std::nullopt;  // before the start
     const ContactState k = evaluate(ts, state_at(ts));
-    const double d = k.alpha3_rad_s2 - k.nominal.alpha3_rad_s2;
-    RevolutionRecord& r = revolution(static_cast<int>(books.next_stat / books.stats_per_turn));
-    r.alpha3_deviation_sum_sq += d * d;
-    ++r.alpha3_deviation_samples;
-    r.alpha3_deviation_rms_rad_s2 = std::sqrt(r.alpha3_deviation_sum_sq / r.alpha3_deviation_samples);
-  }
+    return k.alpha3_rad_s2 - k.nominal.alpha3_rad_s2;
+  });
 }
 
 void CompliantSimulator::Impl::emit_samples(double up_to) {
-  while (books.next_sample < books.sample_times.size() && local(books.sample_times[books.next_sample]) <= up_to) {
-    books.samples.push_back(sample(books.sample_times[books.next_sample]));
-    ++books.next_sample;
-  }
+  books.emit_samples(clock, up_to, [this](double absolute_time) { return sample(absolute_time); });
 }
 
 ClearanceSample CompliantSimulator::Impl::sample(double absolute_time) {
@@ -188,7 +154,7 @@ void CompliantSimulator::Impl::release(double time, const StiffState& y) {
       if (k_rev >= 0) ++revolution(k_rev).contact_losses;
     }
   }
-  books.contacts.push_back(r);
+  books.impacts.push_back(r);
   ep.active = false;
 }
 

@@ -12,10 +12,10 @@ namespace fourbar {
 const NominalMotion& CompliantSimulator::Impl::nominal_at(double time) const {
   NominalCache& cache = nominal_cache;
   for (const NominalCache::Entry& e : cache.entries)
-    if (e.valid && e.time == time && e.origin_s == origin_s) return e.motion;
+    if (e.valid && e.time == time && e.origin_s == clock.origin_s) return e.motion;
   NominalCache::Entry& e = cache.entries[cache.next];
   cache.next = (cache.next + 1) % cache.entries.size();
-  e = {origin_s, time, true, solve_motion(model.rig(), crank_at(time))};
+  e = {clock.origin_s, time, true, solve_motion(model.rig(), crank_at(time))};
   return e.motion;
 }
 

@@ -36,13 +36,6 @@ CompliantSimulator::Impl::Impl(const ClearanceModel& m, const CrankMotion& c, co
                    "scene resolves them from the rig)");
 }
 
-double CompliantSimulator::Impl::rebase(double time) {
-  const double o = origin_s + time;
-  const double r = std::abs(origin_s) >= std::abs(time) ? (origin_s - o) + time : (time - o) + origin_s;
-  origin_s = o;
-  return r;
-}
-
 void CompliantSimulator::Impl::prepare(double t0) {
   const CrankState c = crank.at(t0);
   scale.deviation.speed_rad_s = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
@@ -52,13 +45,13 @@ void CompliantSimulator::Impl::prepare(double t0) {
   scale.force_N = model.force_scale_N(c.speed_rad_s);
   books.rev_dir = c.speed_rad_s < 0 ? -1 : 1;
   books.diag.energy_scale_J = scale.energy_J;
-  origin_s = t0;
+  clock.origin_s = t0;
   start_abs_s = t0;
   t = seg_start = 0;
 }
 
 void CompliantSimulator::Impl::restart(double time, const StiffState& y) {
-  const double r = rebase(time);
+  const double r = clock.rebase(time);
   integ.reset(*this, r, y);
   t = seg_start = r;
 }
@@ -160,7 +153,7 @@ ContactMode CompliantSimulator::mode() const {
 LinkMotion CompliantSimulator::current_links() { return impl_->evaluate(impl_->t, impl_->state_at(impl_->t)).links; }
 
 const std::vector<ClearanceSample>& CompliantSimulator::samples() const { return impl_->books.samples; }
-const std::vector<ImpactRecord>& CompliantSimulator::impacts() const { return impl_->books.contacts; }
+const std::vector<ImpactRecord>& CompliantSimulator::impacts() const { return impl_->books.impacts; }
 const std::vector<RevolutionRecord>& CompliantSimulator::revolutions() const { return impl_->books.revolutions; }
 
 std::string CompliantSimulator::integrator_counters() const {

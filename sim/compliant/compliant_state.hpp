@@ -15,6 +15,8 @@
 #include "sim/contact/contact_force.hpp"
 #include "sim/three_mode/deviation_state.hpp"
 #include "sim/integrate/stiff_integrator.hpp"
+#include "sim/record/local_clock.hpp"
+#include "sim/record/run_books.hpp"
 
 namespace fourbar {
 
@@ -65,11 +67,11 @@ struct CompliantSimulator::Impl final : StiffSystem {
   } scale;
 
   /// Local time: absolute = origin + local (moved at every restart).
-  double origin_s = 0;
+  LocalClock clock;
   double t = 0;          ///< current local time
   double seg_start = 0;  ///< local start of the current integration segment
   double start_abs_s = 0;  ///< absolute start time of the run
-  CrankState crank_at(double time) const { return crank.at_local(origin_s, time); }
+  CrankState crank_at(double time) const { return clock.crank_at(crank, time); }
   /// The nominal motion at the last few (origin, local time) pairs: a step's
   /// Newton iterations, Jacobian columns and root function share one time,
   /// and the nominal kinematics is most of a right-hand side's cost.
@@ -84,9 +86,8 @@ struct CompliantSimulator::Impl final : StiffSystem {
   };
   mutable NominalCache nominal_cache;
   const NominalMotion& nominal_at(double time) const;
-  double absolute(double time) const { return origin_s + time; }
-  double local(double absolute_time) const { return absolute_time - origin_s; }
-  double rebase(double time);
+  double absolute(double time) const { return clock.absolute(time); }
+  double local(double absolute_time) const { return clock.local(absolute_time); }
 
   /// The open contact (onset to release).
   struct Episode {
@@ -102,19 +103,8 @@ struct CompliantSimulator::Impl final : StiffSystem {
     ImpactRecord rec;
   } ep;
 
-  struct Books {
-    std::vector<double> sample_times;
-    std::size_t next_sample = 0;
-    std::vector<ClearanceSample> samples;
-    std::vector<ImpactRecord> contacts;
-    std::vector<RevolutionRecord> revolutions;
-    bool revolutions_on = false;
-    int stats_per_turn = 0;
-    long long next_stat = 0;
-    double rev_origin_rad = 0;
-    int rev_dir = 1;
-    ClearanceDiagnostics diag;
-  } books;
+  /// Samples, contacts (books.impacts), revolutions, diagnostics.
+  RunBooks books;
 
   // ---- equations (compliant_equations.cpp) ----
   ContactState evaluate(double time, const StiffState& y) const;

@@ -8,7 +8,6 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
-#include "sim/record/revolution_clock.hpp"
 #include "mechanism/kinematics.hpp"
 #include "sim/three_mode/simulator_state.hpp"
 
@@ -22,38 +21,16 @@ double ClearanceSimulator::Impl::energy_of_links(const CrankState& c, const Link
   return model.kinetic_energy_J(c, m) + model.potential_energy_J(c, m);
 }
 
-int ClearanceSimulator::Impl::revolution_of(double time) const {
-  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.index_at(crank, absolute(time));
-}
+int ClearanceSimulator::Impl::revolution_of(double time) const { return books.revolution_of(crank, clock, time); }
 
-double ClearanceSimulator::Impl::revolution_start(int k) const {
-  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.start_s(crank, k);
-}
+double ClearanceSimulator::Impl::revolution_start(int k) const { return books.revolution_start(crank, k); }
 
-RevolutionRecord& ClearanceSimulator::Impl::revolution(int k) {
-  return RevolutionClock{books.rev_origin_rad, books.rev_dir}.record(crank, books.revolutions, k);
-}
+RevolutionRecord& ClearanceSimulator::Impl::revolution(int k) { return books.revolution(crank, k); }
 
 void ClearanceSimulator::Impl::book_interval(double ta, double tb) {
-  (seg.mode == ContactMode::following ? books.diag.time_following_s : books.diag.time_free_s) += tb - ta;
-  if (seg.mode == ContactMode::following && wall.friction.mu > 0 && wall.friction.slip == 0)
-    books.diag.time_stuck_s += tb - ta;
-  if (!books.revolutions_on) return;
-  int k = std::max(0, revolution_of(ta));
-  double a = ta;
-  for (;;) {
-    RevolutionRecord& r = revolution(k);
-    const double end = local(r.end_time_s);
-    const double b = std::min(tb, end);
-    if (b > a) (seg.mode == ContactMode::following ? r.following_time_s : r.free_time_s) += b - a;
-    if (end > tb) break;
-    // Reached the start of turn k + 1: record its state once.
-    RevolutionRecord& next = revolution(k + 1);
-    if (!next.has_start_state) record_start_state(next);
-    a = end;
-    ++k;
-    if (a >= tb) break;
-  }
+  const bool following = seg.mode == ContactMode::following;
+  books.book_interval(crank, clock, ta, tb, following, [this](RevolutionRecord& r) { record_start_state(r); });
+  if (following && wall.friction.mu > 0 && wall.friction.slip == 0) books.diag.time_stuck_s += tb - ta;
 }
 
 void ClearanceSimulator::Impl::record_start_state(RevolutionRecord& r) {
@@ -74,15 +51,11 @@ void ClearanceSimulator::Impl::after_start() {
   if (books.revolutions_on) record_start_state(revolution(std::max(0, revolution_of(seg.t))));
 }
 
-double ClearanceSimulator::Impl::stat_time(long long i) const {
-  return local(crank.time_at_angle(books.rev_origin_rad +
-                                   books.rev_dir * units::kTwoPi * static_cast<double>(i) / books.stats_per_turn));
-}
+double ClearanceSimulator::Impl::stat_time(long long i) const { return books.stat_time(crank, clock, i); }
 
 void ClearanceSimulator::Impl::emit_statistics(double up_to) {
-  if (books.stats_per_turn <= 0) return;
-  for (double ts = stat_time(books.next_stat); ts <= up_to; ts = stat_time(++books.next_stat)) {
-    if (ts < seg.start) continue;  // before the start
+  books.emit_statistics(crank, clock, up_to, [this](double ts) -> std::optional<double> {
+    if (ts < seg.start) return std::nullopt;  // before the start
     OdeState y;
     integ->interpolate(ts, y);
     const CrankState c = crank_at(ts);
@@ -92,19 +65,12 @@ void ClearanceSimulator::Impl::emit_statistics(double up_to) {
     } else {
       model.free_accelerations(c, free_links(ts, y), a3, a4);
     }
-    const double d = a3 - solve_motion(model.rig(), c).alpha3_rad_s2;
-    RevolutionRecord& r = revolution(static_cast<int>(books.next_stat / books.stats_per_turn));
-    r.alpha3_deviation_sum_sq += d * d;
-    ++r.alpha3_deviation_samples;
-    r.alpha3_deviation_rms_rad_s2 = std::sqrt(r.alpha3_deviation_sum_sq / r.alpha3_deviation_samples);
-  }
+    return a3 - solve_motion(model.rig(), c).alpha3_rad_s2;
+  });
 }
 
 void ClearanceSimulator::Impl::emit_samples(double up_to) {
-  while (books.next_sample < books.sample_times.size() && local(books.sample_times[books.next_sample]) <= up_to) {
-    books.samples.push_back(sample(books.sample_times[books.next_sample]));
-    ++books.next_sample;
-  }
+  books.emit_samples(clock, up_to, [this](double absolute_time) { return sample(absolute_time); });
 }
 
 ClearanceSample ClearanceSimulator::Impl::sample(double absolute_time) {

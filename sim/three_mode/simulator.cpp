@@ -22,10 +22,8 @@ namespace fourbar {
 // ---- local clock ------------------------------------------------------------
 
 double ClearanceSimulator::Impl::rebase(double time) {
-  const double o = clock.origin_s + time;
-  const double r = std::abs(clock.origin_s) >= std::abs(time) ? (clock.origin_s - o) + time : (time - o) + clock.origin_s;
+  const double r = clock.rebase(time);
   zeno.last_event = (zeno.last_event - time) + r;
-  clock.origin_s = o;
   return r;
 }
 

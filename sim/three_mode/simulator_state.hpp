@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "common/statistics.hpp"
+#include "sim/record/local_clock.hpp"
+#include "sim/record/run_books.hpp"
 #include "sim/three_mode/simulator.hpp"
 
 namespace fourbar {
@@ -72,14 +74,11 @@ struct ClearanceSimulator::Impl {
   // origin moves to each segment's start (long runs keep the resolution of
   // the local time; see crank_motion.hpp). Every time inside Impl is local
   // unless named absolute.
-  struct LocalClock {
-    double origin_s = 0;  // absolute time of local time 0
-  } clock;
-  CrankState crank_at(double time) const { return crank.at_local(clock.origin_s, time); }
-  double absolute(double time) const { return clock.origin_s + time; }
-  double local(double absolute_time) const { return absolute_time - clock.origin_s; }
-  /// Moves the origin to the local time `time`; returns that instant in the
-  /// new local time (the rounding remainder of origin + time, ~1e-13 s at most).
+  LocalClock clock;
+  CrankState crank_at(double time) const { return clock.crank_at(crank, time); }
+  double absolute(double time) const { return clock.absolute(time); }
+  double local(double absolute_time) const { return clock.local(absolute_time); }
+  /// LocalClock::rebase, with the Zeno guard's last event moved along.
   double rebase(double time);
 
   /// The current smooth segment; set by the segment starts, advanced by the main loop.
@@ -106,19 +105,7 @@ struct ClearanceSimulator::Impl {
   } witness;
 
   /// What the run records as it passes sample times, events and turn boundaries.
-  struct Books {
-    std::vector<double> sample_times;
-    std::size_t next_sample = 0;
-    std::vector<ClearanceSample> samples;
-    std::vector<ImpactRecord> impacts;
-    std::vector<RevolutionRecord> revolutions;
-    bool revolutions_on = false;
-    int stats_per_turn = 0;   // α3-deviation samples per turn (0 = off)
-    long long next_stat = 0;  // index of the next one, counted from the revolution origin
-    double rev_origin_rad = 0;
-    int rev_dir = 1;
-    ClearanceDiagnostics diag;
-  } books;
+  RunBooks books;
 
   /// The energy balance's integrals over closed segments and at impacts.
   struct EnergyBooks {
