@@ -34,11 +34,22 @@ run_jobs() {  # FOURBAR OUT
   return "$failed"
 }
 
-masked() { sed -e "s|$2|OUT|g" -e "s|$root|ROOT|g" "$1"; }
+# The report's cache key hashes the executable's build-id (common/build_id.hpp),
+# which differs between any two builds by design: mask the key, and name each
+# cache file by its content instead of by its key.
+masked() { sed -E -e "s|$2|OUT|g" -e "s|$root|ROOT|g" -e 's/"cache_key": ?"[0-9a-f]{64}"/"cache_key":"KEY"/g' "$1"; }
+name_cache_by_content() {  # OUT
+  local f
+  for f in "$1"/report/.fourbar-cache/*.json; do
+    [ -f "$f" ] && mv "$f" "$1/report/.fourbar-cache/content-$(masked "$f" "$1" | sha256sum | cut -c1-16).json"
+  done
+}
 
 rc=0
 run_jobs "$old" "$work/old" || rc=1
 run_jobs "$new" "$work/new" || rc=1
+name_cache_by_content "$work/old"
+name_cache_by_content "$work/new"
 files=0
 while IFS= read -r f; do
   files=$((files + 1))
