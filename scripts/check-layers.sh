@@ -57,9 +57,10 @@ why() {
 
 # The room of a path inside sim/ ("sim/three_mode/model.hpp" → three_mode,
 # "sim/scene.hpp" → scene).
+# Sets `room` (no subshell: the checker runs this for every sim include).
 room_of() {
   local rest=${1#sim/}
-  if [ "${rest#*/}" = "$rest" ]; then echo scene; else echo "${rest%%/*}"; fi
+  if [ "${rest#*/}" = "$rest" ]; then room=scene; else room=${rest%%/*}; fi
 }
 room_why() {
   if [ "${sim_room[$2]}" -eq "${sim_room[$1]}" ]; then echo "sim/$2 stands beside sim/$1 (floor ${sim_room[$1]} of sim)"
@@ -69,13 +70,14 @@ room_why() {
 # sim/'s rooms: every file is in a room of the table, every sim include allowed.
 if [ -d sim ]; then
   while IFS= read -r file; do
-    r=$(room_of "$file")
-    [ -n "${sim_room[$r]+x}" ] || report "$file: sim/$r is not a room of sim's stack (add it to sim_room)"
+    room_of "$file"
+    [ -n "${sim_room[$room]+x}" ] || report "$file: sim/$room is not a room of sim's stack (add it to sim_room)"
   done < <(find sim -type f \( -name '*.hpp' -o -name '*.cpp' -o -name '*.h' \) | sort)
   while IFS=: read -r file line text; do
-    inc=$(sed -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"([^"]*)".*/\1/' <<<"$text")
+    inc=${text#*\"} inc=${inc%%\"*}
     [ "${inc%%/*}" = sim ] || continue
-    from=$(room_of "$file") to=$(room_of "$inc")
+    room_of "$file"; from=$room
+    room_of "$inc"; to=$room
     [ -n "${sim_room[$from]+x}" ] || continue
     if [ -z "${sim_room[$to]+x}" ]; then
       report "$file:$line: includes \"$inc\" from sim/$to, which is not a room of sim's stack"
