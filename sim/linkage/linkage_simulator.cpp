@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
+#include "common/error.hpp"
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
 #include "sim/clearance/event_root.hpp"
@@ -48,7 +50,8 @@ struct LinkageSimulator::Impl final : LinkageOde {
   LinkageIntegrator integ;
   // scales
   double w = 1, delta = 1, energy = 1, force = 1;
-  std::array<double, kMaxFull> pos_scale{};  // per coordinate
+  // Per coordinate (from index 2): the unit of its scaled position and of its scaled rate.
+  std::array<double, kMaxFull> pos_scale{}, rate_scale{};
   // clock
   double origin_s = 0, t = 0, seg_start = 0, start_abs = 0;
   double absolute(double time) const { return origin_s + time; }
@@ -109,9 +112,16 @@ struct LinkageSimulator::Impl final : LinkageOde {
     c.z_rate(1) = nm.omega4_rad_s + y[n + 1] * delta * w;
     for (int i = 2; i < n; ++i) {
       c.q_offsets(i) = y[i] * pos_scale[static_cast<std::size_t>(i)];
-      c.z_rate(i) = y[n + i] * pos_scale[static_cast<std::size_t>(i)] * w;
+      c.z_rate(i) = y[n + i] * rate_scale[static_cast<std::size_t>(i)];
     }
     c.z_rate(n) = nm.crank.speed_rad_s;
+    if (model.all_ideal()) {
+      c.prescribed.alpha3_rad_s2 = nm.alpha3_rad_s2;
+      c.prescribed.alpha4_rad_s2 = nm.alpha4_rad_s2;
+      const NominalMotion unit = solve_motion(model.rig(), CrankState{nm.crank.angle_rad, 1.0, 0.0});
+      c.prescribed.ratio3 = unit.omega3_rad_s;
+      c.prescribed.ratio4 = unit.omega4_rad_s;
+    }
   }
 
   std::array<double, kJoints> chis(const LinkageWorkspace& ws) const {
@@ -137,10 +147,13 @@ struct LinkageSimulator::Impl final : LinkageOde {
     LinkageWorkspace ws;
     evaluate(time, y, c, ws);
     const NominalMotion& nm = nominal_at(time);
-    for (int i = 0; i < n; ++i) dy[i] = y[n + i] * w;
+    dy[0] = y[n] * w;
+    dy[1] = y[n + 1] * w;
+    for (int i = 2; i < n; ++i)
+      dy[i] = y[n + i] * (rate_scale[static_cast<std::size_t>(i)] / pos_scale[static_cast<std::size_t>(i)]);
     dy[n] = (ws.z_accel(0) - nm.alpha3_rad_s2) / (delta * w);
     dy[n + 1] = (ws.z_accel(1) - nm.alpha4_rad_s2) / (delta * w);
-    for (int i = 2; i < n; ++i) dy[n + i] = ws.z_accel(i) / (pos_scale[static_cast<std::size_t>(i)] * w);
+    for (int i = 2; i < n; ++i) dy[n + i] = ws.z_accel(i) / rate_scale[static_cast<std::size_t>(i)];
     dy[work_index()] = ws.crank_torque_Nm * c.crank.speed_rad_s / energy;
     const auto& joints = model.clearance_joints();
     for (std::size_t k = 0; k < joints.size(); ++k) {
@@ -201,7 +214,8 @@ struct LinkageSimulator::Impl final : LinkageOde {
   void prepare(double t0) {
     const CrankState c = crank.at(t0);
     w = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
-    delta = model.reference_clearance_m() / model.rig().coupler.length_m;
+    // An all-ideal linkage keeps its angle deviations at zero: any unit will do.
+    delta = model.all_ideal() ? 1e-3 : model.reference_clearance_m() / model.rig().coupler.length_m;
     energy = model.energy_scale_J(c.speed_rad_s);
     if (!(energy > 0)) energy = 1.0;
     force = model.force_scale_N(c.speed_rad_s);
@@ -211,11 +225,24 @@ struct LinkageSimulator::Impl final : LinkageOde {
       if (pl.offset_index >= 0)
         pos_scale[static_cast<std::size_t>(pl.offset_index)] = pos_scale[static_cast<std::size_t>(pl.offset_index) + 1] =
             model.joint(pl.joint).clearance_m;
-    // Modal coordinates: scaled by the largest clearance (a deflection of that size is an event).
+    for (std::size_t i = 0; i < rate_scale.size(); ++i) rate_scale[i] = pos_scale[i] * w;
+    // Modal coordinate k: scaled by its static deflection under the force
+    // scale, F/K_kk, its rate by that times ω_k = √(K_kk/M_kk). Both then
+    // stand for an acceleration of the same size, F/M_kk (ω_k²·F/K_kk), for
+    // every mode: the error test weighs each mode by what an accelerometer
+    // reads of it, and a mode's position and rate alike.
+    // The force scale, at least the links' weight under standard gravity, 9.80665 m/s² (a
+    // held crank on a rig lying flat has no other).
+    const double modal_force =
+        std::max(force, (model.rig().coupler.mass_kg + model.rig().rocker.mass_kg) * 9.80665);
     for (int b = 0; b < kBodies; ++b)
       if (const ElasticLink* link = model.elastic(b))
-        for (int k = 0; k < link->modes(); ++k)
-          pos_scale[static_cast<std::size_t>(model.modal_index(b) + k)] = model.reference_clearance_m();
+        for (int k = 0; k < link->modes(); ++k) {
+          const auto i = static_cast<std::size_t>(model.modal_index(b) + k);
+          const double stiffness = link->modal_stiffness(k, k), mass = link->modal_mass(k, k);
+          pos_scale[i] = modal_force / stiffness;
+          rate_scale[i] = pos_scale[i] * std::sqrt(stiffness / mass);
+        }
     origin_s = start_abs = t0;
     t = seg_start = 0;
   }
@@ -223,10 +250,31 @@ struct LinkageSimulator::Impl final : LinkageOde {
   void begin(const LinkageStart& s) {
     std::vector<double> y(size, 0.0);
     const NominalMotion& nm = nominal_at(0.0);
-    y[0] = angle_between(nm.pose.u3, s.u3) / delta;
-    y[1] = angle_between(nm.pose.u4, s.u4) / delta;
-    y[static_cast<std::size_t>(n)] = (s.omega3_rad_s - nm.omega3_rad_s) / (delta * w);
-    y[static_cast<std::size_t>(n + 1)] = (s.omega4_rad_s - nm.omega4_rad_s) / (delta * w);
+    if (!model.all_ideal()) {
+      y[0] = angle_between(nm.pose.u3, s.u3) / delta;
+      y[1] = angle_between(nm.pose.u4, s.u4) / delta;
+      y[static_cast<std::size_t>(n)] = (s.omega3_rad_s - nm.omega3_rad_s) / (delta * w);
+      y[static_cast<std::size_t>(n + 1)] = (s.omega4_rad_s - nm.omega4_rad_s) / (delta * w);
+    }
+    for (int b = 1; b < kBodies; ++b) {
+      const ElasticLink* link = model.elastic(b);
+      const int modes = link ? link->modes() : 0;
+      const auto& eta = s.modal_m[static_cast<std::size_t>(b - 1)];
+      const auto& rate = s.modal_rate_m_s[static_cast<std::size_t>(b - 1)];
+      for (int k = 0; k < 4; ++k) {
+        const double e = eta[static_cast<std::size_t>(k)], r = rate[static_cast<std::size_t>(k)];
+        if (!std::isfinite(e) || !std::isfinite(r) || (k >= modes && (e != 0 || r != 0)))
+          throw InputError(std::string("linkage start: modal coordinate ") + std::to_string(k + 1) + " of the " +
+                           (b == 1 ? "coupler" : "rocker") + " is " + (std::isfinite(e) && std::isfinite(r)
+                               ? "given but the link has " + std::to_string(modes) + " modes"
+                               : std::string("not finite")) +
+                           "; give eta and its rate only for an elastic link's modes");
+        if (k >= modes) continue;
+        const auto i = static_cast<std::size_t>(model.modal_index(b) + k);
+        y[i] = e / pos_scale[i];
+        y[i + static_cast<std::size_t>(n)] = r / rate_scale[i];
+      }
+    }
     for (const Placement& pl : model.placements()) {
       if (pl.offset_index < 0) continue;
       const auto k = static_cast<std::size_t>(pl.offset_index);
@@ -234,8 +282,8 @@ struct LinkageSimulator::Impl final : LinkageOde {
       const Vec2 d = pl.offset_sign * s.eccentricity_m[ju], dd = pl.offset_sign * s.eccentricity_rate_m_s[ju];
       y[k] = d.x / pos_scale[k];
       y[k + 1] = d.y / pos_scale[k + 1];
-      y[k + static_cast<std::size_t>(n)] = dd.x / (pos_scale[k] * w);
-      y[k + 1 + static_cast<std::size_t>(n)] = dd.y / (pos_scale[k + 1] * w);
+      y[k + static_cast<std::size_t>(n)] = dd.x / rate_scale[k];
+      y[k + 1 + static_cast<std::size_t>(n)] = dd.y / rate_scale[k + 1];
     }
     integ.reset(*this, 0.0, y);
     LinkageCoordinates c;
