@@ -53,8 +53,9 @@ void add_elastic_body(const LinkageModel& m, const LinkageCoordinates& c, const 
       data.quadratic_force + data.stiffness_force + data.damping_force;
   for (int i = 0; i < 3 + modes; ++i) qb(i) += -g * mb(1, i) - mb.row(i).head<3>().dot(bias_r);
   const Eigen::Matrix3d mrr = mb.topLeftCorner<3, 3>();
-  w.M.noalias() += G.transpose() * (mrr * G);
-  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, kMaxFull> fr = mb.bottomLeftCorner(modes, 3) * G;
+  w.M.noalias() += G.transpose().lazyProduct(mrr.lazyProduct(G));
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, kMaxFull> fr =
+      mb.bottomLeftCorner(modes, 3).lazyProduct(G);
   w.M.middleRows(i0, modes) += fr;
   w.M.middleCols(i0, modes) += fr.transpose();
   w.M.block(i0, i0, modes, modes) += mb.bottomRightCorner(modes, modes);
@@ -220,8 +221,8 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
     const Vec2 rc = rotate(b.u, bd.centre_m);
     const ZJac Jc = point_jacobian(b, rc);
     const Vec2 ac = point_bias(b, rc);
-    w.M.noalias() += bd.mass_kg * Jc.transpose() * Jc;
-    w.M.noalias() += bd.inertia_cg_kg_m2 * b.Jw.transpose() * b.Jw;
+    w.M.noalias() += (bd.mass_kg * Jc.transpose()).lazyProduct(Jc);
+    w.M.noalias() += (bd.inertia_cg_kg_m2 * b.Jw.transpose()).lazyProduct(b.Jw);
     const Eigen::Vector2d f{-bd.mass_kg * ac.x, bd.mass_kg * (-g - ac.y)};
     w.Q.noalias() += Jc.transpose() * f;
     w.Q.noalias() -= bd.inertia_cg_kg_m2 * b.alpha_bias * b.Jw.transpose();
