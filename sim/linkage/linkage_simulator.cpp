@@ -7,14 +7,15 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <utility>
 
-#include "common/error.hpp"
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
 #include "sim/clearance/event_root.hpp"
 #include "sim/linkage/linkage_dynamics.hpp"
 #include "sim/linkage/linkage_integrator.hpp"
+#include "sim/linkage/linkage_scales.hpp"
 
 namespace fourbar {
 
@@ -50,7 +51,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
   LinkageIntegrator integ;
   // scales
   double w = 1, delta = 1, energy = 1, force = 1;
-  // Per coordinate (from index 2): the unit of its scaled position and of its scaled rate.
+  LinkageScales scales;  // and its parts below (linkage_scales.hpp)
   std::array<double, kMaxFull> pos_scale{}, rate_scale{};
   // clock
   double origin_s = 0, t = 0, seg_start = 0, start_abs = 0;
@@ -212,37 +213,10 @@ struct LinkageSimulator::Impl final : LinkageOde {
 
   // ---- starts ----
   void prepare(double t0) {
-    const CrankState c = crank.at(t0);
-    w = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
-    // An all-ideal linkage keeps its angle deviations at zero: any unit will do.
-    delta = model.all_ideal() ? 1e-3 : model.reference_clearance_m() / model.rig().coupler.length_m;
-    energy = model.energy_scale_J(c.speed_rad_s);
-    if (!(energy > 0)) energy = 1.0;
-    force = model.force_scale_N(c.speed_rad_s);
+    scales = linkage_scales(model, crank.at(t0));
+    std::tie(w, delta, energy, force) = std::tie(scales.w, scales.delta, scales.energy, scales.force);
+    std::tie(pos_scale, rate_scale) = std::tie(scales.position, scales.rate);
     diag.energy_scale_J = energy;
-    pos_scale.fill(1.0);
-    for (const Placement& pl : model.placements())
-      if (pl.offset_index >= 0)
-        pos_scale[static_cast<std::size_t>(pl.offset_index)] = pos_scale[static_cast<std::size_t>(pl.offset_index) + 1] =
-            model.joint(pl.joint).clearance_m;
-    for (std::size_t i = 0; i < rate_scale.size(); ++i) rate_scale[i] = pos_scale[i] * w;
-    // Modal coordinate k: scaled by its static deflection under the force
-    // scale, F/K_kk, its rate by that times ω_k = √(K_kk/M_kk). Both then
-    // stand for an acceleration of the same size, F/M_kk (ω_k²·F/K_kk), for
-    // every mode: the error test weighs each mode by what an accelerometer
-    // reads of it, and a mode's position and rate alike.
-    // The force scale, at least the links' weight under standard gravity, 9.80665 m/s² (a
-    // held crank on a rig lying flat has no other).
-    const double modal_force =
-        std::max(force, (model.rig().coupler.mass_kg + model.rig().rocker.mass_kg) * 9.80665);
-    for (int b = 0; b < kBodies; ++b)
-      if (const ElasticLink* link = model.elastic(b))
-        for (int k = 0; k < link->modes(); ++k) {
-          const auto i = static_cast<std::size_t>(model.modal_index(b) + k);
-          const double stiffness = link->modal_stiffness(k, k), mass = link->modal_mass(k, k);
-          pos_scale[i] = modal_force / stiffness;
-          rate_scale[i] = pos_scale[i] * std::sqrt(stiffness / mass);
-        }
     origin_s = start_abs = t0;
     t = seg_start = 0;
   }
@@ -256,25 +230,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
       y[static_cast<std::size_t>(n)] = (s.omega3_rad_s - nm.omega3_rad_s) / (delta * w);
       y[static_cast<std::size_t>(n + 1)] = (s.omega4_rad_s - nm.omega4_rad_s) / (delta * w);
     }
-    for (int b = 1; b < kBodies; ++b) {
-      const ElasticLink* link = model.elastic(b);
-      const int modes = link ? link->modes() : 0;
-      const auto& eta = s.modal_m[static_cast<std::size_t>(b - 1)];
-      const auto& rate = s.modal_rate_m_s[static_cast<std::size_t>(b - 1)];
-      for (int k = 0; k < 4; ++k) {
-        const double e = eta[static_cast<std::size_t>(k)], r = rate[static_cast<std::size_t>(k)];
-        if (!std::isfinite(e) || !std::isfinite(r) || (k >= modes && (e != 0 || r != 0)))
-          throw InputError(std::string("linkage start: modal coordinate ") + std::to_string(k + 1) + " of the " +
-                           (b == 1 ? "coupler" : "rocker") + " is " + (std::isfinite(e) && std::isfinite(r)
-                               ? "given but the link has " + std::to_string(modes) + " modes"
-                               : std::string("not finite")) +
-                           "; give eta and its rate only for an elastic link's modes");
-        if (k >= modes) continue;
-        const auto i = static_cast<std::size_t>(model.modal_index(b) + k);
-        y[i] = e / pos_scale[i];
-        y[i + static_cast<std::size_t>(n)] = r / rate_scale[i];
-      }
-    }
+    scale_modal_start(model, scales, s.modal_m, s.modal_rate_m_s, y);
     for (const Placement& pl : model.placements()) {
       if (pl.offset_index < 0) continue;
       const auto k = static_cast<std::size_t>(pl.offset_index);
