@@ -10,7 +10,9 @@
 // 4 + 4 modes, clearance in all three joints, 10 turns (the issue's energy
 // check over 10 turns).
 //
-//   stress_linkage [--quick] [--modes N] [--csv FILE]
+//   stress_linkage [--quick] [--modes N] [--joints B|AB|ABO4] [--csv FILE]
+//   stress_linkage --long   (the 10-turn case only)
+//   (--joints: only that clearance set)
 
 #include <algorithm>
 #include <cstdio>
@@ -27,15 +29,17 @@ using namespace fourbar;
 using linkage_stress::Case;
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, long_only = false;
   int modes = 2;
-  std::string csv;
+  std::string csv, only_joints;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--long")) long_only = true;
     else if (!std::strcmp(argv[i], "--modes") && i + 1 < argc) modes = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
+    else if (!std::strcmp(argv[i], "--joints") && i + 1 < argc) only_joints = argv[++i];
     else {
-      std::fprintf(stderr, "usage: stress_linkage [--quick] [--modes N] [--csv FILE]\n");
+      std::fprintf(stderr, "usage: stress_linkage [--quick | --long] [--modes N] [--joints B|AB|ABO4] [--csv FILE]\n");
       return 2;
     }
   }
@@ -55,13 +59,15 @@ int main(int argc, char** argv) {
   int total = 0, failed = 0;
   double worst_energy = 0, worst_pen = 0, worst_steps = 0, wall = 0;
   std::map<std::string, std::pair<int, int>> by_axis;  // label -> (cases, failures)
-  for (double st : starts)
+  for (double st : long_only ? std::vector<double>{} : starts)
     for (const Joints& js : joint_sets)
       for (double xi : xis)
         for (double e : es)
           for (double mu : mus)
             for (double rpm : rpms)
               for (int m : mode_counts) {
+                const std::string jn = std::string(js[0] ? "A" : "") + (js[1] ? "B" : "") + (js[2] ? "O4" : "");
+                if (!only_joints.empty() && jn != only_joints) continue;
                 Case c;
                 c.start_deg = st;
                 c.joints = js;
@@ -77,7 +83,6 @@ int main(int argc, char** argv) {
                 worst_pen = std::max(worst_pen, r.penetration_ratio);
                 worst_steps = std::max(worst_steps, r.max_steps_per_turn);
                 wall += r.wall_seconds;
-                const std::string jn = std::string(js[0] ? "A" : "") + (js[1] ? "B" : "") + (js[2] ? "O4" : "");
                 for (const std::string& key :
                      {"joints " + jn, "xi " + std::to_string(xi * 1e3).substr(0, 5) + " mm", "modes " + std::to_string(m),
                       "rpm " + std::to_string(static_cast<int>(rpm))}) {
@@ -92,11 +97,12 @@ int main(int argc, char** argv) {
                       << "\"\n";
                 std::fflush(stdout);
               }
-  std::printf("%d cases, %d failed; worst energy residual %.2e of the scale, deepest penetration %.3f of the "
+  if (!long_only)
+    std::printf("%d cases, %d failed; worst energy residual %.2e of the scale, deepest penetration %.3f of the "
               "bound, most steps per turn %.0f, %.0f s wall in all\n",
               total, failed, worst_energy, worst_pen, worst_steps, wall);
   for (const auto& [key, v] : by_axis) std::printf("  %-16s %3d cases, %d failed\n", key.c_str(), v.first, v.second);
-  if (!quick) {
+  if (!quick && only_joints.empty()) {
     Case longrun;
     longrun.joints = {true, true, true};
     longrun.modes = 4;
