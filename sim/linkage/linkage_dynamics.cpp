@@ -27,36 +27,40 @@ BodyFrame ground_frame(int size) {
 }
 
 
-/// T = ∂(R, θ, η)/∂ż of an elastic body: its frame's Jp and Jw, then the
-/// selection of its modal coordinates.
-Eigen::MatrixXd body_map(const BodyFrame& b, int first_mode, int modes, int nz) {
-  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(3 + modes, nz);
-  T.topRows(2) = b.Jp;
-  T.row(2) = b.Jw;
-  for (int k = 0; k < modes; ++k) T(3 + k, first_mode + k) = 1.0;
-  return T;
-}
-
 /// M += Tᵀ·M_b·T and Q += Tᵀ·(Q_v − K·η − D·η̇ + gravity − M_b·bias) from
-/// sim/flex's body terms; the modal damping's power and the strain energy go
-/// to their own books.
+/// sim/flex's body terms, T = ∂(R, θ, η)/∂ż: its first three rows G are the
+/// frame's Jp and Jw, the rest select the modal coordinates (from i0), so
+/// Tᵀ·M_b·T = Gᵀ·M_rr·G + Gᵀ·M_rf (columns i0…) + M_fr·G (rows i0…) + M_ff
+/// (block i0…), assembled without a general product. The modal damping's
+/// power and the strain energy go to their own books.
 void add_elastic_body(const LinkageModel& m, const LinkageCoordinates& c, const ElasticLink& link, int body,
                       LinkageWorkspace& w) {
-  const int nz = m.coordinates() + 1, modes = link.modes();
+  const int nz = m.coordinates() + 1, modes = link.modes(), i0 = m.modal_index(body);
   const BodyFrame& b = w.body[static_cast<std::size_t>(body)];
   const FrameState frame = frame_state(w, body, false);
   const ModalState modal = modal_state(m, c, w, body, false);
   ElasticBodyData data(link);
   body_terms(link, data, frame, modal);
-  const Eigen::MatrixXd T = body_map(b, m.modal_index(body), modes, nz);
-  Eigen::VectorXd bias = Eigen::VectorXd::Zero(3 + modes);
-  bias << b.a_bias.x, b.a_bias.y, b.alpha_bias, Eigen::VectorXd::Zero(modes);
-  // Gravity's generalised force: ∫μ g·δr ds = gᵀ·(rows R of M_b)·δz.
-  const Eigen::VectorXd gravity = data.mass.topRows(2).transpose() * Eigen::Vector2d(0, -m.rig().gravity_m_s2);
-  const Eigen::VectorXd qb =
-      data.quadratic_force + data.stiffness_force + data.damping_force + gravity - data.mass * bias;
-  w.M += T.transpose() * data.mass * T;
-  w.Q += T.transpose() * qb;
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxFull> G(3, nz);
+  G.topRows<2>() = b.Jp;
+  G.row(2) = b.Jw;
+  const Eigen::Vector3d bias_r(b.a_bias.x, b.a_bias.y, b.alpha_bias);
+  const auto& mb = data.mass;
+  // Gravity's generalised force: ∫μ g·δr ds = gᵀ·(rows R of M_b)·δz; the
+  // bias acceleration (modal part zero) enters as −M_b·(bias_r, 0).
+  const double g = m.rig().gravity_m_s2;
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3 + 4, 1> qb =
+      data.quadratic_force + data.stiffness_force + data.damping_force;
+  for (int i = 0; i < 3 + modes; ++i) qb(i) += -g * mb(1, i) - mb.row(i).head<3>().dot(bias_r);
+  const Eigen::Matrix3d mrr = mb.topLeftCorner<3, 3>();
+  w.M.noalias() += G.transpose().lazyProduct(mrr.lazyProduct(G));
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, kMaxFull> fr =
+      mb.bottomLeftCorner(modes, 3).lazyProduct(G);
+  w.M.middleRows(i0, modes) += fr;
+  w.M.middleCols(i0, modes) += fr.transpose();
+  w.M.block(i0, i0, modes, modes) += mb.bottomRightCorner(modes, modes);
+  w.Q.noalias() += G.transpose() * qb.head<3>();
+  w.Q.segment(i0, modes) += qb.tail(modes);
   w.strain_energy_J += strain_energy(link, modal);
   w.modal_damping_power_W += -modal.eta_dot_m_s.dot(data.damping_force.tail(modes));
 }
@@ -217,8 +221,8 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
     const Vec2 rc = rotate(b.u, bd.centre_m);
     const ZJac Jc = point_jacobian(b, rc);
     const Vec2 ac = point_bias(b, rc);
-    w.M.noalias() += bd.mass_kg * Jc.transpose() * Jc;
-    w.M.noalias() += bd.inertia_cg_kg_m2 * b.Jw.transpose() * b.Jw;
+    w.M.noalias() += (bd.mass_kg * Jc.transpose()).lazyProduct(Jc);
+    w.M.noalias() += (bd.inertia_cg_kg_m2 * b.Jw.transpose()).lazyProduct(b.Jw);
     const Eigen::Vector2d f{-bd.mass_kg * ac.x, bd.mass_kg * (-g - ac.y)};
     w.Q.noalias() += Jc.transpose() * f;
     w.Q.noalias() -= bd.inertia_cg_kg_m2 * b.alpha_bias * b.Jw.transpose();
@@ -229,6 +233,18 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
   }
   w.z_accel = ZVec::Zero(nz);
   w.z_accel(n) = c.crank.accel_rad_s2;
+  if (m.all_ideal()) {
+    // θ3, θ4 prescribed (c.prescribed): solve the modal rows; the motor
+    // torque by virtual work through the velocity ratios (θ3', θ4', 1).
+    w.z_accel(0) = c.prescribed.alpha3_rad_s2;
+    w.z_accel(1) = c.prescribed.alpha4_rad_s2;
+    const int f = n - 2;
+    const ZVec rhs = w.Q.segment(2, f) - w.M.block(2, 0, f, 2) * w.z_accel.head(2) - w.M.block(2, n, f, 1) * w.z_accel(n);
+    w.z_accel.segment(2, f) = w.M.block(2, 2, f, f).llt().solve(rhs);
+    const ZVec residual = w.M * w.z_accel - w.Q;
+    w.crank_torque_Nm = residual(n) + residual(0) * c.prescribed.ratio3 + residual(1) * c.prescribed.ratio4;
+    return;
+  }
   const ZVec rhs = w.Q.head(n) - w.M.block(0, n, n, 1) * c.crank.accel_rad_s2;
   w.z_accel.head(n) = w.M.topLeftCorner(n, n).llt().solve(rhs);
   w.crank_torque_Nm = w.M.row(n).dot(w.z_accel) - w.Q(n);

@@ -36,6 +36,10 @@ struct LinkageCoordinates {
   std::array<Vec2, 2> u;     ///< coupler and rocker directions (u3, u4)
   ZVec q_offsets;            ///< size n: the offsets d and the modal η at their indices (angle entries unused)
   ZVec z_rate;               ///< size n + 1: q̇ and ω2
+  /// An all-ideal linkage's prescribed θ̈3, θ̈4 and velocity ratios dθ3/dθ2, dθ4/dθ2.
+  struct Prescribed {
+    double alpha3_rad_s2 = 0, alpha4_rad_s2 = 0, ratio3 = 0, ratio4 = 0;
+  } prescribed;
 };
 
 /// A body frame: origin p, direction u, rates; linear in ż with biases.

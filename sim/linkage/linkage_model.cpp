@@ -44,7 +44,8 @@ LinkageModel build_linkage(const Rig& rig, const LinkageSpec& spec) {
     if (jd.clearance_m > 0) m.clearance_joints_.push_back(j);
     m.xi_ref_ = std::max(m.xi_ref_, jd.clearance_m);
   }
-  if (m.clearance_joints_.empty())
+  const bool any_elastic = spec.elastic[1] || spec.elastic[2];
+  if (m.clearance_joints_.empty() && !any_elastic)
     throw InputError(
         "[linkage]: no joint has a clearance; give one of crank_coupler_radial_mm, coupler_rocker_radial_mm, "
         "rocker_ground_radial_mm > 0 (or use model = \"nominal\" for the ideal linkage)");
@@ -53,7 +54,7 @@ LinkageModel build_linkage(const Rig& rig, const LinkageSpec& spec) {
   if (spec.film.viscosity_Pa_s > 0 && !(spec.film.radius_m > 0 && spec.film.length_m > 0))
     throw InputError("[linkage]: a lubricant needs the bearing's radius and length (rig [clearance] pin_radius_mm, "
                      "bearing_length_mm)");
-  m.cut_ = m.joints_[1].clearance_m > 0 ? 1 : (m.joints_[0].clearance_m > 0 ? 0 : 2);
+  m.cut_ = m.joints_[1].clearance_m > 0 ? 1 : (m.joints_[0].clearance_m > 0 ? 0 : (m.joints_[2].clearance_m > 0 ? 2 : -1));
   // The tree: see the header. Parent site first, child (placed body) second.
   int next_offset = 2;
   auto place = [&](int body, int joint, bool child_holds_pin, int angle_index) {
@@ -67,7 +68,7 @@ LinkageModel build_linkage(const Rig& rig, const LinkageSpec& spec) {
     p.offset_sign = child_holds_pin ? 1.0 : -1.0;
     return p;
   };
-  if (m.cut_ == 1) {
+  if (m.cut_ == 1 || m.cut_ == -1) {
     m.placements_ = {place(coupler, 0, false, 0), place(rocker, 2, true, 1)};
   } else if (m.cut_ == 0) {
     m.placements_ = {place(rocker, 2, true, 1), place(coupler, 1, true, 0)};

@@ -26,8 +26,12 @@
 // clearance joint its angle and the two components of d = child site −
 // parent site (d = ±e). q = (θ3, θ4, then d of each placing clearance joint
 // in joint order): with clearance at B only, q = (θ3, θ4), the compliant
-// model's coordinates. A linkage without any clearance has no coordinate
-// left (use model = "nominal").
+// model's coordinates. A rigid linkage without any clearance has no
+// coordinate left (use model = "nominal"). An all-ideal linkage with an
+// elastic link is accepted: the modes vanish at the joints, so the loop
+// closes exactly as the rigid one and θ3, θ4 follow the nominal motion
+// (prescribed like the crank's angle); q keeps (θ3, θ4) first and the modal
+// coordinates η are its only free entries (cut_joint() is −1).
 
 #include <array>
 #include <optional>
@@ -105,8 +109,10 @@ class LinkageModel {
   const JointData& joint(int j) const { return joints_[static_cast<std::size_t>(j)]; }
   /// Bodies placed in order (parents first): the coupler and the rocker.
   const std::array<Placement, 2>& placements() const { return placements_; }
-  /// The joint that closes the loop (always a clearance joint).
+  /// The joint that closes the loop (a clearance joint), −1 for an all-ideal linkage.
   int cut_joint() const { return cut_; }
+  /// No clearance joint: θ3 and θ4 are prescribed by the nominal motion.
+  bool all_ideal() const { return clearance_joints_.empty(); }
   /// The clearance joints in LinkJoint order (the witnesses, the books).
   const std::vector<int>& clearance_joints() const { return clearance_joints_; }
   /// Generalised coordinates n (the crank angle is z[n] in the full set).
@@ -140,7 +146,7 @@ class LinkageModel {
 };
 
 /// Builds and validates once; InputError (naming the [linkage] key) when no
-/// joint has clearance, a clearance is negative or not finite, the contact
+/// joint has clearance and no link is elastic, a clearance is negative or not finite, the contact
 /// stiffness is missing, or a lubricant lacks the bearing's radius or length;
 /// an elastic link needs the rig's [<link>.elastic] table and at most its
 /// `modes` modes.

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <tuple>
 #include <utility>
 
 #include "common/units.hpp"
@@ -13,6 +15,7 @@
 #include "sim/integrate/event_root.hpp"
 #include "sim/linkage/linkage_dynamics.hpp"
 #include "sim/integrate/linkage_integrator.hpp"
+#include "sim/linkage/linkage_scales.hpp"
 
 namespace fourbar {
 
@@ -48,7 +51,8 @@ struct LinkageSimulator::Impl final : LinkageOde {
   LinkageIntegrator integ;
   // scales
   double w = 1, delta = 1, energy = 1, force = 1;
-  std::array<double, kMaxFull> pos_scale{};  // per coordinate
+  LinkageScales scales;  // and its parts below (linkage_scales.hpp)
+  std::array<double, kMaxFull> pos_scale{}, rate_scale{};
   // clock
   double origin_s = 0, t = 0, seg_start = 0, start_abs = 0;
   double absolute(double time) const { return origin_s + time; }
@@ -109,9 +113,16 @@ struct LinkageSimulator::Impl final : LinkageOde {
     c.z_rate(1) = nm.omega4_rad_s + y[n + 1] * delta * w;
     for (int i = 2; i < n; ++i) {
       c.q_offsets(i) = y[i] * pos_scale[static_cast<std::size_t>(i)];
-      c.z_rate(i) = y[n + i] * pos_scale[static_cast<std::size_t>(i)] * w;
+      c.z_rate(i) = y[n + i] * rate_scale[static_cast<std::size_t>(i)];
     }
     c.z_rate(n) = nm.crank.speed_rad_s;
+    if (model.all_ideal()) {
+      c.prescribed.alpha3_rad_s2 = nm.alpha3_rad_s2;
+      c.prescribed.alpha4_rad_s2 = nm.alpha4_rad_s2;
+      const NominalMotion unit = solve_motion(model.rig(), CrankState{nm.crank.angle_rad, 1.0, 0.0});
+      c.prescribed.ratio3 = unit.omega3_rad_s;
+      c.prescribed.ratio4 = unit.omega4_rad_s;
+    }
   }
 
   std::array<double, kJoints> chis(const LinkageWorkspace& ws) const {
@@ -137,10 +148,13 @@ struct LinkageSimulator::Impl final : LinkageOde {
     LinkageWorkspace ws;
     evaluate(time, y, c, ws);
     const NominalMotion& nm = nominal_at(time);
-    for (int i = 0; i < n; ++i) dy[i] = y[n + i] * w;
+    dy[0] = y[n] * w;
+    dy[1] = y[n + 1] * w;
+    for (int i = 2; i < n; ++i)
+      dy[i] = y[n + i] * (rate_scale[static_cast<std::size_t>(i)] / pos_scale[static_cast<std::size_t>(i)]);
     dy[n] = (ws.z_accel(0) - nm.alpha3_rad_s2) / (delta * w);
     dy[n + 1] = (ws.z_accel(1) - nm.alpha4_rad_s2) / (delta * w);
-    for (int i = 2; i < n; ++i) dy[n + i] = ws.z_accel(i) / (pos_scale[static_cast<std::size_t>(i)] * w);
+    for (int i = 2; i < n; ++i) dy[n + i] = ws.z_accel(i) / rate_scale[static_cast<std::size_t>(i)];
     dy[work_index()] = ws.crank_torque_Nm * c.crank.speed_rad_s / energy;
     const auto& joints = model.clearance_joints();
     for (std::size_t k = 0; k < joints.size(); ++k) {
@@ -199,23 +213,10 @@ struct LinkageSimulator::Impl final : LinkageOde {
 
   // ---- starts ----
   void prepare(double t0) {
-    const CrankState c = crank.at(t0);
-    w = std::abs(c.speed_rad_s) > 0 ? std::abs(c.speed_rad_s) : 1.0;
-    delta = model.reference_clearance_m() / model.rig().coupler.length_m;
-    energy = model.energy_scale_J(c.speed_rad_s);
-    if (!(energy > 0)) energy = 1.0;
-    force = model.force_scale_N(c.speed_rad_s);
+    scales = linkage_scales(model, crank.at(t0));
+    std::tie(w, delta, energy, force) = std::tie(scales.w, scales.delta, scales.energy, scales.force);
+    std::tie(pos_scale, rate_scale) = std::tie(scales.position, scales.rate);
     diag.energy_scale_J = energy;
-    pos_scale.fill(1.0);
-    for (const Placement& pl : model.placements())
-      if (pl.offset_index >= 0)
-        pos_scale[static_cast<std::size_t>(pl.offset_index)] = pos_scale[static_cast<std::size_t>(pl.offset_index) + 1] =
-            model.joint(pl.joint).clearance_m;
-    // Modal coordinates: scaled by the largest clearance (a deflection of that size is an event).
-    for (int b = 0; b < kBodies; ++b)
-      if (const ElasticLink* link = model.elastic(b))
-        for (int k = 0; k < link->modes(); ++k)
-          pos_scale[static_cast<std::size_t>(model.modal_index(b) + k)] = model.reference_clearance_m();
     origin_s = start_abs = t0;
     t = seg_start = 0;
   }
@@ -223,10 +224,13 @@ struct LinkageSimulator::Impl final : LinkageOde {
   void begin(const LinkageStart& s) {
     std::vector<double> y(size, 0.0);
     const NominalMotion& nm = nominal_at(0.0);
-    y[0] = angle_between(nm.pose.u3, s.u3) / delta;
-    y[1] = angle_between(nm.pose.u4, s.u4) / delta;
-    y[static_cast<std::size_t>(n)] = (s.omega3_rad_s - nm.omega3_rad_s) / (delta * w);
-    y[static_cast<std::size_t>(n + 1)] = (s.omega4_rad_s - nm.omega4_rad_s) / (delta * w);
+    if (!model.all_ideal()) {
+      y[0] = angle_between(nm.pose.u3, s.u3) / delta;
+      y[1] = angle_between(nm.pose.u4, s.u4) / delta;
+      y[static_cast<std::size_t>(n)] = (s.omega3_rad_s - nm.omega3_rad_s) / (delta * w);
+      y[static_cast<std::size_t>(n + 1)] = (s.omega4_rad_s - nm.omega4_rad_s) / (delta * w);
+    }
+    scale_modal_start(model, scales, s.modal_m, s.modal_rate_m_s, y);
     for (const Placement& pl : model.placements()) {
       if (pl.offset_index < 0) continue;
       const auto k = static_cast<std::size_t>(pl.offset_index);
@@ -234,8 +238,8 @@ struct LinkageSimulator::Impl final : LinkageOde {
       const Vec2 d = pl.offset_sign * s.eccentricity_m[ju], dd = pl.offset_sign * s.eccentricity_rate_m_s[ju];
       y[k] = d.x / pos_scale[k];
       y[k + 1] = d.y / pos_scale[k + 1];
-      y[k + static_cast<std::size_t>(n)] = dd.x / (pos_scale[k] * w);
-      y[k + 1 + static_cast<std::size_t>(n)] = dd.y / (pos_scale[k + 1] * w);
+      y[k + static_cast<std::size_t>(n)] = dd.x / rate_scale[k];
+      y[k + 1 + static_cast<std::size_t>(n)] = dd.y / rate_scale[k + 1];
     }
     integ.reset(*this, 0.0, y);
     LinkageCoordinates c;

@@ -23,11 +23,15 @@ namespace fourbar {
 
 /// A start: link directions and rates, and per joint the pin's offset and
 /// its rate (used for the joints that place a body; the cut joint's
-/// eccentricity follows from the rest).
+/// eccentricity follows from the rest), and the modal coordinates η and
+/// rates of the coupler [0] and rocker [1] (start() refuses a non-zero or
+/// non-finite entry on a rigid link or past its modes). An all-ideal linkage
+/// takes u3, u4 and the rates from the nominal motion whatever is given.
 struct LinkageStart {
   Vec2 u3, u4;
   double omega3_rad_s = 0, omega4_rad_s = 0;
   std::array<Vec2, kJoints> eccentricity_m{}, eccentricity_rate_m_s{};
+  std::array<std::array<double, 4>, 2> modal_m{}, modal_rate_m_s{};
 };
 
 /// One clearance joint's state in a sample.

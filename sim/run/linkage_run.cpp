@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/error.hpp"
 #include "common/number_text.hpp"
 #include "common/units.hpp"
 #include "sim/run/run.hpp"
@@ -18,6 +19,10 @@ std::unique_ptr<CrankMotion> linkage_crank(const Scene& scene) {
 
 LinkageRun run_linkage(const Scene& scene) {
   const LinkageModel model = build_linkage(*scene.rig, scene.linkage.spec);
+  if (model.all_ideal())
+    throw InputError(
+        "[linkage]: no joint has a clearance; give one of crank_coupler_radial_mm, coupler_rocker_radial_mm, "
+        "rocker_ground_radial_mm > 0 (or use model = \"nominal\" for the ideal linkage)");
   const std::unique_ptr<CrankMotion> crank = linkage_crank(scene);
   LinkageRun out;
   const auto rows = static_cast<std::size_t>(scene.revolutions) * static_cast<std::size_t>(scene.samples_per_revolution);
