@@ -229,7 +229,7 @@ TEST(InspectCommand, DaqExportWithAPreambleAboveTheHeader) {
   EXPECT_NE(r.out.find("note: column names on line 4, below 3 preamble lines; sample rate 10000 Hz from line 3; start "
                        "27.11.2026 10:15:32"), std::string::npos) << r.out;
   // acquire reads it with a manifest that names columns only.
-  dir.write("daq.toml", "rig = \"" + kRig + "\"\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
+  dir.write("daq.toml", "rig = \"" + kRig + "\"\nclearance_mm = 0.254\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
   r = run_fourbar("acquire " + rec.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("10000 Hz"), std::string::npos) << r.out;
