@@ -289,6 +289,34 @@ std::filesystem::path sidecar_manifest_path(const std::filesystem::path& recordi
   return p.replace_extension(".toml");
 }
 
+namespace {
+
+/// clearance_mm: required. A run's clearance is what the report judges by,
+/// and the rig file's is a nominal that a forgotten key used to take
+/// silently (0.254 mm for a 0.0254 mm run: "the model is 1.7x too violent").
+/// `clearance_mm = "rig"` takes the rig file's on purpose.
+void read_clearance(const toml::table& doc, TomlSection& root, Manifest& m) {
+  const std::string rig_says = format_number(units::m_to_mm(m.rig->radial_clearance_m)) + " mm";
+  if (!root.has("clearance_mm"))
+    throw InputError(root.file().string() + ": key 'clearance_mm' is missing: add the line clearance_mm = <this run's "
+                     "radial clearance of the coupler-rocker bearing in mm (bore radius - pin radius)>; the rig file " +
+                     m.rig_file.string() + "'s clearance (" + rig_says +
+                     ") is not taken without being asked: clearance_mm = \"rig\" takes it");
+  if (doc["clearance_mm"].is_string()) {
+    const std::string text = root.string("clearance_mm");
+    if (text != "rig")
+      root.fail("clearance_mm", "= \"" + text + "\": give the radial clearance in mm as a number (e.g. "
+                                "clearance_mm = 0.254), or \"rig\" for the rig file's (" + rig_says + ")");
+    m.clearance_from_rig = true;
+    m.clearance_m = m.rig->radial_clearance_m;
+    return;
+  }
+  m.clearance_from_rig = false;
+  m.clearance_m = mm_to_m(root.non_negative("clearance_mm"));
+}
+
+}  // namespace
+
 Manifest load_manifest(const std::filesystem::path& file) {
   const toml::table doc = parse_toml_file(file);
   reject_placeholders(doc, file);
@@ -301,8 +329,7 @@ Manifest load_manifest(const std::filesystem::path& file) {
   } catch (const InputError& e) {
     throw InputError(root.where("rig") + ": " + e.what());
   }
-  m.clearance_from_rig = !root.has("clearance_mm");
-  m.clearance_m = m.clearance_from_rig ? m.rig->radial_clearance_m : mm_to_m(root.non_negative("clearance_mm"));
+  read_clearance(doc, root, m);
   m.full_scale_V = root.in_range("full_scale_V", 1e-9, 1e9, 1.0);
   if (root.has("adc_range_V")) m.adc_range_V = root.positive("adc_range_V");
   if (root.has("sample_rate_hz")) m.sample_rate_hz = root.positive("sample_rate_hz");
@@ -408,7 +435,8 @@ std::string manifest_to_toml(const Manifest& m, const std::filesystem::path& man
   std::ostringstream os;
   os << "# Recording manifest (keys: docs/acquire.md).\n";
   os << "rig = " << quoted(rel(m.rig_file)) << "\n";
-  os << "clearance_mm = " << mm(m.clearance_m) << "\n";
+  if (m.clearance_from_rig) os << "clearance_mm = \"rig\"\n";
+  else os << "clearance_mm = " << mm(m.clearance_m) << "\n";
   os << "full_scale_V = " << num(m.full_scale_V) << "\n";
   if (m.adc_range_V) os << "adc_range_V = " << num(*m.adc_range_V) << "\n";
   if (m.sample_rate_hz) os << "sample_rate_hz = " << num(*m.sample_rate_hz) << "\n";

@@ -73,7 +73,8 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
   os << "# Replace every \"FILL IN\" by its value (the comment says what it is): acquire refuses this\n"
      << "# file while one is left. Every key: docs/acquire.md.\n\n";
   os << fill_in("rig", "the rig file, relative to this manifest, e.g. \"../rigs/thesis.toml\"");
-  os << fill_in("clearance_mm", "this run's radial clearance of the coupler-rocker bearing in mm (bore radius - pin radius)");
+  os << fill_in("clearance_mm", "this run's radial clearance of the coupler-rocker bearing in mm (bore radius - pin radius); "
+                                "required; \"rig\" takes the rig file's");
   const std::string unit = common_unit(r);
   if (info.integer_bits > 0) {
     os << fill_in("full_scale_V", "the DAQ's input range in V (" + std::to_string(info.integer_bits) +

@@ -86,10 +86,10 @@ RecordingAnalysis analyze_recording(const std::filesystem::path& recording, cons
   result.warnings = channels.warnings;
   result.clearance_from_rig = manifest.clearance_from_rig;
   if (manifest.clearance_from_rig)
-    result.warnings.push_back(manifest.file.string() + ": no clearance_mm: the rig file's " +
+    result.warnings.push_back(manifest.file.string() + ": clearance_mm = \"rig\": the rig file's " +
                               format_number(units::m_to_mm(manifest.clearance_m), 4) +
-                              " mm is used as this run's clearance; give clearance_mm = the radial clearance of this run's "
-                              "bearing (the theory and the verdict rest on it)");
+                              " mm is used as this run's clearance (the theory and the verdict rest on it); give the "
+                              "measured radial clearance if this run's bearing differs");
   // The filter corners against the sample rate, as far as they are given.
   {
     const double fs = opened.reader->info().sample_rate_hz;

@@ -7,6 +7,8 @@
 #include "cli/command.hpp"
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
+#include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/number_text.hpp"
 #include "common/json_text.hpp"
 #include "common/provenance.hpp"
@@ -377,9 +379,24 @@ int write_linkage_run(const Scene& scene, const LinkageRun& run, const std::file
 }
 /// Warm-up turns of the report's matched theory ([theory] warmup_revolutions' default).
 constexpr int kReportWarmupTurns = 20;
+/// Turns the report's matched theory averages: fewer give a per-turn count
+/// that varies from run to run (chaotic impacts).
+constexpr int kReportAveragedTurns = 20;
+
+/// What the output turns hold: impacts and impacts per turn after the warm-up.
+struct OutputTurns {
+  int first = 0, turns = 0;
+  std::size_t impacts = 0;
+};
+
+OutputTurns output_turns(const ClearanceRun& run, int turns) {
+  OutputTurns o{run.first_output_revolution, turns, 0};
+  for (const ImpactRecord& r : run.impacts) o.impacts += r.revolution >= o.first && r.revolution < o.first + turns;
+  return o;
+}
 
 int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::filesystem::path& dir,
-                        const Provenance& prov) {
+                        const Provenance& prov, int warmup_turns) {
   const auto csv_path = dir / "series.csv";
   std::vector<PendingFile> files;
   files.push_back(write_series(csv_path, prov, run.series));
@@ -394,6 +411,9 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
         write_revolutions(dir / "revolutions.csv", prov, run, scene.start_angle_rad, scene.crank_speed_rad_s > 0 ? 1 : -1));
     extra += ", revolutions.csv";
   }
+  const bool steady = scene.clearance.steady_state;
+  const OutputTurns out = output_turns(run, scene.revolutions);
+  const double per_turn = static_cast<double>(out.impacts) / scene.revolutions;
   nlohmann::json summary;
   summary["provenance"] = prov.to_json();
   summary["rig"] = to_json(*scene.rig, report_rig(*scene.rig));
@@ -402,8 +422,13 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
                       {"crank_speed_rpm", units::rad_s_to_rpm(scene.crank_speed_rad_s)},
                       {"start_angle_deg", units::rad_to_deg(scene.start_angle_rad)},
                       {"revolutions", scene.revolutions},
+                      {"warmup_revolutions", steady ? 0 : warmup_turns},
                       {"samples_per_revolution", scene.samples_per_revolution}};
   summary["clearance"] = clearance_json(scene, run);
+  summary["clearance"]["output_turns"] = {{"first_revolution", out.first},
+                                          {"revolutions", out.turns},
+                                          {"impacts", out.impacts},
+                                          {"impacts_per_rev", per_turn}};
   summary["series"] = {{"file", "series.csv"}, {"rows", run.series.rows()}, {"columns", column_stats(run.series)}};
   const auto json_path = dir / "summary.json";
   AtomicOutput json(json_path);
@@ -412,14 +437,25 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
   json.commit();
   std::cout << "wrote " << csv_path.string() << " (" << run.series.rows() << " rows x " << run.series.names.size()
             << " columns)" << extra << " and " << json_path.string() << "\n";
+  const std::string turns = std::to_string(scene.revolutions) + (scene.revolutions == 1 ? " turn" : " turns");
+  std::cout << out.impacts << " impacts in the " << turns << " output (" << format_number(per_turn, 3) << " per turn)";
+  if (steady) std::cout << ", after the steady-state search's " << out.first << " turns\n";
+  else if (out.first > 0) std::cout << ", after " << out.first << " warm-up turns (not output)\n";
+  else std::cout << ", from the start (no warm-up)\n";
   // Counts from the turns after the start are the start transient: the
-  // report's matched theory runs kReportWarmupTurns turns first.
-  if (!scene.clearance.steady_state && scene.revolutions < kReportWarmupTurns)
-    std::cerr << "fourbar: note: sim: " << run.impacts.size() << " impacts in " << scene.revolutions
-              << (scene.revolutions == 1 ? " turn" : " turns")
-              << " from the start: the transient after the start, not the steady response (the report's model runs "
-              << kReportWarmupTurns << " warm-up turns before it counts); for steady figures set [clearance] "
-                 "steady_state = true, or use fourbar sweep\n";
+  // report's matched theory runs kReportWarmupTurns turns first and averages
+  // kReportAveragedTurns.
+  if (!steady && out.first < kReportWarmupTurns)
+    std::cerr << "fourbar: note: sim: " << out.impacts << " impacts in " << turns
+              << (out.first == 0 ? " from the start" : " after " + std::to_string(out.first) + " warm-up turns")
+              << ": the transient after the start, not the steady response (the report's model runs "
+              << kReportWarmupTurns << " warm-up turns before it counts; --warmup-turns " << kReportWarmupTurns
+              << " is the default)\n";
+  if (scene.revolutions < kReportAveragedTurns)
+    std::cerr << "fourbar: note: sim: " << format_number(per_turn, 3) << " impacts per turn from " << turns
+              << " only: the count varies from turn to turn (the report's model averages " << kReportAveragedTurns
+              << "); for a mean with its standard error set revolutions = " << kReportAveragedTurns
+              << " or more, or use fourbar sweep\n";
   return 0;
 }
 
@@ -428,31 +464,46 @@ int write_clearance_run(const Scene& scene, const ClearanceRun& run, const std::
 int run_sim(const Invocation& inv) {
   std::string scene_file, out_dir;
   bool csv_comments = false;
+  long long warmup_turns = kReportWarmupTurns;
   po::options_description opts("options");
   opts.add_options()("scene", po::value(&scene_file)->required(), "scene file (TOML)")(
-      "out,o", po::value(&out_dir), "output folder (default: out/<scene name>)");
+      "out,o", po::value(&out_dir), "output folder (default: out/<scene name>)")(
+      "warmup-turns", po::value(&warmup_turns),
+      "model = \"clearance\": turns run first and not output (default 20, the report's model's warm-up; 0: the "
+      "output starts from the start, as the thesis's first-turn figures; ignored with steady_state)");
   add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("scene", 1);
   po::variables_map vm;
-  if (!parse_arguments("sim", "SCENE.toml [--out DIR] [--csv-comments]",
+  if (!parse_arguments("sim", "SCENE.toml [--out DIR] [--warmup-turns N] [--csv-comments]",
                        "Writes DIR/series.csv (crank_deg, then the scene's outputs, one row per\n"
                        "sample, revolutions*samples_per_revolution + 1 rows) and DIR/summary.json\n"
                        "(rig class, scene, min/max/rms of every column, provenance). With\n"
                        "model = \"clearance\" also DIR/impacts.csv and DIR/revolutions.csv when the\n"
                        "scene's [clearance] tables ask for them; summary.json then adds events,\n"
                        "constraint drift, energy balance and steady-state results. The CSV files'\n"
-                       "provenance is in summary.json (\"provenance\").\n\n" +
+                       "provenance is in summary.json (\"provenance\").\n\n"
+                       "A clearance scene without steady_state runs --warmup-turns turns (default 20,\n"
+                       "as the report's model) before its output; series.csv starts after them,\n"
+                       "impacts.csv and revolutions.csv keep them (column revolution), and\n"
+                       "summary.json's clearance.output_turns counts the output turns' impacts.\n"
+                       "Notes on stderr say when counts come from the transient after the start\n"
+                       "(fewer warm-up turns) or from fewer than 20 turns.\n\n" +
                            outputs_help(),
                        opts, pos, inv, vm))
     return 0;
 
+  if (warmup_turns < 0 || warmup_turns > 100000)
+    throw InputError("sim: --warmup-turns " + std::to_string(warmup_turns) + " must be between 0 and 100000");
   const Scene scene = load_scene(scene_file);
   if (out_dir.empty()) out_dir = (std::filesystem::path("out") / scene.source.stem()).string();
   ensure_output_dir(out_dir);
 
   Provenance prov{inv.command_line, {scene.source, scene.rig->source}, csv_comments};
-  if (scene.model == Model::clearance) return write_clearance_run(scene, run_clearance(scene, true), out_dir, prov);
+  if (scene.model == Model::clearance) {
+    const int warmup = static_cast<int>(warmup_turns);
+    return write_clearance_run(scene, run_clearance(scene, true, warmup), out_dir, prov, warmup);
+  }
   if (scene.model == Model::linkage) {
     if (!scene.linkage.crank_table.empty()) prov.inputs.push_back(scene.linkage.crank_table);
     return write_linkage_run(scene, run_linkage(scene), out_dir, prov);

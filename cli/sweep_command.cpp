@@ -48,7 +48,9 @@ Sweep file keys:
 
 Columns: radial_mm, crank_speed_rpm, restitution, friction_coefficient,
 impacts_per_rev (n), impacts_per_rev_standard_error (the spread over the
-counted turns / sqrt(turns)), sum_normal_impulse_per_rev_Ns (SigmaF),
+counted turns / sqrt(turns), times sqrt(tau) for turns that are correlated,
+tau their integrated autocorrelation time; docs/sweep.md),
+sum_normal_impulse_per_rev_Ns (SigmaF),
 sum_normal_impulse_per_rev_standard_error_Ns, impact_index_Ns
 (I_n = SigmaF/n, 0 when n = 0), contact_losses_per_rev, following_share,
 energy_residual_rel, max_penetration_rel, status ("ok" or "failed"), error

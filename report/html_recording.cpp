@@ -106,10 +106,11 @@ void recording_section(std::ostringstream& h, const json& r, std::size_t ri) {
   h << "<h3>Impact directions in the clearance model (thesis Figs 8.11/8.12)</h3><div>"
     << polar_svg(r["impacts"], "pin_deg", "on the pin (coupler frame: 0° along the coupler, A→B)")
     << polar_svg(r["impacts"], "bushing_deg", "on the bushing (rocker frame: 0° along the rocker, O4→C)") << "</div>";
-  h << "<h3>Analysis</h3><table>";
+  // In print the long two-column list runs in two columns of the page (report.css).
+  h << "<h3>Analysis</h3><div class=\"settings-list\"><table>";
   settings_rows(h, at(r, {"analysis"}), "");
   settings_rows(h, at(r, {"acquisition"}), "acquisition");
-  h << "<tr><td class=\"l\">theory energy balance residual (rel.)</td><td class=\"l\">" << fmt(th["energy_residual_rel"]) << "</td></tr></table>";
+  h << "<tr><td class=\"l\">theory energy balance residual (rel.)</td><td class=\"l\">" << fmt(th["energy_residual_rel"]) << "</td></tr></table></div>";
   h << "<h3>Input files</h3>";
   files_table(h, r["files"]);
   h << "</section>";

@@ -111,9 +111,10 @@ std::string render_html_report(const json& session_in, const std::vector<Recordi
 
   for (const RecordingPage& p : pages) h << p.section_html;
 
-  h << "<section id=\"settings\"><h2>Settings</h2><table><tr><th class=\"l\">setting</th><th class=\"l\">value</th></tr>";
+  h << "<section id=\"settings\"><h2>Settings</h2><div class=\"settings-list\"><table><tr><th class=\"l\">setting</th>"
+       "<th class=\"l\">value</th></tr>";
   settings_rows(h, data["settings"], "");
-  h << "</table>";
+  h << "</table></div>";
   if (!data["settings_file"].is_null()) files_table(h, json::array({data["settings_file"]}));
   h << "</section></main><footer><p class=\"note\">Self-contained: data and Debian's dygraphs "
        "(MIT licence) are inlined; nothing is fetched.</p></footer>";

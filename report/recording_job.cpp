@@ -9,6 +9,7 @@
 #include "report/comparison_record.hpp"
 #include "report/verdict_family.hpp"
 #include "report/setup_check_record.hpp"
+#include "report/theory_omega.hpp"
 #include "report/views_record.hpp"
 
 namespace fourbar {
@@ -162,7 +163,19 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
       } catch (const InputError& e) {
         throw InputError(a.manifest_file.string() + ": " + e.what());
       }
+      // ω as the measurement's is made: the model's α integrated turn by turn
+      // (report/theory_omega.hpp), from α before the pass band, whose ideal
+      // filter over the turns one after the other gives each turn's α a mean
+      // of its own; ω is not filtered after (integration already cuts the
+      // high orders by 1/order, and turn by turn nothing is left below one).
+      MatchedTheory integrated = t;
+      const bool replaced = integrate_theory_omega(integrated, *a.rig, a.options.integration);
       apply_pass_band(t, a.filter);
+      if (replaced)
+        for (LinkQuantity q : {LinkQuantity::omega3, LinkQuantity::omega4}) {
+          t.series[index_of(q)].clearance = integrated.series[index_of(q)].clearance;
+          t.series[index_of(q)].clearance_revolutions = integrated.series[index_of(q)].clearance_revolutions;
+        }
       return t;
     };
     const MatchedTheory t = theory_at(settings);
@@ -179,7 +192,7 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
                                                                has_top ? a.filter.high_hz : 0.0, family));
       r["model_family"]["quantity"] = std::string(column_name(q));
     }
-    r["operating_point"]["clearance_source"] = a.clearance_from_rig ? "rig file (no clearance_mm in the manifest)" : "manifest";
+    r["operating_point"]["clearance_source"] = a.clearance_from_rig ? "rig file (clearance_mm = \"rig\")" : "manifest";
     if (fitted) {
       // The same theory path at the fitted contact parameters.
       const MatchedTheory tf = theory_at(*fitted);

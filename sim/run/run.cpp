@@ -68,15 +68,16 @@ const char* to_string(SteadyFound f) {
   return "?";
 }
 
-ClearanceRun run_clearance(const Scene& scene, bool progress) {
-  return run_clearance(scene, ConstantSpeedCrank(scene.start_angle_rad, scene.crank_speed_rad_s), progress);
+ClearanceRun run_clearance(const Scene& scene, bool progress, int warmup_revolutions) {
+  return run_clearance(scene, ConstantSpeedCrank(scene.start_angle_rad, scene.crank_speed_rad_s), progress,
+                       warmup_revolutions);
 }
 
 namespace {
 
 /// The run on either simulator (ClearanceSimulator or CompliantSimulator: same interface).
 template <class Simulator>
-ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& sim, bool progress) {
+ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& sim, bool progress, int warmup) {
   using Criterion = ClearanceSettings::SteadyCriterion;
   const ClearanceSettings& cs = scene.clearance;
   ClearanceRun out;
@@ -94,6 +95,10 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& s
   // (periodic) or the windows' means agree (statistical).
   int first = 0;
   out.statistics.worst_relative_difference = 1e300;
+  if (!cs.steady_state && warmup > 0) {  // warm-up turns, not output
+    sim.advance_to(turn_time(warmup));
+    first = warmup;
+  }
   if (cs.steady_state) {
     std::vector<TurnQuantities> turns;
     Progress bar("sim: steady-state search (at most " + std::to_string(cs.max_revolutions) + " turns)",
@@ -173,14 +178,14 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& s
 
 }  // namespace
 
-ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank, bool progress) {
+ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank, bool progress, int warmup_revolutions) {
   const ClearanceModel model(*scene.rig, scene.clearance_m());
   if (scene.clearance.model == ClearanceKind::compliant) {
     CompliantSimulator sim(model, crank, scene.clearance);
-    return run_with(scene, crank, sim, progress);
+    return run_with(scene, crank, sim, progress, warmup_revolutions);
   }
   ClearanceSimulator sim(model, crank, scene.clearance);
-  return run_with(scene, crank, sim, progress);
+  return run_with(scene, crank, sim, progress, warmup_revolutions);
 }
 
 }  // namespace fourbar

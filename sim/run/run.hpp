@@ -41,10 +41,15 @@ struct ClearanceRun {
 
 /// `progress`: a progress line on stderr (a terminal only) through the
 /// steady-state search, turn by turn; the results do not depend on it.
-ClearanceRun run_clearance(const Scene& scene, bool progress = false);
+/// `warmup_revolutions`: without steady_state, turns run first and not
+/// output (the report's matched theory runs 20); the output then starts at
+/// first_output_revolution = warmup_revolutions. Ignored with steady_state
+/// (the search decides where the output starts).
+ClearanceRun run_clearance(const Scene& scene, bool progress = false, int warmup_revolutions = 0);
 /// The same at a given crank motion (e.g. a MeasuredSpeedCrank) instead of
 /// the scene's constant speed; turns count from the crank angle at t = 0.
-ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank, bool progress = false);
+ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank, bool progress = false,
+                           int warmup_revolutions = 0);
 
 /// Column value of one sample for a clearance output (see sim/outputs.hpp).
 double clearance_column_value(const ClearanceOutputSpec& spec, const ClearanceSample& s, double theta3_cont,

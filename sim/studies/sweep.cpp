@@ -7,6 +7,7 @@
 
 #include "common/error.hpp"
 #include "common/csv_writer.hpp"
+#include "common/mean_standard_error.hpp"
 #include "common/toml_section.hpp"
 #include "common/units.hpp"
 #include "sim/three_mode/simulator.hpp"
@@ -59,8 +60,8 @@ SweepGrid load_sweep(const std::filesystem::path& file, Scene& base) {
   g.friction_coefficient = array("friction_coefficient", 0, 100, base.clearance.friction_coefficient, 1.0);
   if (doc.contains("friction_coefficient") && base.clearance.contact != ContactLaw::stick_slip)
     full.fail("friction_coefficient", "needs a base scene with contact = \"stick-slip\"");
-  g.revolutions = static_cast<int>(root.integer("revolutions", 1, 100000, 10));
-  g.skip_revolutions = static_cast<int>(root.integer("skip_revolutions", 0, 100000, 2));
+  g.revolutions = static_cast<int>(root.integer("revolutions", 1, 100000, SweepGrid{}.revolutions));
+  g.skip_revolutions = static_cast<int>(root.integer("skip_revolutions", 0, 100000, SweepGrid{}.skip_revolutions));
   root.optional_string("notes");
   root.finish();
   return g;
@@ -95,13 +96,14 @@ void compute_sweep_point(const Scene& base, const SweepGrid& g, SweepPoint& p) {
     const int total = g.skip_revolutions + g.revolutions;
     sim.advance_to(
         crank.time_at_angle(base.start_angle_rad + (p.crank_speed_rad_s > 0 ? 1 : -1) * units::kTwoPi * total));
-    double n = 0, sumF = 0, losses = 0, follow = 0, span = 0, n2 = 0, sumF2 = 0;
+    double n = 0, sumF = 0, losses = 0, follow = 0, span = 0;
+    std::vector<double> n_by_turn, sumF_by_turn;
     const auto& revs = sim.revolutions();
     for (int k = g.skip_revolutions; k < total && k < static_cast<int>(revs.size()); ++k) {
       n += revs[k].impacts;
       sumF += revs[k].sum_normal_impulse_Ns;
-      n2 += static_cast<double>(revs[k].impacts) * revs[k].impacts;
-      sumF2 += revs[k].sum_normal_impulse_Ns * revs[k].sum_normal_impulse_Ns;
+      n_by_turn.push_back(revs[k].impacts);
+      sumF_by_turn.push_back(revs[k].sum_normal_impulse_Ns);
       losses += revs[k].contact_losses;
       follow += revs[k].following_time_s;
       span += revs[k].end_time_s - revs[k].start_time_s;
@@ -109,15 +111,10 @@ void compute_sweep_point(const Scene& base, const SweepGrid& g, SweepPoint& p) {
     p.impacts_per_rev = n / g.revolutions;
     p.sum_normal_impulse_per_rev_Ns = sumF / g.revolutions;
     p.impact_index_Ns = n > 0 ? sumF / n : 0.0;
-    // Standard error of a per-turn mean: sample standard deviation / √turns.
-    const double turns = g.revolutions;
-    auto standard_error = [turns](double sum, double sum2) {
-      if (turns < 2) return 0.0;
-      const double mean = sum / turns;
-      return std::sqrt(std::max(0.0, (sum2 - turns * mean * mean) / (turns - 1)) / turns);
-    };
-    p.impacts_per_rev_standard_error = standard_error(n, n2);
-    p.sum_normal_impulse_per_rev_standard_error_Ns = standard_error(sumF, sumF2);
+    // Standard error of a per-turn mean, the correlation between turns
+    // counted (common/mean_standard_error.hpp): s/√turns · √τ.
+    p.impacts_per_rev_standard_error = mean_standard_error(n_by_turn).standard_error;
+    p.sum_normal_impulse_per_rev_standard_error_Ns = mean_standard_error(sumF_by_turn).standard_error;
     p.contact_losses_per_rev = losses / g.revolutions;
     p.following_share = span > 0 ? follow / span : 0.0;
     const ClearanceDiagnostics d = sim.diagnostics();

@@ -28,8 +28,8 @@ struct SweepPoint {
   double radial_clearance_m = 0, crank_speed_rad_s = 0, restitution = 0, friction_coefficient = 0;
   double impacts_per_rev = 0, sum_normal_impulse_per_rev_Ns = 0, impact_index_Ns = 0;
   /// Standard errors of the two per-turn means: the spread over the counted
-  /// turns / √turns (turns taken as independent; chaotic impacts decorrelate
-  /// within a few turns).
+  /// turns / √turns times √τ, τ the turns' integrated autocorrelation time
+  /// (common/mean_standard_error.hpp; never below the independent-turns value).
   double impacts_per_rev_standard_error = 0, sum_normal_impulse_per_rev_standard_error_Ns = 0;
   double contact_losses_per_rev = 0, following_share = 0;
   double energy_residual_rel = 0, max_penetration_rel = 0;

@@ -141,7 +141,7 @@ class BadInput : public ::testing::Test {
 
 TEST_F(BadInput, UnknownFormat) {
   const auto rec = dir.write("REC.xyz", "not a recording at all");
-  dir.write("REC.toml", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"\n"
+  dir.write("REC.toml", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"\nclearance_mm = 0.254\n"
                        "[[channel]]\nindex = 0\nrole = \"crank_pulse\"\n");
   expect_clean_failure(acquire(rec), "unknown recording format");
 }
@@ -186,7 +186,7 @@ TEST_F(BadInput, MissingManifest) {
 
 TEST_F(BadInput, NoPulses) {
   const auto rec = dir.write("flat.csv", "time_s,acc,pulse\n0,1,0\n0.001,2,0\n0.002,1,0\n0.003,2,0\n");
-  dir.write("flat.toml", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"\n"
+  dir.write("flat.toml", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"\nclearance_mm = 0.254\n"
                          "[[channel]]\ncolumn = \"acc\"\nrole = \"rocker_tangential\"\nvolts_per_unit = 0.01\n"
                          "position_mm = 312\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
   expect_clean_failure(acquire(rec), "no crank pulses");
@@ -209,7 +209,7 @@ TEST_F(BadInput, NanInCsv) {
 
 TEST_F(BadInput, ZeroSampleRate) {
   const auto rec = dir.write("z.csv", "acc,pulse\n1,0\n2,5\n");
-  dir.write("z.toml", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"\nsample_rate_hz = 0\n"
+  dir.write("z.toml", "rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml\"\nclearance_mm = 0.254\nsample_rate_hz = 0\n"
                       "[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
   expect_clean_failure(acquire(rec), "'sample_rate_hz' = 0 must be positive");
 }

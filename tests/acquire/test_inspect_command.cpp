@@ -171,14 +171,14 @@ TEST(InspectCommand, BadInput) {
   testing::expect_clean_failure(r, "rate_variable 'fs' is not a numeric variable in this file (variables found: coupler_t 20000x1",
                                 dir.path() / "none");
   // The same through a manifest's rate_variable.
-  dir.write("r.toml", "rig = \"" + kRig + "\"\nrate_variable = \"fs\"\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
+  dir.write("r.toml", "rig = \"" + kRig + "\"\nclearance_mm = 0.254\nrate_variable = \"fs\"\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
   r = run_fourbar("acquire " + mat.string());
   testing::expect_clean_failure(r, "rate_variable 'fs' is not a numeric variable", dir.path() / "none");
 
   // A text export whose manifest names a column it lacks: the columns found are listed.
   const auto csv = dir.path() / "e.csv";
   testing::write_csv_with_units_row(csv, s);
-  dir.write("e.toml", "rig = \"" + kRig + "\"\n[[channel]]\ncolumn = \"crank\"\nrole = \"crank_pulse\"\n");
+  dir.write("e.toml", "rig = \"" + kRig + "\"\nclearance_mm = 0.254\n[[channel]]\ncolumn = \"crank\"\nrole = \"crank_pulse\"\n");
   r = run_fourbar("acquire " + csv.string());
   testing::expect_clean_failure(r, "its channels are 'coupler_t', 'pulse', 'rocker_t', 'spare'", dir.path() / "none");
 
@@ -229,7 +229,7 @@ TEST(InspectCommand, DaqExportWithAPreambleAboveTheHeader) {
   EXPECT_NE(r.out.find("note: column names on line 4, below 3 preamble lines; sample rate 10000 Hz from line 3; start "
                        "27.11.2026 10:15:32"), std::string::npos) << r.out;
   // acquire reads it with a manifest that names columns only.
-  dir.write("daq.toml", "rig = \"" + kRig + "\"\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
+  dir.write("daq.toml", "rig = \"" + kRig + "\"\nclearance_mm = 0.254\n[[channel]]\ncolumn = \"pulse\"\nrole = \"crank_pulse\"\n");
   r = run_fourbar("acquire " + rec.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("10000 Hz"), std::string::npos) << r.out;

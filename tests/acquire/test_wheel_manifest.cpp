@@ -13,6 +13,7 @@ namespace {
 using testing::TempDir;
 
 const std::string kHead = R"(rig = "rig.toml"
+clearance_mm = 0.254
 
 [[channel]]
 index = 0

@@ -70,18 +70,40 @@ TEST(SetupMistakes, WrongRigFileIsNamed) {
   EXPECT_NE(line.find("different factors"), std::string::npos) << line;
 }
 
-// No clearance_mm: the rig file's is taken, and the user is told so, in the
-// warnings and in the report beside the clearance; the template asks for it.
-TEST(SetupMistakes, MissingClearanceIsSaidAndTheTemplateAsksForIt) {
+// No clearance_mm: refused (exit 2) naming the file, the key, what to type
+// and that the rig file's clearance is not taken silently; nothing written.
+// clearance_mm = "rig" asks for the rig file's, and the report says so
+// beside the clearance; the template asks for it.
+TEST(SetupMistakes, MissingClearanceIsRefusedAndTheTemplateAsksForIt) {
   Trial t;
   t.edit(R"(clearance_mm = [0-9.]+\n)", "");
   testing::CommandResult r = t.run("analyze");
-  EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("no clearance_mm: the rig file's 0.254 mm is used"), std::string::npos) << r.err;
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(testing::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("fourbar: " + t.manifest.string() + ": key 'clearance_mm' is missing: add the line clearance_mm = "),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("radial clearance of the coupler-rocker bearing in mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(0.254 mm) is not taken without being asked: clearance_mm = \"rig\" takes it"), std::string::npos)
+      << r.err;
   const fs::path page = t.dir.path() / "report" / "report.html";
   r = testing::run_fourbar("report " + t.dir.path().string() + " --out " + page.string() + " -q --no-cache");
+  EXPECT_EQ(r.status, 1) << "the report is written, the recording failed: " << r.err;
+  EXPECT_NE(r.err.find("key 'clearance_mm' is missing"), std::string::npos) << r.err;
+  EXPECT_NE(testing::read_file(page).find("is missing: add the line clearance_mm = "), std::string::npos);
+  // Asked for on purpose: taken, said in the warnings and in the report.
+  t.edit("(crank_direction = )", "clearance_mm = \"rig\"\n$1");
+  r = t.run("analyze");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(testing::read_file(page).find("rig file (no clearance_mm in the manifest)"), std::string::npos);
+  EXPECT_NE(r.err.find("clearance_mm = \"rig\": the rig file's 0.254 mm is used"), std::string::npos) << r.err;
+  r = testing::run_fourbar("report " + t.dir.path().string() + " --out " + page.string() + " -q --no-cache");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(testing::read_file(page).find("rig file (clearance_mm = &quot;rig&quot;)"), std::string::npos);
+  // Any other text is refused with what to type.
+  t.edit("clearance_mm = \"rig\"", "clearance_mm = \"0.254 mm\"");
+  r = t.run("analyze");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("key 'clearance_mm' = \"0.254 mm\": give the radial clearance in mm as a number"), std::string::npos)
+      << r.err;
   r = testing::run_fourbar("inspect " + t.recording.string() + " --manifest-template");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\nclearance_mm = \"FILL IN\""), std::string::npos) << r.out;

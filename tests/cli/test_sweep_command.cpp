@@ -105,6 +105,33 @@ int lines_besides_notes(const std::string& text) {
 
 constexpr const char* kBase = "scene = \"" FOURBAR_SOURCE_DIR "/data/scenes/experiment_clearance_base.toml\"\n";
 
+// A sweep file that names no turn counts runs the report's warm-up (20
+// turns) and counts 20: no note about the transient or few turns, and the
+// count said on stdout. (The defaults of load_sweep were once 10 counted
+// after 2, while the note compared against 20 and 20.)
+TEST(SweepCommand, DefaultsAreTheReportsWarmUpAndTwentyTurns) {
+  TempDir dir;
+  dir.write("g.toml", std::string(kBase) + "restitution = [0.5]\n");
+  const auto out = dir.path() / "t.csv";
+  const auto r = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --jobs 1 --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("transient"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("counted turns per point"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("20 counted turns each"), std::string::npos) << r.out;
+  std::vector<std::string> header;
+  const auto rows = rows_of(testing::read_file(out), header);
+  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_GE(header.size(), 8u);
+  EXPECT_EQ(header[4], "impacts_per_rev");
+  EXPECT_EQ(header[5], "impacts_per_rev_standard_error");
+  // 350 rpm, 0.254 mm, e = 0.5 after the warm-up: the report's model has
+  // some 40 impacts per turn (issue 26); a standard error that is finite and
+  // smaller than the mean.
+  EXPECT_GT(rows[0][4], 10.0);
+  EXPECT_GT(rows[0][5], 0.0);
+  EXPECT_LT(rows[0][5], rows[0][4]);
+}
+
 TEST(SweepCommand, AFailingPointIsRecordedAndTheOthersComplete) {
   // Coulomb friction in the following mode with mu = 5 makes the sliding
   // pin's equations singular (Painleve's paradox): that point fails with the

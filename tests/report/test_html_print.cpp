@@ -14,12 +14,15 @@
 // before the right margin on any page.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -238,11 +241,12 @@ TEST(HtmlPrint, SampleSessionDrawsAndPrintsOnA4AndLetterInHeadlessChromium) {
   for (const char* id : {"sev-clearance", "sev-clearance-sim", "sev-speed", "sev-speed-sim", "r0-omega3_rad_s", "r3-orders"})
     EXPECT_NE(dom.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
   EXPECT_EQ(dom.find("class=\"chart-table\""), std::string::npos);  // two speeds and two clearances: charts
-  // The full print: at most 3 pages per recording and 2 for the session's
-  // own sections; the short print (summary, verdicts, one overlay per
-  // recording) within 4 pages, what a supervisor reads.
+  // The full print: at most 3 pages per recording, the session's own
+  // sections (first page, summary, severity, fit, settings) included; the
+  // short print (summary, verdicts, one overlay per recording) within 4
+  // pages, what a supervisor reads.
   for (const Paper& paper : {kA4, kLetter}) {
-    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 1 + 4), 2u + 3u * 4u) << paper.name;
+    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 1 + 4), 3u * 4u) << paper.name;
     EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 1, "#print-short"), 4u) << paper.name;
   }
 }
@@ -262,7 +266,9 @@ TEST(HtmlPrint, OneRecordingSessionDrawsAndPrintsOnA4AndLetterInHeadlessChromium
   EXPECT_NE(dom.find("class=\"chart-table\""), std::string::npos);
   EXPECT_NE(dom.find("One operating point in this session"), std::string::npos);
   for (const Paper& paper : {kA4, kLetter}) {
-    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 2), 2u + 3u) << paper.name;
+    // Measured: 4 pages on A4 and Letter (the session's first page, then the
+    // recording's 2.3); the issue's 3 for a one-recording session is not met.
+    EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 2), 4u) << paper.name;
     EXPECT_LE(check_printed(t->chromium, t->pdftoppm, page, paper, 1, "#print-short"), 2u) << paper.name;
   }
 }
@@ -308,6 +314,57 @@ TEST(HtmlPrint, FirstPageHasTheSessionRecordAndTablesNoInternalKeys) {
   ASSERT_NE(summary, std::string::npos);
   EXPECT_LT(html.find("a (verdict)", summary), html.find("<th>a time</th>", summary)) << "the verdict's a before the diagnostics";
   EXPECT_LT(html.find("0.841 ± 0.12 (scatter)", summary), html.find("</table>", summary));
+}
+
+// The ω overlays (issue 26): the model's band is made as the measurement's
+// (its α integrated turn by turn), so on the sample session, whose
+// recordings the same model made, the two bands have the same width: RMS
+// over the turn of the std over turns, model against measured. Measured
+// 0.8–1.1 (about 5 with the model's sampled, band-filtered ω, as filed;
+// 4.6–17 with its α integrated after the pass band).
+TEST(HtmlPrint, ModelOmegaBandIsAsWideAsTheMeasuredOne) {
+  testing::TempDir dir;
+  report(kSample, dir.path());
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "series")) {
+    const std::string name = entry.path().filename().string();
+    if (!name.ends_with("mm.csv")) continue;  // not _impacts or _orders
+    ++files;
+    std::istringstream in(testing::read_file(entry.path()));
+    std::string line, header;
+    while (std::getline(in, header) && header.rfind("#", 0) == 0) {}
+    std::vector<std::string> cols;
+    {
+      std::istringstream h(header);
+      for (std::string c; std::getline(h, c, ',');) cols.push_back(c);
+    }
+    for (const std::string q : {"omega3", "omega4"}) {
+      const auto at = [&](const std::string& c) {
+        return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), c) - cols.begin());
+      };
+      const std::size_t im = at(q + "_measured_std_rad_s"), ic = at(q + "_clearance_std_rad_s");
+      ASSERT_LT(im, cols.size()) << header;
+      ASSERT_LT(ic, cols.size()) << header;
+      double sm = 0, sc = 0;
+      std::size_t rows = 0;
+      std::istringstream body(in.str());
+      std::getline(body, line);
+      while (std::getline(body, line)) {
+        if (line.empty() || line[0] == '#' || line.rfind("crank_deg", 0) == 0) continue;
+        std::vector<double> v;
+        std::istringstream l(line);
+        for (std::string c; std::getline(l, c, ',');) v.push_back(c.empty() ? 0.0 : std::stod(c));
+        if (v.size() <= std::max(im, ic)) continue;
+        sm += v[im] * v[im], sc += v[ic] * v[ic], ++rows;
+      }
+      ASSERT_GT(rows, 100u) << name;
+      const double ratio = std::sqrt(sc / sm);
+      std::printf("[ band     ] %s %s: model/measured %.2f\n", name.c_str(), q.c_str(), ratio);
+      EXPECT_GT(ratio, 0.6) << name << " " << q;
+      EXPECT_LT(ratio, 1.5) << name << " " << q;
+    }
+  }
+  EXPECT_EQ(files, 4);
 }
 
 }  // namespace
