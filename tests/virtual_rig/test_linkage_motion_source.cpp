@@ -1,18 +1,17 @@
 // The linkage model as the virtual rig's motion source
 // (virtual_rig/linkage_motion_source.hpp): its sensors' readings against the
 // virtual rig's own sensor formula (virtual_rig/sensor_signal.hpp) on rigid
-// links, and an elastic coupler's vibration against the closed-form free
-// decay of its first mode (frequency and damping from sim/flex).
+// links. (An elastic coupler's vibration between contacts is NOT the free
+// decay of sim/flex's first pinned–pinned mode: with the pin free at B the
+// frame and the mode couple; docs/virtual-rig.md — no closed-form check yet.)
 #include <gtest/gtest.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "common/units.hpp"
-#include "sim/linkage/linkage_model.hpp"
 #include "support/temp_dir.hpp"
 #include "virtual_rig/linkage_motion_source.hpp"
 #include "virtual_rig/sensor_signal.hpp"
@@ -73,61 +72,6 @@ TEST(LinkageMotionSource, RigidLinksReadAsTheVirtualRigsSensorFormula) {
   }
   EXPECT_GT(scale, 10.0);
   EXPECT_LT(worst, 1e-9 * scale) << "largest difference " << worst << " m/s2 of " << scale;
-}
-
-// An elastic coupler with one mode: between contacts nothing but the links'
-// slow inertia loads it, so what the mid-span sensor reads beyond the rigid
-// formula is the mode's free decay, e^{−ζωt}(a·cos ω_d t + b·sin ω_d t), at
-// the frequency and damping sim/flex gives the link, plus a slow part.
-TEST(LinkageMotionSource, ElasticCouplerRingsAtItsModeBetweenContacts) {
-  testing::TempDir dir;
-  const Scene scene = linkage_scene(dir, true);
-  const std::vector<ChannelSpec> channels{sensor(ChannelRole::coupler_tangential, 154.5)};
-  const double end_s = 1.0;
-  const LinkageMotionSource src(scene, drive_of(scene), channels, -1.0, -0.01, end_s, 1 / kFs);
-  ASSERT_TRUE(src.elastic());
-  const LinkageModel model = build_linkage(*scene.rig, scene.linkage.spec);
-  const ElasticLink& link = *model.elastic(1);
-  const double w = link.frequencies_rad_s(0), zeta = link.damping_ratios(0);
-  const double wd = w * std::sqrt(1 - zeta * zeta);
-  ASSERT_NEAR(w / units::kTwoPi, 614, 10);  // docs/linkage-model.md: the thesis coupler's first mode
-
-  // The longest contact-free stretch inside the record after a contact with an impact.
-  double best_start = 0, best_length = 0;
-  const auto& cs = src.contacts();
-  for (std::size_t k = 0; k < cs.size(); ++k) {
-    if (!cs[k].impact || cs[k].release_time_s < 0) continue;
-    const double next = k + 1 < cs.size() ? cs[k + 1].time_s : end_s;
-    if (next - cs[k].release_time_s > best_length) best_start = cs[k].release_time_s, best_length = next - cs[k].release_time_s;
-  }
-  const double window_s = std::min(best_length, 0.03);
-  ASSERT_GT(window_s, 8 * units::kTwoPi / w) << "no free stretch of eight periods after an impact";
-
-  // Least squares: the decay at (ω_d, ζ) scaled by `detune`, and a quadratic slow part.
-  auto fit = [&](double detune, double* oscillation_rms) {
-    const double t0 = best_start + 2 / kFs, s = zeta * w, f = wd * detune;
-    const int n = static_cast<int>(window_s * kFs) - 3;
-    Eigen::MatrixXd a(n, 5);
-    Eigen::VectorXd y(n);
-    for (int i = 0; i < n; ++i) {
-      const double tau = i / kFs, t = t0 + tau;
-      const LinkState st = src.at(t);
-      y(i) = src.reading(0, t) - specific_force(*scene.rig, st, channels[0].role, channels[0].position_m, 0.0);
-      const double decay = std::exp(-s * tau);
-      a.row(i) << decay * std::cos(f * tau), decay * std::sin(f * tau), 1.0, tau, tau * tau;
-    }
-    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(y);
-    const Eigen::VectorXd osc = a.leftCols(2) * c.head(2);
-    *oscillation_rms = std::sqrt(osc.squaredNorm() / n);
-    return std::sqrt((y - a * c).squaredNorm() / n);
-  };
-  double osc = 0, osc_off = 0;
-  const double residual = fit(1.0, &osc);
-  EXPECT_GT(osc, 1.0) << "the mode rings with at least 1 m/s2 at mid-span";
-  EXPECT_LT(residual, 0.05 * osc) << "free decay over " << window_s * 1e3 << " ms from " << best_start << " s";
-  // Two per cent off the mode's frequency the same fit leaves far more.
-  EXPECT_GT(fit(1.02, &osc_off), 3 * residual);
-  EXPECT_GT(fit(0.98, &osc_off), 3 * residual);
 }
 
 }  // namespace
