@@ -13,6 +13,7 @@
 #include "common/provenance.hpp"
 #include "common/units.hpp"
 #include "virtual_rig/clearance_motion_source.hpp"
+#include "virtual_rig/linkage_motion_source.hpp"
 #include "virtual_rig/virtual_rig.hpp"
 
 namespace po = boost::program_options;
@@ -26,9 +27,12 @@ REC's manifest (same name, .toml) and REC's truth (<stem>.truth.csv: crank_deg,
 time_s, theta2..alpha4 and each sensor's true specific force <name>_m_s2, plus
 <name>_hp_m_s2 after the high-pass of an AC-coupled sensor), from the scene's
 motion at its crank_speed_rpm and start_angle_deg: the nominal mechanism
-(model = "nominal") or the clearance model (model = "clearance", with the
-scene's [clearance] table, started warmup_revolutions turns before the
-recording; the manifest then carries the scene's clearance). Each CSV
+(model = "nominal"), the clearance model (model = "clearance", with the
+scene's [clearance] table) or the linkage model (model = "linkage", with its
+[linkage] table: rigid or elastic links, whose vibration the tangential
+sensors then read), started warmup_revolutions turns before the recording;
+the manifest then carries the scene's clearance (the coupler-rocker joint's
+for a linkage). Each CSV
 written (the truth, a .csv recording) has its provenance in NAME.csv.json
 beside it.
 
@@ -39,7 +43,7 @@ The scene's [recording] table (docs/virtual-rig.md lists every key):
   speed_fluctuation_period_s, sampling (simultaneous|multiplexed) + skew_us,
   daq_filter (none|butterworth|linear_phase) + daq_filter_order +
   daq_filter_cutoff_Hz | daq_filter_delay_us, seed, notes,
-  warmup_revolutions (clearance scenes, default 20);
+  warmup_revolutions (clearance and linkage scenes, default 20);
   [recording.pulse] name, angle_deg, low_V, high_V, polarity, width_deg,
   rise_us, jitter_us, noise_mV, missing, echo, echo_delay_ms;
   [[recording.sensor]] name, role, position_mm, offset_mm, axis_sign,
@@ -69,15 +73,20 @@ int run_virtual_rig(const Invocation& inv) {
   if (out_path.has_parent_path()) ensure_output_dir(out_path.parent_path());
   const CrankDrive drive = crank_drive(scene, spec);
   std::unique_ptr<MotionSource> motion;
-  if (scene.model == Model::clearance) {
+  if (scene.model == Model::clearance || scene.model == Model::linkage) {
     // Simulated from warmup_revolutions turns before the earliest time the rig
     // asks for (the AC filters' run-in), to past the end.
     const double run_in_s = recording_run_in_s(spec);
     const double period_s = units::kTwoPi / std::abs(drive.mean_speed_rad_s);
     const double duration_s = spec.duration_s ? *spec.duration_s : *spec.revolutions * period_s;
-    motion = std::make_unique<ClearanceMotionSource>(scene.rig, drive, scene.clearance, scene.clearance_m(),
+    if (scene.model == Model::clearance)
+      motion = std::make_unique<ClearanceMotionSource>(scene.rig, drive, scene.clearance, scene.clearance_m(),
+                                                       -run_in_s - (spec.warmup_revolutions + 1) * period_s,
+                                                       duration_s + period_s, 1.0 / spec.sample_rate_hz);
+    else
+      motion = std::make_unique<LinkageMotionSource>(scene, drive, spec.sensors,
                                                      -run_in_s - (spec.warmup_revolutions + 1) * period_s,
-                                                     duration_s + period_s, 1.0 / spec.sample_rate_hz);
+                                                     -run_in_s - period_s, duration_s + period_s, 1.0 / spec.sample_rate_hz);
   } else {
     motion = std::make_unique<NominalMotionSource>(scene.rig, drive);
   }
@@ -93,7 +102,7 @@ int run_virtual_rig(const Invocation& inv) {
   std::cout << "\n";
   for (std::size_t c = 0; c < r.ringing_rms_share.size(); ++c)
     std::cout << "link ringing on " << spec.sensors[c].name << ": " << format_number(100 * r.ringing_rms_share[c], 3)
-              << " % of the rigid signal's RMS\n";
+              << " % of the rigid signal's RMS" << (scene.model == Model::linkage ? " (the linkage model's elastic links)\n" : "\n");
   if (r.clipped_samples > 0)
     std::cerr << "fourbar: warning: " << r.clipped_samples << " accelerometer samples clipped at +-"
               << spec.full_scale_V << " V (lower the gain or raise full_scale_V)\n";

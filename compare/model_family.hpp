@@ -17,8 +17,10 @@
 //   r_b changes only slowly with frequency whatever e is (measured: a
 //   smooth fall of up to 20× over 100–900 Hz from another e and the
 //   measurement chain's roll-off). Each window's reference r_ref is the
-//   median ratio of its neighbours (kReferenceBands bands on each side
-//   beyond its direct neighbours). A window is unmodelled when its ratio
+//   trend interpolated across it from its neighbours (kReferenceBands bands
+//   on each side beyond its direct neighbours): the geometric mean of the
+//   median ratio below and the median ratio above (one side's median at
+//   the range's edges); its measured neighbours' level likewise. A window is unmodelled when its ratio
 //   exceeds kExcessRatio·r_ref, its measured energy stands kMinProminence times
 //   above its neighbours' (the measured spectrum itself peaks there), AND
 //   its excess E_m − r_ref·E_s is at least kMinRmsShare of the measured

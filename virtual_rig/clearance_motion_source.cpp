@@ -6,22 +6,11 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "sim/compliant/compliant_simulator.hpp"
-#include "sim/drive/crank_motion.hpp"
+#include "virtual_rig/drive_crank.hpp"
 
 namespace fourbar {
 
 namespace {
-
-/// The virtual rig's crank drive as the simulator's prescribed crank motion.
-class DriveCrank final : public CrankMotion {
- public:
-  explicit DriveCrank(const CrankDrive& d) : d_(d) {}
-  CrankState at(double t) const override { return d_.at(t); }
-  double time_at_angle(double angle_rad) const override { return d_.time_at_turned(angle_rad - d_.start_angle_rad); }
-
- private:
-  const CrankDrive& d_;
-};
 
 double unwrap(double angle, double previous) {
   return angle - units::kTwoPi * std::round((angle - previous) / units::kTwoPi);

@@ -62,9 +62,6 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   if (!scene.recording)
     throw InputError(scene.source.string() + ": no [recording] table; the virtual rig needs one (see "
                      "'fourbar virtual-rig --help')");
-  if (scene.model == Model::linkage)
-    throw InputError(scene.source.string() + ": model = \"linkage\" is not a motion source of the virtual rig yet; "
-                     "use model = \"clearance\" (or \"nominal\") for a recording");
   // Re-read the table from the scene file when there is one: a copied TOML
   // table loses its line numbers, and errors should name the line.
   toml::table parsed, copy;
@@ -120,8 +117,8 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   spec.seed = static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<long long>::max(), 1));
   if (auto n = r.optional_string("notes")) spec.notes = *n;
   if (r.has("warmup_revolutions")) {
-    if (scene.model != Model::clearance)
-      r.fail("warmup_revolutions", "is for clearance scenes (model = \"clearance\") only; remove it");
+    if (scene.model != Model::clearance && scene.model != Model::linkage)
+      r.fail("warmup_revolutions", "is for clearance and linkage scenes (model = \"clearance\" or \"linkage\") only; remove it");
     spec.warmup_revolutions = static_cast<int>(r.integer("warmup_revolutions", 0, 100000));
   }
 
@@ -140,6 +137,10 @@ RecordingSpec read_recording_spec(const Scene& scene) {
   }
 
   for (auto& lm : r.sections("link_mode")) {
+    if (scene.model == Model::linkage)
+      lm.fail("link", "(recording.link_mode) is the clearance model's stand-in for link vibration; a linkage scene's "
+                      "links vibrate by themselves when elastic ([linkage] elastic_links, the rig's [<link>.elastic] "
+                      "table): remove the [[recording.link_mode]] tables");
     if (scene.model != Model::clearance)
       lm.fail("link", "(recording.link_mode) needs a clearance scene (model = \"clearance\"): the bearing impacts ring the links; remove it");
     LinkMode m;

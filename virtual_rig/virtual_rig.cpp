@@ -15,6 +15,7 @@
 #include "common/version.hpp"
 #include "virtual_rig/clearance_motion_source.hpp"
 #include "virtual_rig/link_ringing.hpp"
+#include "virtual_rig/linkage_motion_source.hpp"
 #include "virtual_rig/recording_writer.hpp"
 #include "virtual_rig/analog_filter_sim.hpp"
 #include "virtual_rig/sensor_signal.hpp"
@@ -192,8 +193,23 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
                        "(model = \"clearance\"): the bearing impacts ring the links");
     ringing.emplace(spec.link_modes, bearing_impulses(clearance->impacts()));
   }
+  // The linkage model reads its tangential sensors itself (rigid frame plus
+  // the elastic links' deflection): what it adds to the rigid formula from
+  // the frames' motion is its links' vibration.
+  const auto* linkage = dynamic_cast<const LinkageMotionSource*>(&motion);
+  const bool vibration = ringing || (linkage && linkage->elastic());
   // At any time, in any order: a skewed channel and an analog filter's sub-steps ask out of order.
-  auto ring = [&](double t, ChannelRole role) { return ringing ? ringing->sensor_acceleration_at(t, role) : 0.0; };
+  // Channel c's specific force at t from the links' state `st` there: the rigid part and the links' vibration.
+  struct Force {
+    double rigid = 0, vibration = 0;
+  };
+  auto force_parts = [&](std::size_t c, double t, const LinkState& st) {
+    const ChannelSpec& s = spec.sensors[c];
+    Force f{specific_force(rig, st, s.role, s.position_m, s.offset_m), 0.0};
+    if (linkage && linkage->reads(c)) f.vibration = linkage->reading(c, t) - f.rigid;
+    else if (ringing) f.vibration = ringing->sensor_acceleration_at(t, s.role);
+    return f;
+  };
   std::vector<double> rigid_sum(nsens, 0.0), rigid_sq(nsens, 0.0), ring_sq(nsens, 0.0);
 
   // Each sensor channel's chain: the specific force at its sample time (a
@@ -223,11 +239,13 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       warmup_s = std::max(warmup_s, 12.0 / (units::kTwoPi * s.highpass_hz));
     }
   }
+  const auto parts_at = [&](std::size_t c, double t, const LinkState* st) {
+    const double ts = t + sample_offset_s[c];
+    return force_parts(c, ts, sample_offset_s[c] != 0 || !st ? motion.at(ts) : *st);
+  };
   const auto force_at = [&](std::size_t c, double t, const LinkState* st) {
-    const ChannelSpec& s = spec.sensors[c];
-    return specific_force(rig, sample_offset_s[c] != 0 || !st ? motion.at(t + sample_offset_s[c]) : *st, s.role,
-                          s.position_m, s.offset_m) +
-           ring(t + sample_offset_s[c], s.role);
+    const Force f = parts_at(c, t, st);
+    return f.rigid + f.vibration;
   };
   if (warmup_s > 0) {
     const auto warm = static_cast<std::int64_t>(std::ceil(warmup_s * fs));
@@ -308,9 +326,8 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
       }
       for (std::size_t c = 0; c < nsens; ++c) {
         const ChannelSpec& s = spec.sensors[c];
-        const double force = force_at(c, t, &st);
-        const double ringing_now = ring(t + sample_offset_s[c], s.role);
-        const double rigid = force - ringing_now;
+        const Force parts = parts_at(c, t, &st);
+        const double force = parts.rigid + parts.vibration, ringing_now = parts.vibration, rigid = parts.rigid;
         rigid_sum[c] += rigid, rigid_sq[c] += rigid * rigid, ring_sq[c] += ringing_now * ringing_now;
         const double analog_out =
             analog[c].empty() ? force : analog[c].step(t - 1.0 / fs, [&](double tau) { return force_at(c, tau, nullptr); });
@@ -346,6 +363,10 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   Manifest m;
   m.rig_file = rig.source;
   m.clearance_m = scene.clearance_m();
+  if (scene.model == Model::linkage) {  // the coupler–rocker joint's, else the largest
+    const auto& xi = scene.linkage.spec.clearance_m;
+    m.clearance_m = xi[1] > 0 ? xi[1] : *std::max_element(xi.begin(), xi.end());
+  }
   m.full_scale_V = bits > 0 ? spec.full_scale_V : 1.0;
   if (bits == 0) m.adc_range_V = spec.full_scale_V;
   m.crank_direction = direction;
@@ -355,6 +376,9 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
             (scene.model == Model::clearance
                  ? "; motion: clearance model, e = " + format_double(scene.clearance.restitution) + ", contact " +
                        to_string(scene.clearance.contact)
+             : scene.model == Model::linkage
+                 ? "; motion: linkage model, e = " + format_double(scene.linkage.spec.law.restitution) +
+                       (linkage && linkage->elastic() ? ", elastic links" : ", rigid links")
                  : std::string("; motion: nominal mechanism")) +
             (spec.notes.empty() ? "" : "; " + spec.notes);
   const bool text = is_text_recording(out);
@@ -386,7 +410,7 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
   result.frames = frames;
   result.channels = static_cast<int>(nch);
   result.sample_rate_hz = fs;
-  if (ringing)
+  if (vibration)
     for (std::size_t c = 0; c < nsens; ++c) {
       const double nf = static_cast<double>(frames), mean = rigid_sum[c] / nf;
       const double rigid_rms = std::sqrt(std::max(0.0, rigid_sq[c] / nf - mean * mean));
