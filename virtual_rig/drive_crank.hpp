@@ -1,9 +1,9 @@
 #pragma once
 // The virtual rig's crank drive as a simulator's prescribed crank motion
-// (sim/clearance/crank_motion.hpp): the clearance and the linkage motion
+// (sim/drive/crank_motion.hpp): the clearance and the linkage motion
 // sources run their simulators on it.
 
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/drive/crank_motion.hpp"
 #include "virtual_rig/motion_source.hpp"
 
 namespace fourbar {

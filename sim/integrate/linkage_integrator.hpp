@@ -1,6 +1,6 @@
 #pragma once
 // SUNDIALS CVODE BDF (Newton, dense direct solver) for the linkage model: the
-// stiff integrator the compliant model uses (sim/clearance/stiff_integrator.hpp),
+// stiff integrator the compliant model uses (sim/integrate/stiff_integrator.hpp),
 // with the problem size set at reset instead of at compile time and several
 // witnesses at once (one per clearance joint), each root reported with its
 // direction (SIM-DESIGN-NOTES §3.1, §5 OdeProblem). As there, the Jacobian

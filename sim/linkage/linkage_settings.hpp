@@ -1,7 +1,7 @@
 #pragma once
 // The scene's [linkage] table (model = "linkage"): the clearance of each
 // joint, the compliant contact law's keys (shared with [clearance]
-// model = "compliant": sim/clearance/compliant_settings.cpp reads them), the
+// model = "compliant": sim/three_mode/compliant_settings.cpp reads them), the
 // tolerance, and optionally a tabulated crank motion. Keys in
 // docs/linkage-model.md.
 

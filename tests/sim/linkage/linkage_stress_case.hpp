@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "common/units.hpp"
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/drive/crank_motion.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
 
 namespace fourbar::linkage_stress {

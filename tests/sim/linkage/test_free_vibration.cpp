@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "sim/clearance/crank_motion.hpp"
+#include "sim/drive/crank_motion.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
 
 namespace fourbar {
