@@ -8,7 +8,7 @@ model-family verdict, wall and CPU seconds; then the tallies the issue asks
 for: e and μ within ±0.1 where called identifiable, the truth inside the
 reported intervals, sessions with vibration that report anything identifiable.
 
-usage: fit_recovery.py FOURBAR SESSIONS_DIR [--jobs N] [--parallel P] [--refit] [NAME ...] [-- FIT OPTIONS]
+usage: fit_recovery.py FOURBAR SESSIONS_DIR [--jobs N] [--parallel P] [--refit] [--table-only] [NAME ...] [-- FIT OPTIONS]
 Fits go to SESSIONS_DIR/fit_out/NAME/ (fit.json, log, time); without
 --refit a session whose fit.json exists is not fitted again.
 """
@@ -44,7 +44,7 @@ def main(argv):
         extra = argv[argv.index("--") + 1:]
         argv = argv[:argv.index("--")]
     fourbar, root = argv[0], argv[1]
-    jobs, parallel, refit, names = 2, 1, False, []
+    jobs, parallel, refit, table_only, names = 2, 1, False, False, []
     i = 2
     while i < len(argv):
         a = argv[i]
@@ -54,11 +54,13 @@ def main(argv):
             parallel = int(argv[i + 1]); i += 2; continue
         if a == "--refit":
             refit = True; i += 1; continue
+        if a == "--table-only":
+            table_only = True; i += 1; continue
         names.append(a); i += 1
     if not names:
         names = sorted(d for d in os.listdir(root) if os.path.isfile(os.path.join(root, d, "truth", "truth.json")))
     outs = {n: os.path.join(root, "fit_out", n) for n in names}
-    todo = [n for n in names if refit or not os.path.isfile(os.path.join(outs[n], "fit.json"))]
+    todo = [] if table_only else [n for n in names if refit or not os.path.isfile(os.path.join(outs[n], "fit.json"))]
     with ThreadPoolExecutor(max_workers=parallel) as pool:
         for n in todo:
             pool.submit(run_fit, fourbar, os.path.join(root, n), outs[n], jobs, extra)
@@ -73,12 +75,14 @@ def main(argv):
         at = targs.get("friction_at", "always") if mu_true else "–"
         path = os.path.join(outs[n], "fit.json")
         t = "?"
-        if os.path.isfile(os.path.join(outs[n], "time")):
-            w, u, s = (float(x) for x in open(os.path.join(outs[n], "time")).read().split()[-3:])
+        times = open(os.path.join(outs[n], "time")).read().split() if os.path.isfile(os.path.join(outs[n], "time")) else []
+        if len(times) >= 3:
+            w, u, s = (float(x) for x in times[-3:])
             t = f"{w:.0f} ({u + s:.0f})"
         if not os.path.isfile(path):
             log = open(os.path.join(outs[n], "log")).read().strip().splitlines() if os.path.isfile(os.path.join(outs[n], "log")) else ["?"]
-            print(f"| {n} | {e_true}, {mu_true} ({at}) | {vib} | no fit: {log[-1][:160] if log else '?'} | | | | | | | {t} |")
+            what = "no fit: " + log[-1][:160] if len(times) >= 3 else "not finished"
+            print(f"| {n} | {e_true}, {mu_true} ({at}) | {vib} | {what} | | | | | | | {t} |")
             continue
         j = json.load(open(path))
         par = j["parameters"]
