@@ -9,8 +9,9 @@
 # magnification factor a ± its standard error per recording at the fit and
 # at the prior, evaluations, simulations, wall time.
 # The last lines count the intervals that hold the truth and the widest
-# identifiable interval. CASES="e0.2_0.3 e0.5_smooth ..." in the environment
-# fits only those sessions (all are made). With REFIT=0 sessions that already
+# identifiable interval. FIT_OPTIONS="..." are passed to every fit.
+# CASES="e0.2_0.3 e0.5_smooth ..." in the environment
+# makes and fits only those sessions. With REFIT=0 sessions that already
 # hold fit/fit.json are not fitted again (the table is made from their files).
 #   bench/fit_recovery.sh [WORK_DIR] [FOURBAR] [TURNS] [JOBS] [PARALLEL]
 set -euo pipefail
@@ -26,18 +27,19 @@ for e in 0.2 0.5 0.8; do
     seed=$((seed + 10))
     if [ "$c" = smooth ]; then contact=smooth mu=0; else contact=stick-slip mu=$c; fi
     name="e${e}_${c}"
-    [ -f "$work/$name/session.toml" ] || "$root/bench/make_fit_session.sh" "$work/$name" "$e" "$contact" "$mu" "$turns" 30 "$seed" "$fourbar"
     if [ -n "${CASES:-}" ] && [[ " $CASES " != *" $name "* ]]; then continue; fi
+    [ -f "$work/$name/session.toml" ] || "$root/bench/make_fit_session.sh" "$work/$name" "$e" "$contact" "$mu" "$turns" 30 "$seed" "$fourbar"
     cases+=("$name $e $mu $contact")
   done
 done
-export fourbar work jobs
+FIT_OPTIONS="${FIT_OPTIONS:-}"
+export fourbar work jobs FIT_OPTIONS
 refit="${REFIT:-1}"
 export refit
 printf '%s\n' "${cases[@]}" | xargs -P "$parallel" -L 1 bash -c \
   '[ "$refit" = 0 ] && [ -f "$work/$0/fit/fit.json" ] && exit 0
    rm -f "$work/$0/fit/fit.json"
-   "$fourbar" fit "$work/$0" --out "$work/$0/fit" --jobs "$jobs" -q >"$work/$0/fit.log" 2>&1 || true'
+   "$fourbar" fit "$work/$0" --out "$work/$0/fit" --jobs "$jobs" -q $FIT_OPTIONS >"$work/$0/fit.log" 2>&1 || true'
 tally="$work/coverage.tally"
 : >"$tally"
 printf '| e | contact | fitted e [interval] | μ | fitted μ [interval] | e inside | μ inside | χ²/term fit (prior) | a fit (prior) | evaluations | simulations | s wall (CPU) |\n'

@@ -89,6 +89,8 @@ int run_fit(const Invocation& inv) {
   std::string dir, out, restitution_box, friction_box;
   bool per_recording = false, smooth_only = false, quiet = false;
   int jobs = 0, turns = 0, warmup = 20;
+  double band_top_hz = kBandTopHz;
+  FitOptions o;
   po::options_description opts("options");
   opts.add_options()("session", po::value(&dir)->required(), "session folder with the recordings and manifests")(
       "out,o", po::value(&out), "output folder for fit.json (default SESSION_DIR/fit)")(
@@ -98,6 +100,14 @@ int run_fit(const Invocation& inv) {
       "friction", po::value(&friction_box), "box for mu, LOW:HIGH (default 0:0.5)")(
       "turns", po::value(&turns), "simulated turns per simulation kept (default: 2x the measured turns, at least 40)")(
       "warmup", po::value(&warmup), "simulated turns discarded before them (default 20)")(
+      "band-top-hz", po::value(&band_top_hz),
+      "upper edge of the band above the averaging filter whose energy carries e (default 3840: where rigid and "
+      "0.1-0.3 ms compliant impacts agree, docs/fit.md \"Band top\"; never above 0.3x the sample rate)")(
+      "band-offset-sigma", po::value(&o.modelling_offset_sigma.band),
+      "width (log) of the shared offset the model's band energy may carry from modelling choices, profiled out "
+      "(default 0.26; 0: none; docs/fit.md \"Modelling choices\")")(
+      "spread-offset-sigma", po::value(&o.modelling_offset_sigma.statistic[index_of(ResponseStatistic::spread)]),
+      "the same for the spread over turns (default 0.022)")(
       "jobs,j", po::value(&jobs), "simulations (and analysis chunks) at once (default: every core; under MPI one per rank)");
   add_quiet_option(opts, quiet);
   po::positional_options_description pos;
@@ -107,7 +117,6 @@ int run_fit(const Invocation& inv) {
                        kDetails, opts, pos, inv, vm))
     return 0;
 
-  FitOptions o;
   if (!restitution_box.empty()) std::tie(o.box.restitution_low, o.box.restitution_high) = parse_box("restitution", restitution_box);
   if (!friction_box.empty()) std::tie(o.box.friction_low, o.box.friction_high) = parse_box("friction", friction_box);
   o.fit_friction = !smooth_only;
@@ -117,6 +126,9 @@ int run_fit(const Invocation& inv) {
   o.simulated_turns = turns > 0 ? turns : 40;  // checked again below once the measured turns are known
   if (turns < 0) throw InputError("fit: --turns " + std::to_string(turns) + " must be 8 or more");
   validate_fit_options(o);
+  if (!(band_top_hz > 0))
+    throw InputError("fit: --band-top-hz " + format_number(band_top_hz, 6) +
+                     " must be above 0 (e.g. --band-top-hz 3840; at most 0.3x the sample rate is used)");
 
   const std::filesystem::path session = dir;
   const SessionSettings settings = load_session_settings(session);
@@ -155,7 +167,7 @@ int run_fit(const Invocation& inv) {
       const RecordingAnalysis a = analyze_recording(rec, manifest, analysis);
       sample_rate_hz = a.acquisition.recording.sample_rate_hz;
       std::optional<RecordingAnalysis> band;
-      if (const auto bo = band_analysis_options(a, analysis)) band = analyze_recording(rec, manifest, *bo);
+      if (const auto bo = band_analysis_options(a, analysis, band_top_hz)) band = analyze_recording(rec, manifest, *bo);
       targets.push_back(make_recording_target(a, band ? &*band : nullptr, rec.filename().string()));
       measured_turns.push_back(a.coupler ? a.coupler->alpha_grid : a.rocker ? a.rocker->alpha_grid : std::vector<double>{});
       max_turns = std::max(max_turns, targets.back().turns);

@@ -85,6 +85,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
         stats[std::string(name_of(l))] = sj;
       }
       rj["measured_statistics"] = stats;
+      if (tg.band_filter) rj["band_hz"] = {tg.band_filter->low_hz, tg.band_filter->high_hz};
     }
     if (r < f.magnification_fitted.size()) {
       // a with its standard error: with 25 turns a is noise-limited (±8–36 %),
@@ -102,6 +103,13 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
   }
   json stats = json::array();
   for (ResponseStatistic s : o.statistics) stats.push_back(std::string(name_of(s)));
+  json offsets = json::object();
+  for (const auto& [name, eta] : f.modelling_offsets) {
+    double width = name == "band_excess" ? o.modelling_offset_sigma.band : 0.0;
+    for (ResponseStatistic s : o.statistics)
+      if (name_of(s) == name) width = o.modelling_offset_sigma.statistic[index_of(s)];
+    offsets[name] = {{"sigma", width}, {"offset_at_fit", eta}};
+  }
   json j = {{"parameters", params},
             {"fitted", contact_json(f.best)},
             {"prior", contact_json(prior)},
@@ -111,6 +119,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
             {"chi2_per_term", f.terms > 0 ? f.chi2 / f.terms : 0.0},
             {"recordings", recs},
             {"statistics", stats},
+            {"modelling_offsets", offsets},
             {"interval_delta_chi2", f.interval_delta},
             {"interval_level", f.noise.level},
             {"objective_noise",

@@ -29,10 +29,12 @@ TheorySettings theory_settings(const ContactParameters& p, int warmup, int turns
 
 }  // namespace
 
-std::optional<AnalyzeOptions> band_analysis_options(const RecordingAnalysis& a, AnalyzeOptions base) {
+std::optional<AnalyzeOptions> band_analysis_options(const RecordingAnalysis& a, AnalyzeOptions base,
+                                                    double band_top_hz) {
   const double fs = a.acquisition.recording.sample_rate_hz;
   if (a.filter.band != BandType::bandpass && a.filter.band != BandType::lowpass) return std::nullopt;
-  const double low = a.filter.high_hz, high = kBandTopPerSampleRate * fs;
+  const double low = a.filter.high_hz;
+  const double high = band_top_hz > 0 ? std::min(band_top_hz, kBandTopPerSampleRate * fs) : kBandTopPerSampleRate * fs;
   if (!(high >= 2 * low)) return std::nullopt;
   const double crank_hz = std::abs(a.mean_crank_speed_rad_s) / units::kTwoPi;
   const double fastest_hz = std::max(crank_hz, a.acquisition.speed.max_rpm / 60.0);

@@ -67,12 +67,20 @@ struct RecordingTarget {
 /// The analysis of the band above the averaging filter: band-pass from the
 /// α filter's upper corner to kBandTopPerSampleRate × the sample rate, on a
 /// grid that is a whole multiple of the analysis grid and holds the band.
-/// Empty when the band would be narrower than an octave.
-std::optional<AnalyzeOptions> band_analysis_options(const RecordingAnalysis& analysis, AnalyzeOptions base);
+/// Empty when the band would be narrower than an octave. `band_top_hz` > 0
+/// caps the upper edge (below kBandTopPerSampleRate × the sample rate).
+std::optional<AnalyzeOptions> band_analysis_options(const RecordingAnalysis& analysis, AnalyzeOptions base,
+                                                    double band_top_hz = 0);
 /// Upper edge of the band, per sample rate: well below Nyquist, where the
 /// sample-period mean of an accelerometer (and the model's cell mean) still
 /// pass most of the signal (sinc(0.3) = 0.86).
 inline constexpr double kBandTopPerSampleRate = 0.3;
+/// `fourbar fit`'s default cap of the band's upper edge: a rigid impact is an
+/// impulse, a real (compliant) one lasts 0.1–0.3 ms and its spectrum falls
+/// above ≈ 1/(3·duration); above this the band energy measures the contact's
+/// duration, which the three-mode model does not have (docs/fit.md "Band
+/// top": measured on the independent generator's sessions).
+inline constexpr double kBandTopHz = 3840.0;
 
 /// The target of an analysed recording (analysis with keep_revolutions).
 /// InputError when it has neither link's α or fewer than 8 turns.

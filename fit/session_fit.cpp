@@ -12,6 +12,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "fit/matched_magnification.hpp"
+#include "fit/nuisance_offset.hpp"
 #include "fit/objective_surrogate.hpp"
 #include "fit/simulation_cache.hpp"
 
@@ -39,6 +40,16 @@ struct Chi2 {
   int terms = 0;
   std::vector<double> by_recording;
   std::vector<int> terms_by_recording;
+  std::vector<std::pair<std::string, double>> offsets;  ///< η̂ per compared statistic ("band_excess" last)
+};
+
+/// One compared statistic's residuals over the recordings and links, with
+/// the recording each belongs to; profiled together with a shared
+/// log-offset (nuisance_offset.hpp).
+struct StatisticResiduals {
+  std::vector<double> d, var;
+  std::vector<std::size_t> recording;
+  void add(double residual, double variance, std::size_t r) { d.push_back(residual), var.push_back(variance), recording.push_back(r); }
 };
 
 Chi2 chi2_at(const SimulationCache& cache, const FitOptions& o, const ContactParameters& p) {
@@ -46,39 +57,59 @@ Chi2 chi2_at(const SimulationCache& cache, const FitOptions& o, const ContactPar
   Chi2 c;
   c.by_recording.assign(targets.size(), 0.0);
   c.terms_by_recording.assign(targets.size(), 0);
+  auto failed = [&](std::size_t r) {
+    c.by_recording[r] += kFailedChi2, c.terms_by_recording[r] += 1;
+    c.total += kFailedChi2, c.terms += 1;
+  };
+  std::vector<StatisticResiduals> per_statistic(o.statistics.size());
+  StatisticResiduals band_residuals;
   for (std::size_t r = 0; r < targets.size(); ++r) {
     const CachedSimulation& sim = cache.at(r, p);
     for (FitLink l : kFitLinks) {
       const auto li = static_cast<std::size_t>(l);
       const auto& meas = targets[r].measured[li];
       if (!meas) continue;
-      for (ResponseStatistic s : o.statistics) {
+      for (std::size_t k = 0; k < o.statistics.size(); ++k) {
+        const ResponseStatistic s = o.statistics[k];
         const auto si = index_of(s);
-        double term = kFailedChi2;
-        if (sim.error.empty()) {
-          const StatisticValues& m = *sim.statistics.link[li];
-          const double d = transformed(s, m.value[si]) - transformed(s, meas->value[si]);
-          const double var = std::pow(transformed_se(s, meas->value[si], meas->standard_error[si]), 2) +
-                             std::pow(transformed_se(s, m.value[si], m.standard_error[si]), 2);
-          term = d * d / std::max(var, 1e-12);
+        if (!sim.error.empty()) {
+          failed(r);
+          continue;
         }
-        c.by_recording[r] += term, c.terms_by_recording[r] += 1;
-        c.total += term, c.terms += 1;
+        const StatisticValues& m = *sim.statistics.link[li];
+        const double d = transformed(s, m.value[si]) - transformed(s, meas->value[si]);
+        const double var = std::pow(transformed_se(s, meas->value[si], meas->standard_error[si]), 2) +
+                           std::pow(transformed_se(s, m.value[si], m.standard_error[si]), 2);
+        per_statistic[k].add(d, var, r);
       }
       const auto& band = targets[r].measured_band[li];
       if (!o.use_band || !band) continue;
-      double term = kFailedChi2;
-      if (sim.error.empty() && sim.statistics.band[li]) {
-        const BandEnergy& m = *sim.statistics.band[li];
-        const double d = std::log(std::max(m.excess, 1e-30)) - std::log(std::max(band->excess, 1e-30));
-        const double var = std::pow(band->standard_error / std::max(band->excess, 1e-30), 2) +
-                           std::pow(m.standard_error / std::max(m.excess, 1e-30), 2);
-        term = d * d / std::max(var, 1e-12);
+      if (!sim.error.empty() || !sim.statistics.band[li]) {
+        failed(r);
+        continue;
       }
-      c.by_recording[r] += term, c.terms_by_recording[r] += 1;
-      c.total += term, c.terms += 1;
+      const BandEnergy& m = *sim.statistics.band[li];
+      const double d = std::log(std::max(m.excess, 1e-30)) - std::log(std::max(band->excess, 1e-30));
+      const double var = std::pow(band->standard_error / std::max(band->excess, 1e-30), 2) +
+                         std::pow(m.standard_error / std::max(m.excess, 1e-30), 2);
+      band_residuals.add(d, var, r);
     }
   }
+  // Each statistic with its modelling-choice offset profiled out (a statistic
+  // that is no magnitude has no log-offset: σ = 0).
+  auto add = [&](const StatisticResiduals& res, double sigma, std::string_view name) {
+    const ProfiledOffset po = profile_shared_offset(res.d, res.var, sigma);
+    if (!res.d.empty()) c.offsets.emplace_back(std::string(name), po.eta);
+    for (std::size_t i = 0; i < res.d.size(); ++i) {
+      c.by_recording[res.recording[i]] += po.terms[i], c.terms_by_recording[res.recording[i]] += 1;
+      c.total += po.terms[i], c.terms += 1;
+    }
+    c.total += po.prior_chi2;
+  };
+  for (std::size_t k = 0; k < o.statistics.size(); ++k)
+    add(per_statistic[k], is_magnitude(o.statistics[k]) ? o.modelling_offset_sigma.statistic[index_of(o.statistics[k])] : 0.0,
+        name_of(o.statistics[k]));
+  add(band_residuals, o.modelling_offset_sigma.band, "band_excess");
   return c;
 }
 
@@ -164,6 +195,15 @@ void reject_model_family(FitResult& f, const std::string& reason, const FitOptio
   }
 }
 
+ModellingOffsetSigma default_modelling_offset_sigma() {
+  // docs/fit.md "Modelling choices": the RMS change each choice causes, less
+  // the replicates' noise (that noise is measured in every fit), in quadrature.
+  ModellingOffsetSigma s;
+  s.statistic[index_of(ResponseStatistic::spread)] = kSpreadOffsetSigma;
+  s.band = kBandOffsetSigma;
+  return s;
+}
+
 void validate_fit_options(const FitOptions& o) {
   const FitBox& b = o.box;
   auto bad = [](const std::string& what, const std::string& rule) { throw InputError("fit option " + what + ": " + rule); };
@@ -185,6 +225,10 @@ void validate_fit_options(const FitOptions& o) {
   if (o.global_evaluations < 1 || o.local_evaluations < 0 || o.profile_points_e < 3 || o.profile_points_mu < 3)
     bad("evaluations", "the global stage needs >= 1 evaluation and each profile >= 3 points");
   if (o.statistics.empty()) bad("statistics", "choose at least one statistic");
+  if (!(o.modelling_offset_sigma.band >= 0))
+    bad("--band-offset-sigma " + format_number(o.modelling_offset_sigma.band), "must be 0 or more (e.g. 0.26)");
+  for (double v : o.modelling_offset_sigma.statistic)
+    if (!(v >= 0)) bad("--spread-offset-sigma " + format_number(v), "must be 0 or more (e.g. 0.022)");
   if (o.replicates < 1) bad("replicates", "at least one replicate is needed to measure the objective's noise");
   if (!(o.interval_level > 0 && o.interval_level < 1)) bad("interval level", "must lie in (0, 1)");
 }
@@ -332,6 +376,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   const Chi2 at_best = chi2_at(cache, o, best), at_prior = chi2_at(cache, o, prior);
   out.best = SimulationCache::canonical(best);
   out.chi2 = at_best.total, out.terms = at_best.terms, out.chi2_prior = at_prior.total;
+  out.modelling_offsets = at_best.offsets;
   for (std::size_t r = 0; r < targets.size(); ++r)
     out.recordings.push_back({targets[r].name, at_best.by_recording[r], at_best.terms_by_recording[r],
                               at_prior.by_recording[r]});

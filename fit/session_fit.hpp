@@ -31,9 +31,11 @@
 // interval wider than `identifiable_width` of its box is reported as not
 // identifiable. The raw profiles (grid of the box) are kept for the charts.
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fit/family_judgement.hpp"
@@ -47,6 +49,23 @@ struct FitBox {
   double restitution_low = 0.0, restitution_high = 1.0;
   double friction_low = 0.0, friction_high = 0.5;
 };
+
+/// Width (log scale) of the shared offset each compared statistic of the
+/// model may carry from modelling choices without a physical counterpart
+/// (nuisance_offset.hpp; measured: docs/fit.md "Modelling choices").
+struct ModellingOffsetSigma {
+  std::array<double, kResponseStatisticCount> statistic{};  ///< per ResponseStatistic (0: none)
+  double band = 0;                                          ///< the band energy above the averaging filter
+};
+/// The defaults (docs/fit.md "Modelling choices"): the spread's from the
+/// settle speed (its change beyond the replicates' noise, 2.2 %); the band
+/// energy's from the settle speed (7.4 %) and, in quadrature, the contact's
+/// duration below the band top: a half-sine contact of 0.1–0.3 ms keeps
+/// 0.94–0.62 of a rigid impulse's RMS in 1–3.84 kHz (log −0.06 … −0.48,
+/// covered at 2σ by 0.25).
+inline constexpr double kSpreadOffsetSigma = 0.022;
+inline constexpr double kBandOffsetSigma = 0.26;
+ModellingOffsetSigma default_modelling_offset_sigma();
 
 struct FitOptions {
   FitBox box;
@@ -67,6 +86,8 @@ struct FitOptions {
   /// μ above their noise (docs/fit.md: sensitivity per statistic). Each extra
   /// statistic that carries nothing adds its noise to χ² (≈ √2 per term).
   std::vector<ResponseStatistic> statistics{ResponseStatistic::spread};
+  /// The modelling choices' spread carried as a profiled nuisance offset.
+  ModellingOffsetSigma modelling_offset_sigma = default_modelling_offset_sigma();
   /// Turns of the runs at the fit and the prior that give the magnification
   /// factor a (0: kMagnificationTurnsPerMeasuredTurn × the most measured turns).
   int magnification_turns = 0;
@@ -114,6 +135,9 @@ struct FitResult {
   double chi2 = 0;           ///< at the optimum
   int terms = 0;             ///< ν: statistics compared
   double chi2_prior = 0;     ///< at the prior
+  /// The profiled modelling-choice offset η̂ (log) of each compared statistic
+  /// at the optimum (nuisance_offset.hpp): model = measured × e^η̂ on average.
+  std::vector<std::pair<std::string, double>> modelling_offsets;
   double interval_delta = 0; ///< Δχ² above the bottom that bounded the intervals (objective_noise.hpp)
   ObjectiveNoise noise;      ///< the objective's noise from the replicates, the dispersion, the level
   bool surrogate_ok = false; ///< the smooth model of χ² had a minimum (else: raw grid profile)
