@@ -1,5 +1,6 @@
 #include "sim/flex/elastic_link.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -89,6 +90,33 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
   link.gyroscopic = Eigen::MatrixXd::Zero(n, n);
   link.modal_stiffness = Eigen::MatrixXd::Zero(n, n);
 
+  // The mass per length the inertia integrals use, μ(s) = μ0 + μ1·s/L, and a
+  // rotary inertia J that enters I0 alone. Without a measured rigid inertia,
+  // the uniform beam (μ1 = 0, J = m·d²/12). With one, the linear μ that has
+  // the measured mass and centre, and J the rest of the measured inertia: the
+  // modal integrals (S̄, c, M_ff, B) must come from the same distribution as
+  // m, S0 and I0, or the mass matrix is not that of any body and, once the
+  // modes can represent a rigid motion (3 or more sines), it is indefinite.
+  double mu0 = mu, mu1 = 0, rotary = mu * L * spec.depth_m * spec.depth_m / 12;
+  if (spec.rigid) {
+    const RigidInertia& r = *spec.rigid;
+    if (!(r.mass_kg > 0) || !(r.inertia_origin_kg_m2 > 0))
+      bad(spec, "its rigid mass and inertia must be > 0 (check the link's mass_kg and inertia_kg_mm2)");
+    const double centre = r.mass_centre_m / L;
+    mu1 = 12 * r.mass_kg * (centre - 0.5) / L;
+    mu0 = r.mass_kg / L - mu1 / 2;
+    if (mu0 < 0 || mu0 + mu1 < 0)
+      bad(spec, "its mass centre at " + format_number(centre) +
+                    " of the length lies outside the middle third, where no mass per length that grows or "
+                    "falls linearly along the link has it; check mass_centre_mm or make the link rigid");
+    rotary = r.inertia_origin_kg_m2 - L * L * L * (mu0 / 3 + mu1 / 4);
+    if (rotary < -1e-12 * r.inertia_origin_kg_m2)
+      bad(spec, "its inertia about the first joint, " + format_number(r.inertia_origin_kg_m2) +
+                    " kg·m², is below that of the mass per length with its mass and centre (" +
+                    format_number(r.inertia_origin_kg_m2 - rotary) + " kg·m²); check inertia_kg_mm2");
+    rotary = std::max(rotary, 0.0);
+  }
+
   // Highest shape wavenumber decides the panels: 16 nodes per half-wave is
   // far beyond what a product of two sines needs for rounding accuracy.
   int highest = 1;
@@ -97,18 +125,18 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
   std::vector<ShapeValue> v(static_cast<std::size_t>(n));
   for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
     const double xi = rule.nodes[q], w = rule.weights[q] * L;  // ds = L·dξ
-    const double s = xi * L;
+    const double s = xi * L, mu_s = mu0 + mu1 * xi;
     for (int k = 0; k < n; ++k) v[static_cast<std::size_t>(k)] = evaluate(spec.shapes[static_cast<std::size_t>(k)], xi);
     for (int k = 0; k < n; ++k) {
       const ShapeValue& a = v[static_cast<std::size_t>(k)];
-      link.shape_moment(0, k) += w * mu * a.x;
-      link.shape_moment(1, k) += w * mu * a.y;
-      link.axial_coupling(k) += w * mu * s * a.x;
-      link.bending_coupling(k) += w * mu * s * a.y;
+      link.shape_moment(0, k) += w * mu_s * a.x;
+      link.shape_moment(1, k) += w * mu_s * a.y;
+      link.axial_coupling(k) += w * mu_s * s * a.x;
+      link.bending_coupling(k) += w * mu_s * s * a.y;
       for (int j = 0; j < n; ++j) {
         const ShapeValue& b = v[static_cast<std::size_t>(j)];
-        link.modal_mass(k, j) += w * mu * (a.x * b.x + a.y * b.y);
-        link.gyroscopic(k, j) += w * mu * (a.x * b.y - a.y * b.x);
+        link.modal_mass(k, j) += w * mu_s * (a.x * b.x + a.y * b.y);
+        link.gyroscopic(k, j) += w * mu_s * (a.x * b.y - a.y * b.x);
         // Φ'' in s is Φ''(ξ)/L², Φ' is Φ'(ξ)/L.
         link.modal_stiffness(k, j) += w * (spec.bending_stiffness_N_m2 * a.ddy * b.ddy / (L * L * L * L) +
                                            spec.axial_stiffness_N * a.dx * b.dx / (L * L));
@@ -118,26 +146,35 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
   if (spec.modal_mass_override) link.modal_mass = *spec.modal_mass_override;
   if (spec.modal_stiffness_override) link.modal_stiffness = *spec.modal_stiffness_override;
 
-  link.mass_kg = mu * L;
-  link.first_moment_kg_m = {mu * L * L / 2, 0.0};
-  link.inertia_origin_kg_m2 = mu * L * L * L / 3 + link.mass_kg * spec.depth_m * spec.depth_m / 12;
-  if (spec.rigid) {
-    const RigidInertia& r = *spec.rigid;
-    if (!(r.mass_kg > 0) || !(r.inertia_origin_kg_m2 > 0))
-      bad(spec, "its rigid mass and inertia must be > 0 (check the link's mass_kg and inertia_kg_mm2)");
-    link.mass_kg = r.mass_kg;
-    link.first_moment_kg_m = {r.mass_kg * r.mass_centre_m, 0.0};
-    link.inertia_origin_kg_m2 = r.inertia_origin_kg_m2;
-  }
+  // ∫μ ds, ∫μ s ds, ∫μ s² ds + J of the linear μ (for a rigid inertia: the measured m, m·x_c and I0).
+  link.mass_kg = L * (mu0 + mu1 / 2);
+  link.first_moment_kg_m = {L * L * (mu0 / 2 + mu1 / 3), 0.0};
+  link.inertia_origin_kg_m2 = L * L * L * (mu0 / 3 + mu1 / 4) + rotary;
+
+  // The mass matrix at η = 0 (elastic_body.hpp's M with A = I) must be
+  // positive definite: a modal mass override can break it as a mismatched
+  // rigid inertia did.
+  Eigen::MatrixXd m0 = Eigen::MatrixXd::Zero(3 + n, 3 + n);
+  m0(0, 0) = m0(1, 1) = link.mass_kg;
+  m0(1, 2) = m0(2, 1) = link.first_moment_kg_m.x();
+  m0(2, 2) = link.inertia_origin_kg_m2;
+  m0.block(0, 3, 2, n) = link.shape_moment;
+  m0.block(2, 3, 1, n) = link.bending_coupling.transpose();
+  m0.block(3, 3, n, n) = link.modal_mass;
+  if (Eigen::LLT<Eigen::MatrixXd>(m0.selfadjointView<Eigen::Upper>()).info() != Eigen::Success)
+    bad(spec, "its mass matrix is not positive definite (the modal mass does not fit its mass and inertia); "
+              "check the modal mass override against the link's mass, centre and inertia");
 
   if (!spec.measured_frequencies_Hz.empty()) {
-    // The shapes are the modes (uniform μ, pinned–pinned sines: M_ff is
-    // diagonal); each gets the stiffness that makes it ring at f_k.
-    for (int k = 0; k < n; ++k) {
-      const double w = 2 * std::numbers::pi * spec.measured_frequencies_Hz[static_cast<std::size_t>(k)];
-      link.modal_stiffness.row(k).setZero();
-      link.modal_stiffness(k, k) = w * w * link.modal_mass(k, k);
-    }
+    // Mode k is shape k made M_ff-orthogonal to the shapes below it (Gram–
+    // Schmidt: Ψ = L⁻ᵀ with M_ff = L·Lᵀ) and rings at f_k: K = L·diag(ω²)·Lᵀ
+    // (for a uniform link M_ff is diagonal and K_kk = ω_k²·M_kk).
+    const Eigen::LLT<Eigen::MatrixXd> chol(link.modal_mass);
+    Eigen::VectorXd w2(n);
+    for (int k = 0; k < n; ++k)
+      w2(k) = std::pow(2 * std::numbers::pi * spec.measured_frequencies_Hz[static_cast<std::size_t>(k)], 2);
+    const Eigen::MatrixXd l = chol.matrixL();
+    link.modal_stiffness = l * w2.asDiagonal() * l.transpose();
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(link.modal_stiffness, link.modal_mass);
   if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0))

@@ -46,7 +46,9 @@ struct BeamSection {
 
 /// The rigid-body inertia of the link when it is known better than the
 /// uniform beam gives it (a rig file's measured mass, centre and inertia).
-/// Only m, S0 and I0 change; the modal integrals stay the uniform beam's.
+/// All inertia integrals (m, S0, I0 and the modal ones) then come from the
+/// linear mass per length with this mass and centre, plus a rotary inertia
+/// for the rest of I0 (build_elastic_link), so that M is some body's.
 struct RigidInertia {
   double mass_kg = 0;
   double mass_centre_m = 0;         ///< along the axis from s = 0
