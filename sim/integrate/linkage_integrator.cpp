@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "common/error.hpp"
 
@@ -25,12 +26,23 @@ void silent_handler(int, const char*, const char*, char*, void*) {}
 
 int rhs_fn(double t, N_Vector y, N_Vector ydot, void* user) {
   auto* self = static_cast<LinkageIntegrator*>(user);
-  self->ode().rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+  try {
+    self->ode().rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+  } catch (...) {
+    self->pending = std::current_exception();
+    return -1;  // unrecoverable: CVode returns, step() rethrows
+  }
   return 0;
 }
 
 int root_fn(double t, N_Vector y, double* g, void* user) {
-  static_cast<LinkageIntegrator*>(user)->ode().witnesses(t, N_VGetArrayPointer(y), g);
+  auto* self = static_cast<LinkageIntegrator*>(user);
+  try {
+    self->ode().witnesses(t, N_VGetArrayPointer(y), g);
+  } catch (...) {
+    self->pending = std::current_exception();
+    return -1;
+  }
   return 0;
 }
 
@@ -51,7 +63,12 @@ int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector,
     const double yj = yy[j];
     const double inc = sqrt_u * std::max(std::abs(yj), 1e-3);
     yy[j] = yj + inc;
-    self->ode().rhs(t, yy.data(), f1.data());
+    try {
+      self->ode().rhs(t, yy.data(), f1.data());
+    } catch (...) {
+      self->pending = std::current_exception();
+      return -1;
+    }
     yy[j] = yj;
     double* col = SUNDenseMatrix_Column(J, static_cast<sunindextype>(j));
     for (std::size_t i = 0; i < n; ++i) col[i] = (f1[i] - f0[i]) / inc;
@@ -126,6 +143,7 @@ LinkageIntegrator::Step LinkageIntegrator::step(double t_stop) {
   check(CVodeSetStopTime(c.mem, t_stop), "stop time");
   double t = t_;
   const int flag = CVode(c.mem, t_stop, c.y, &t, CV_ONE_STEP);
+  if (pending) std::rethrow_exception(std::exchange(pending, nullptr));
   if (flag < 0)
     throw RunError("CVODE (BDF) could not advance the linkage model past t = " + std::to_string(t_) + " s (flag " +
                    std::to_string(flag) + "); try a looser [linkage] tolerance or a lower contact stiffness");

@@ -8,6 +8,7 @@
 // (work, dissipation, impulses) that no right-hand side reads.
 
 #include <cstddef>
+#include <exception>
 #include <memory>
 #include <vector>
 
@@ -67,6 +68,10 @@ class LinkageIntegrator {
 
  public:
   std::vector<double> scratch0, scratch1, scratch2;  ///< Jacobian work vectors (used by the CVODE callbacks)
+  /// An exception thrown by the problem inside a CVODE callback: the callback
+  /// returns CVODE's "unrecoverable" code and step() rethrows it here, so no
+  /// C++ exception unwinds through CVODE's C frames.
+  std::exception_ptr pending;
 };
 
 }  // namespace fourbar

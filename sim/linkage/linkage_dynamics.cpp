@@ -1,10 +1,24 @@
 #include "sim/linkage/linkage_dynamics.hpp"
 
 #include <cmath>
+#include <string>
+
+#include "common/error.hpp"
 
 namespace fourbar {
 
 namespace {
+
+/// The mass matrix of a physical body is positive definite; a failed Cholesky
+/// factor means the model's inertia data are not one body's (sim/flex refuses
+/// such a link at build) or the deflection left the modes' range. Never go on
+/// with the solve's garbage: the run stops with the state it reached.
+[[noreturn]] void throw_indefinite_mass_matrix(const LinkageCoordinates& c) {
+  throw RunError("the linkage's mass matrix is not positive definite at crank angle " +
+                 std::to_string(c.crank.angle_rad * 180.0 / 3.14159265358979323846) +
+                 " deg: the accelerations cannot be solved; check the elastic links' mass, "
+                 "centre and inertia in the rig file and the modal deflection (elastic_modes)");
+}
 
 Vec2 rotate(Vec2 u, Vec2 local) { return local.x * u + local.y * u.perp(); }
 
@@ -240,13 +254,17 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
     w.z_accel(1) = c.prescribed.alpha4_rad_s2;
     const int f = n - 2;
     const ZVec rhs = w.Q.segment(2, f) - w.M.block(2, 0, f, 2) * w.z_accel.head(2) - w.M.block(2, n, f, 1) * w.z_accel(n);
-    w.z_accel.segment(2, f) = w.M.block(2, 2, f, f).llt().solve(rhs);
+    const Eigen::LLT<ZMat> llt(w.M.block(2, 2, f, f));
+    if (llt.info() != Eigen::Success) throw_indefinite_mass_matrix(c);
+    w.z_accel.segment(2, f) = llt.solve(rhs);
     const ZVec residual = w.M * w.z_accel - w.Q;
     w.crank_torque_Nm = residual(n) + residual(0) * c.prescribed.ratio3 + residual(1) * c.prescribed.ratio4;
     return;
   }
   const ZVec rhs = w.Q.head(n) - w.M.block(0, n, n, 1) * c.crank.accel_rad_s2;
-  w.z_accel.head(n) = w.M.topLeftCorner(n, n).llt().solve(rhs);
+  const Eigen::LLT<ZMat> llt(w.M.topLeftCorner(n, n));
+  if (llt.info() != Eigen::Success) throw_indefinite_mass_matrix(c);
+  w.z_accel.head(n) = llt.solve(rhs);
   w.crank_torque_Nm = w.M.row(n).dot(w.z_accel) - w.Q(n);
 }
 
