@@ -297,11 +297,16 @@ namespace {
 /// `clearance_mm = "rig"` takes the rig file's on purpose.
 void read_clearance(const toml::table& doc, TomlSection& root, Manifest& m) {
   const std::string rig_says = format_number(units::m_to_mm(m.rig->radial_clearance_m)) + " mm";
-  if (!root.has("clearance_mm"))
+  if (!root.has("clearance_mm")) {
+    // A misspelt key is the likelier slip: name it as finish() would.
+    for (const auto& [key, value] : doc)
+      if (closest_match(key.str(), {"clearance_mm"}))
+        root.fail(key.str(), "unknown key '" + std::string(key.str()) + "' (did you mean 'clearance_mm'?); correct it");
     throw InputError(root.file().string() + ": key 'clearance_mm' is missing: add the line clearance_mm = <this run's "
                      "radial clearance of the coupler-rocker bearing in mm (bore radius - pin radius)>; the rig file " +
                      m.rig_file.string() + "'s clearance (" + rig_says +
                      ") is not taken without being asked: clearance_mm = \"rig\" takes it");
+  }
   if (doc["clearance_mm"].is_string()) {
     const std::string text = root.string("clearance_mm");
     if (text != "rig")
