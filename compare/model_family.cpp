@@ -75,6 +75,20 @@ double turn_scatter(std::span<const double> turns, std::size_t n) {
   return std::sqrt(total / static_cast<double>(n));
 }
 
+void judge_below_first_finding(ModelFamilyCheck& c) {
+  c.judged_below_hz.reset();
+  c.a_scatter_below.reset();
+  c.measured_scatter_below = c.model_scatter_below = 0;
+  c.cannot_judge.clear();
+  if (c.unmodelled.empty()) return;
+  const UnmodelledEnergy& u = c.unmodelled.front();
+  c.judged_below_hz = u.judged_below_hz;
+  c.measured_scatter_below = u.measured_scatter_below;
+  c.model_scatter_below = u.model_scatter_below;
+  c.a_scatter_below = u.a_scatter_below;
+  c.cannot_judge = u.cannot_judge;
+}
+
 ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<const double> model,
                                     std::span<const double> nominal, double crank_hz, double filter_high_hz,
                                     const ModelFamilySettings& settings) {
@@ -207,22 +221,22 @@ ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<
       if (std::abs(hz - u.peak_hz) <= kNarrowShare * u.peak_hz) near_peak += e;
     u.kind = shape_total > 0 && near_peak >= 0.7 * shape_total ? "narrow resonance" : "broad ringing";
     u.rms_share = measured_ms > 0 ? std::sqrt(excess / measured_ms) : 0.0;
+    // Below this finding (and below kCutShareOfPeak of its peak) the family
+    // is taken to hold: the agreement there, should this be the first finding.
+    u.judged_below_hz = std::min(u.low_hz, kCutShareOfPeak * u.peak_hz);
+    const double cut_order = u.judged_below_hz / crank_hz;
+    if (cut_order < kMinJudgedOrders) {
+      u.cannot_judge = "the unmodelled energy starts below crank order " + std::to_string(static_cast<int>(kMinJudgedOrders));
+    } else {
+      u.measured_scatter_below = turn_scatter(low_passed_turns(measured, n, cut_order), n);
+      u.model_scatter_below = turn_scatter(low_passed_turns(model, n, cut_order), n);
+      if (u.measured_scatter_below > 0) u.a_scatter_below = u.model_scatter_below / u.measured_scatter_below;
+      else u.cannot_judge = "no turn-to-turn scatter is left below the band";
+    }
     c.unmodelled.push_back(u);
     b = hi + 1;
   }
-  if (!c.unmodelled.empty()) {
-    const double cut_hz = std::min(c.unmodelled.front().low_hz, kCutShareOfPeak * c.unmodelled.front().peak_hz);
-    c.judged_below_hz = cut_hz;
-    const double cut_order = cut_hz / crank_hz;
-    if (cut_order < kMinJudgedOrders) {
-      c.cannot_judge = "the unmodelled energy starts below crank order " + std::to_string(static_cast<int>(kMinJudgedOrders));
-    } else {
-      c.measured_scatter_below = turn_scatter(low_passed_turns(measured, n, cut_order), n);
-      c.model_scatter_below = turn_scatter(low_passed_turns(model, n, cut_order), n);
-      if (c.measured_scatter_below > 0) c.a_scatter_below = c.model_scatter_below / c.measured_scatter_below;
-      else c.cannot_judge = "no turn-to-turn scatter is left below the band";
-    }
-  }
+  judge_below_first_finding(c);
   return c;
 }
 

@@ -91,6 +91,14 @@ struct UnmodelledEnergy {
   double low_hz = 0, high_hz = 0, peak_hz = 0;
   double rms_share = 0;      ///< √(excess / mean square of the measured signal)
   double excess_ratio = 0;   ///< largest band ratio over the typical one
+  /// Were this the first finding: where the agreement is judged (Hz), the
+  /// turn-to-turn scatter of both sides below it, their ratio, or why it
+  /// cannot be judged (a session may set a finding aside, see
+  /// report/family_across_speeds.hpp, and the next one then decides).
+  double judged_below_hz = 0;
+  double measured_scatter_below = 0, model_scatter_below = 0;
+  std::optional<double> a_scatter_below;
+  std::string cannot_judge;
 };
 
 struct ModelFamilyCheck {
@@ -113,6 +121,10 @@ struct ModelFamilyCheck {
 ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<const double> model,
                                     std::span<const double> nominal, double crank_hz, double filter_high_hz,
                                     const ModelFamilySettings& settings);
+
+/// The check's verdict fields (judged_below_hz, the scatters below, a,
+/// cannot_judge) from its first finding, or cleared when it has none.
+void judge_below_first_finding(ModelFamilyCheck& c);
 
 /// Turns × N (consecutive turns) with every crank order at or above
 /// `cut_order` removed, by one transform of the whole record.

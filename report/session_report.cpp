@@ -24,6 +24,7 @@
 #include "common/build_id.hpp"
 #include "common/version.hpp"
 #include "report/analysis_cache.hpp"
+#include "report/family_across_speeds.hpp"
 #include "report/comparison_record.hpp"
 #include "report/file_hash.hpp"
 #include "report/fit_record.hpp"
@@ -158,7 +159,7 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   const std::string fit_name = fit ? std::filesystem::proximate(fit->file, o.session_dir).string() : std::string();
   // Per recording, kept to the end: the record without its bulk (summary.json
   // and the session's tables), its row of the fit section and its page part.
-  // The bulk is read by the worker that made it (series files, verdict, fit
+  // The bulk is read in the second pass below (series files, verdict, fit
   // row, page) and freed there.
   const std::string made_by = series_made_by(kVersion, o.command_line);
   ensure_output_dir(out_dir / "series");
@@ -179,15 +180,21 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   const std::size_t cores = o.jobs > 0 ? o.jobs : default_jobs();
   const std::size_t jobs = std::clamp<std::size_t>(cores, 1, n);
   analysis.threads = static_cast<unsigned>(std::max<std::size_t>(1, cores / jobs));
-  {
+  // Two passes over the recordings, each on `jobs` workers: the records
+  // (analysis, theory, model-family check), then, after the session's
+  // cross-speed look at the model-family findings
+  // (report/family_across_speeds.hpp), each record's series, verdict and
+  // page. Between the two every record is held whole (its series included).
+  std::vector<json> full(n);
+  auto in_parallel = [&](const auto& step, bool show) {
     std::atomic<std::size_t> next{0}, done{0};
-    Progress bar("report", n, o.progress);
+    Progress bar("report", n, o.progress && show);
     std::mutex io;
     std::exception_ptr failure;
     auto worker = [&] {
       for (std::size_t i; (i = next.fetch_add(1)) < n;) {
         try {
-          finish(i, record_of(i));
+          step(i);
         } catch (...) {  // an output that cannot be written: stop every worker, rethrow below
           const std::lock_guard lock(io);
           if (!failure) failure = std::current_exception();
@@ -205,7 +212,10 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     worker();
     pool.clear();  // joins
     if (failure) std::rethrow_exception(failure);
-  }
+  };
+  in_parallel([&](std::size_t i) { full[i] = record_of(i); }, true);
+  set_aside_findings_that_move_with_speed(full);
+  in_parallel([&](std::size_t i) { finish(i, std::exchange(full[i], json())); }, false);
 
   ReportOutcome out;
   json records = json::array();

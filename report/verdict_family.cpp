@@ -14,6 +14,22 @@ namespace {
 std::string num(double v, int digits = 3) { return format_number(v, digits); }
 std::string hz(double v) { return format_number(v, 4) + " Hz"; }
 
+UnmodelledEnergy unmodelled_of(const json& u) {
+  UnmodelledEnergy e;
+  e.kind = u.value("kind", "");
+  e.low_hz = u.value("low_hz", 0.0);
+  e.high_hz = u.value("high_hz", 0.0);
+  e.peak_hz = u.value("peak_hz", 0.0);
+  e.rms_share = u.value("rms_share", 0.0);
+  e.excess_ratio = u.value("excess_ratio", 0.0);
+  e.judged_below_hz = u.value("judged_below_hz", 0.0);
+  e.measured_scatter_below = u.value("measured_scatter_below", 0.0);
+  e.model_scatter_below = u.value("model_scatter_below", 0.0);
+  if (u.contains("a_scatter_below") && u["a_scatter_below"].is_number()) e.a_scatter_below = u["a_scatter_below"].get<double>();
+  e.cannot_judge = u.value("cannot_judge", "");
+  return e;
+}
+
 }  // namespace
 
 json model_family_json(const ModelFamilyCheck& c) {
@@ -27,9 +43,14 @@ json model_family_json(const ModelFamilyCheck& c) {
     bands.push_back({{"low_hz", b.low_hz}, {"high_hz", b.high_hz}, {"measured_ms", b.measured_ms}, {"model_ms", b.model_ms},
                      {"ratio_to_neighbours", b.ratio_to_neighbours},
                      {"prominence", b.prominence}, {"unmodelled", b.unmodelled}});
-  for (const UnmodelledEnergy& u : c.unmodelled)
-    found.push_back({{"kind", u.kind}, {"low_hz", u.low_hz}, {"high_hz", u.high_hz}, {"peak_hz", u.peak_hz},
-                     {"rms_share", u.rms_share}, {"excess_ratio", u.excess_ratio}});
+  for (const UnmodelledEnergy& u : c.unmodelled) {
+    json f = {{"kind", u.kind}, {"low_hz", u.low_hz}, {"high_hz", u.high_hz}, {"peak_hz", u.peak_hz},
+              {"rms_share", u.rms_share}, {"excess_ratio", u.excess_ratio}, {"judged_below_hz", u.judged_below_hz},
+              {"measured_scatter_below", u.measured_scatter_below}, {"model_scatter_below", u.model_scatter_below},
+              {"a_scatter_below", u.a_scatter_below ? json(*u.a_scatter_below) : json(nullptr)}};
+    if (!u.cannot_judge.empty()) f["cannot_judge"] = u.cannot_judge;
+    found.push_back(f);
+  }
   j["quantity"] = "alpha3_rad_s2";
   j["crank_hz"] = c.crank_hz;
   j["checked_up_to_hz"] = c.checked_up_to_hz;
@@ -51,12 +72,12 @@ std::optional<VerdictFamily> verdict_family(const json& r) {
   f.checked = j.value("checked", false);
   f.not_checked = j.value("not_checked", "");
   f.checked_up_to_hz = j.value("checked_up_to_hz", 0.0);
-  for (const json& u : j.value("unmodelled", json::array()))
-    f.unmodelled.push_back({u.value("kind", ""), u.value("low_hz", 0.0), u.value("high_hz", 0.0), u.value("peak_hz", 0.0),
-                            u.value("rms_share", 0.0), u.value("excess_ratio", 0.0)});
+  for (const json& u : j.value("unmodelled", json::array())) f.unmodelled.push_back(unmodelled_of(u));
   if (j.contains("judged_below_hz") && j["judged_below_hz"].is_number()) f.judged_below_hz = j["judged_below_hz"].get<double>();
   if (j.contains("a_scatter_below") && j["a_scatter_below"].is_number()) f.a_scatter_below = j["a_scatter_below"].get<double>();
   f.cannot_judge = j.value("cannot_judge", "");
+  for (const json& u : j.value("moves_with_speed", json::array())) f.moves_with_speed.push_back(unmodelled_of(u));
+  f.moves_with_speed_text = j.value("moves_with_speed_text", "");
   return f;
 }
 
@@ -69,17 +90,19 @@ VerdictPart family_part(const VerdictInputs& in) {
   if (!in.family) return {VerdictLevel::not_judged, "not checked", "The model family was not checked (a record from an older fourbar)."};
   const VerdictFamily& f = *in.family;
   if (!f.checked) return {VerdictLevel::not_judged, "not checked", "The model family was not checked: " + f.not_checked + "."};
+  const std::string set_aside = f.moves_with_speed_text.empty() ? std::string() : " " + f.moves_with_speed_text;
   if (f.unmodelled.empty())
     return {VerdictLevel::good, "holds",
             "No energy the model lacks: up to " + hz(f.checked_up_to_hz) +
-                " the measured α3 deviation has, band by band, the spectrum of the model's (no link vibration or sensor resonance found)."};
+                " the measured α3 deviation has, band by band, the spectrum of the model's (no link vibration or sensor resonance found)." +
+                set_aside};
   const UnmodelledEnergy& u = f.unmodelled.front();
   std::string s = "The measurement holds energy the rigid model does not have: " + unmodelled_text(u);
   for (std::size_t i = 1; i < f.unmodelled.size(); ++i) s += "; " + unmodelled_text(f.unmodelled[i]);
   s += u.kind == "narrow resonance"
            ? ". A narrow resonance is a link's bending mode or the accelerometer's mounted resonance (compare its calibration sheet); "
            : ". Broad ringing after the impacts is the links' or the frame's structural response; ";
-  s += "the model agreement is judged below " + hz(f.judged_below_hz.value_or(u.low_hz)) + " only. Stiffen or damp the mounting, or compare with a model that has the links' modes.";
+  s += "the model agreement is judged below " + hz(f.judged_below_hz.value_or(u.low_hz)) + " only. Stiffen or damp the mounting, or compare with a model that has the links' modes." + set_aside;
   return {VerdictLevel::attention, u.kind + " " + format_number(u.peak_hz, 4) + " Hz (" + format_number(100 * u.rms_share, 2) + " %)", s};
 }
 

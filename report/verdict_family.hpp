@@ -28,6 +28,10 @@ struct VerdictFamily {
   std::vector<UnmodelledEnergy> unmodelled;
   std::optional<double> judged_below_hz, a_scatter_below;
   std::string cannot_judge;
+  /// Findings set aside because they move with the crank speed
+  /// (report/family_across_speeds.hpp), and the sentence that says so.
+  std::vector<UnmodelledEnergy> moves_with_speed;
+  std::string moves_with_speed_text;
 };
 
 /// The record's "model_family" object.
