@@ -42,14 +42,26 @@ make them agree are searched over the box: NLopt DIRECT-L, then BOBYQA; the
 interval of each parameter is where the objective stays within its noise
 (docs/fit.md).
 
+With --model elastic the fitted theory is the linkage model (sim scenes'
+model = "linkage") with the rig file's [coupler.elastic] / [rocker.elastic]
+links and a compliant contact at the coupler-rocker joint: e sets the
+contact's damping, mu its Coulomb friction, and the model's alpha is what the
+recording's tangential accelerometers read on the elastic links (rigid +
+vibration), converted as analyze converts them. Same statistics; about 15 to
+100x the three-mode model's cost per turn (docs/fit.md "The elastic-link
+model").
+
 Writes DIR/fit.json (default SESSION_DIR/fit/fit.json): parameters ->
 restitution, friction_coefficient -> value, low, high, identifiable, profile;
-chi2 per recording at the fit and at session.toml's prior; evaluations,
-simulations, turns, time.
+chi2 per recording at the fit and at session.toml's prior; model;
+evaluations, simulations, turns, time (simulation_cpu_seconds,
+simulation_idle_wall_seconds: what the simulations would take on --jobs idle
+cores).
 
 Exit status: 0 fitted; 1 no clearance effect measurable above the noise floor
 (nothing fitted) or the run failed; 2 bad arguments or session (nothing
-written).
+written), e.g. --band-top-hz above a recording's Nyquist frequency, or
+--model elastic on a rig file without the links' modal data.
 )";
 
 std::pair<double, double> parse_box(const std::string& option, const std::string& text) {
