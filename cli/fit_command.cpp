@@ -47,9 +47,9 @@ model = "linkage") with the rig file's [coupler.elastic] / [rocker.elastic]
 links and a compliant contact at the coupler-rocker joint: e sets the
 contact's damping, mu its Coulomb friction, and the model's alpha is what the
 recording's tangential accelerometers read on the elastic links (rigid +
-vibration), converted as analyze converts them. Same statistics; about 15 to
-100x the three-mode model's cost per turn (docs/fit.md "The elastic-link
-model").
+vibration), converted as analyze converts them. Same statistics; about 20x
+the three-mode model's cost per turn with 2+2 modes, 100x with 4+4
+(docs/fit.md "The elastic-link model").
 
 Writes DIR/fit.json (default SESSION_DIR/fit/fit.json): parameters ->
 restitution, friction_coefficient -> value, low, high, identifiable, profile;
