@@ -7,6 +7,10 @@
 #include <iostream>
 #include <thread>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include "cli/command.hpp"
 #include "cluster/case_queue.hpp"
 #include "cluster/mpi_session.hpp"
@@ -15,6 +19,7 @@
 #include "common/format.hpp"
 #include "common/progress.hpp"
 #include "fit/fit_json.hpp"
+#include "fit/linkage_statistics.hpp"
 #include "fit/session_fit.hpp"
 #include "fit/simulation_cache.hpp"
 #include "report/session_settings.hpp"
@@ -37,14 +42,26 @@ make them agree are searched over the box: NLopt DIRECT-L, then BOBYQA; the
 interval of each parameter is where the objective stays within its noise
 (docs/fit.md).
 
+With --model elastic the fitted theory is the linkage model (sim scenes'
+model = "linkage") with the rig file's [coupler.elastic] / [rocker.elastic]
+links and a compliant contact at the coupler-rocker joint: e sets the
+contact's damping, mu its Coulomb friction, and the model's alpha is what the
+recording's tangential accelerometers read on the elastic links (rigid +
+vibration), converted as analyze converts them. Same statistics; about 20x
+the three-mode model's cost per turn with 2+2 modes, 100x with 4+4
+(docs/fit.md "The elastic-link model").
+
 Writes DIR/fit.json (default SESSION_DIR/fit/fit.json): parameters ->
 restitution, friction_coefficient -> value, low, high, identifiable, profile;
-chi2 per recording at the fit and at session.toml's prior; evaluations,
-simulations, turns, time.
+chi2 per recording at the fit and at session.toml's prior; model;
+evaluations, simulations, turns, time (simulation_cpu_seconds,
+simulation_idle_wall_seconds: what the simulations would take on --jobs idle
+cores).
 
 Exit status: 0 fitted; 1 no clearance effect measurable above the noise floor
 (nothing fitted) or the run failed; 2 bad arguments or session (nothing
-written).
+written), e.g. --band-top-hz above a recording's Nyquist frequency, or
+--model elastic on a rig file without the links' modal data.
 )";
 
 std::pair<double, double> parse_box(const std::string& option, const std::string& text) {
@@ -75,6 +92,11 @@ std::string operating_points(const std::vector<RecordingTarget>& targets) {
                   t.measured[0].has_value() ? 1 : 0, t.measured[1].has_value() ? 1 : 0,
                   t.measured_band[0].has_value() ? 1 : 0, t.measured_band[1].has_value() ? 1 : 0);
     text += t.name + " " + line;
+    for (const auto& m : t.sensor)
+      if (m) {
+        std::snprintf(line, sizeof line, "sensor %a %a %a\n", m->r_m, m->h_m, m->sign);
+        text += line;
+      }
     if (t.band_filter) {
       std::snprintf(line, sizeof line, "band %a %a\n", t.band_filter->low_hz, t.band_filter->high_hz);
       text += line;
@@ -86,7 +108,16 @@ std::string operating_points(const std::vector<RecordingTarget>& targets) {
 }  // namespace
 
 int run_fit(const Invocation& inv) {
-  std::string dir, out, restitution_box, friction_box;
+#ifdef __GLIBC__
+  // Every simulation allocates and frees buffers of tens of MB (its samples,
+  // the band's FFT): above glibc's mmap threshold (at most 32 MB) each came
+  // fresh from the kernel and was faulted in page by page: 3.5 million page
+  // faults, 30 of 156 s CPU in the kernel for the sample session (docs/fit.md
+  // "Search and cost"). Kept in the heap they are reused.
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
+  std::string dir, out, restitution_box, friction_box, model_name = "three-mode";
   bool per_recording = false, smooth_only = false, quiet = false;
   int jobs = 0, turns = 0, warmup = 20;
   double band_top_hz = kBandTopHz;
@@ -102,12 +133,22 @@ int run_fit(const Invocation& inv) {
       "warmup", po::value(&warmup), "simulated turns discarded before them (default 20)")(
       "band-top-hz", po::value(&band_top_hz),
       "upper edge of the band above the averaging filter whose energy carries e (default 3840: where rigid and "
-      "0.1-0.3 ms compliant impacts agree, docs/fit.md \"Band top\"; never above 0.3x the sample rate)")(
+      "0.1-0.3 ms compliant impacts agree, docs/fit.md \"Band top\"; the band stops at 0.3x the sample rate; "
+      "a value above a recording's Nyquist frequency, half its sample rate, is bad input: exit 2)")(
       "band-offset-sigma", po::value(&o.modelling_offset_sigma.band),
       "width (log) of the shared offset the model's band energy may carry from modelling choices, profiled out "
       "(default 0.26; 0: none; docs/fit.md \"Modelling choices\")")(
       "spread-offset-sigma", po::value(&o.modelling_offset_sigma.statistic[index_of(ResponseStatistic::spread)]),
       "the same for the spread over turns (default 0.022)")(
+      "model", po::value(&model_name),
+      "the theory fitted: three-mode (default: the rigid clearance model) or elastic (the linkage model with the "
+      "rig's [coupler.elastic]/[rocker.elastic] links and a compliant contact; the accelerometers read rigid + "
+      "elastic motion; docs/fit.md \"The elastic-link model\")")(
+      "elastic-modes", po::value(&o.model.elastic_modes),
+      "with --model elastic: bending modes per elastic link, 1-4 (default: the rig table's modes; the cost grows "
+      "about 8x from 2 to 4)")(
+      "contact-stiffness", po::value(&o.model.contact_stiffness_N_per_m_n),
+      "with --model elastic: the compliant contact's K in N/m^1.5 (default: from the rig's bearing keys)")(
       "jobs,j", po::value(&jobs), "simulations (and analysis chunks) at once (default: every core; under MPI one per rank)");
   add_quiet_option(opts, quiet);
   po::positional_options_description pos;
@@ -129,6 +170,24 @@ int run_fit(const Invocation& inv) {
   if (!(band_top_hz > 0))
     throw InputError("fit: --band-top-hz " + format_number(band_top_hz, 6) +
                      " must be above 0 (e.g. --band-top-hz 3840; at most 0.3x the sample rate is used)");
+  const bool band_top_given = vm.count("band-top-hz") > 0;
+  o.model.kind = fit_model_kind(model_name);
+  const bool elastic = o.model.kind == FitModelKind::elastic;
+  if (!elastic && (vm.count("elastic-modes") || vm.count("contact-stiffness")))
+    throw InputError(std::string("fit: --") + (vm.count("elastic-modes") ? "elastic-modes" : "contact-stiffness") +
+                     " belongs to the elastic-link model; add --model elastic or leave it out");
+  if (vm.count("elastic-modes") && !(o.model.elastic_modes >= 1 && o.model.elastic_modes <= 4))
+    throw InputError("fit: --elastic-modes " + std::to_string(o.model.elastic_modes) + " must be 1 to 4");
+  if (vm.count("contact-stiffness") && !(o.model.contact_stiffness_N_per_m_n > 0))
+    throw InputError("fit: --contact-stiffness " + format_number(o.model.contact_stiffness_N_per_m_n, 6) +
+                     " must be above 0 (N/m^1.5, e.g. 1e10)");
+  // The linkage model's tolerance is on its scaled state (docs/linkage-model.md);
+  // 1e-6 is where bench/elastic_linkage_work_precision puts its cost at
+  // 0.06 s/turn (2+2 modes). The compliant contact needs e > 0 (e = 0: infinite damping).
+  if (elastic) {
+    o.tolerance = 1e-6;
+    if (restitution_box.empty()) o.box.restitution_low = 0.05;
+  }
 
   const std::filesystem::path session = dir;
   const SessionSettings settings = load_session_settings(session);
@@ -163,18 +222,35 @@ int run_fit(const Invocation& inv) {
     bar.set_label("fit: analysing " + rec.filename().string());
     bar.update(static_cast<std::uint64_t>(&rec - files.recordings.data()));
     double sample_rate_hz = 0;
+    std::optional<RecordingTarget> target;
     try {
       const RecordingAnalysis a = analyze_recording(rec, manifest, analysis);
       sample_rate_hz = a.acquisition.recording.sample_rate_hz;
-      std::optional<RecordingAnalysis> band;
-      if (const auto bo = band_analysis_options(a, analysis, band_top_hz)) band = analyze_recording(rec, manifest, *bo);
-      targets.push_back(make_recording_target(a, band ? &*band : nullptr, rec.filename().string()));
-      measured_turns.push_back(a.coupler ? a.coupler->alpha_grid : a.rocker ? a.rocker->alpha_grid : std::vector<double>{});
-      max_turns = std::max(max_turns, targets.back().turns);
+      if (!(band_top_given && band_top_hz > 0.5 * sample_rate_hz)) {  // else bad input, said below
+        std::optional<RecordingAnalysis> band;
+        if (const auto bo = band_analysis_options(a, analysis, band_top_hz)) band = analyze_recording(rec, manifest, *bo);
+        target = make_recording_target(a, band ? &*band : nullptr, rec.filename().string());
+        measured_turns.push_back(a.coupler ? a.coupler->alpha_grid : a.rocker ? a.rocker->alpha_grid : std::vector<double>{});
+      }
     } catch (const std::exception& e) {
       if (mpi.leader()) std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
     }
     check_band_limit(settings, rec.filename().string(), sample_rate_hz);
+    if (band_top_given && sample_rate_hz > 0 && band_top_hz > 0.5 * sample_rate_hz)
+      throw InputError("fit: --band-top-hz " + format_number(band_top_hz, 6) + " is above the Nyquist frequency of " +
+                       rec.string() + " (sample rate " + format_number(sample_rate_hz, 6) + " Hz, Nyquist " +
+                       format_number(0.5 * sample_rate_hz, 6) +
+                       " Hz): the recording holds nothing there. Give --band-top-hz at most " +
+                       format_number(0.5 * sample_rate_hz, 6) + " (the band stops at 0.3x the sample rate, " +
+                       format_number(kBandTopPerSampleRate * sample_rate_hz, 6) +
+                       " Hz, anyway), or leave it out (default 3840)");
+    if (!target) continue;
+    if (elastic) {  // the rig cannot carry the elastic model: bad input, the whole fit stops
+      check_elastic_fit_rig(*target->rig, o.model, target->clearance_m);
+      attach_sensors(*target, manifest);
+    }
+    targets.push_back(std::move(*target));
+    max_turns = std::max(max_turns, targets.back().turns);
   }
   bar.finish();
   if (targets.empty()) throw RunError("fit: no recording of " + session.string() + " could be analysed");
@@ -214,6 +290,11 @@ int run_fit(const Invocation& inv) {
   // The model-family check at the fitted parameters (compare/model_family.hpp):
   // a recording with energy the model lacks rejects the family.
   auto check_family = [&](FitResult& f, const std::vector<std::size_t>& which) {
+    if (elastic) {  // family_check_at simulates the three-mode model: no judge of the elastic one
+      f.notes.push_back("the spectral model-family check (energy the model lacks) compares with the three-mode "
+                        "model and is not run with --model elastic; the chi2/term test still is");
+      return;
+    }
     for (std::size_t r : which) {
       if (measured_turns[r].empty()) continue;
       const ModelFamilyCheck c = family_check_at(targets[r], measured_turns[r], f.best, o.warmup_turns,

@@ -1,6 +1,7 @@
 #include "fit/fit_json.hpp"
 
 #include "common/format.hpp"
+#include "fit/linkage_statistics.hpp"
 
 namespace fourbar {
 
@@ -140,8 +141,17 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
             {"seconds", f.seconds},
             {"cpu_seconds", f.cpu_seconds},
             {"seconds_per_simulation", f.seconds_per_simulation},
+            {"simulation_cpu_seconds", f.simulation_cpu_seconds},
+            {"simulation_idle_wall_seconds", f.simulation_idle_wall_seconds},
             {"threads", o.threads},
             {"notes", f.notes}};
+  j["model"] = std::string(name_of(o.model.kind));
+  if (o.model.kind == FitModelKind::elastic) {
+    j["elastic_modes"] = o.model.elastic_modes;  // 0: the rig table's
+    j["tolerance"] = o.tolerance;
+    if (!targets.empty() && targets.front().rig)
+      j["contact_stiffness_N_per_m_1_5"] = elastic_fit_stiffness(*targets.front().rig, o.model, targets.front().clearance_m);
+  }
   if (f.correlation) j["correlation_restitution_friction"] = *f.correlation;
   j["model_family"] = {{"verdict", f.model_family.rejected ? "rejected" : "not rejected"},
                        {"reasons", f.model_family.reasons},

@@ -115,6 +115,11 @@ SimulatedStatistics simulate_statistics(const RecordingTarget& t, const ContactP
   CrankGrid fine = t.grid;
   if (t.band_filter) fine.grid_points_per_rev = t.band_grid_points_per_rev;
   MatchedTheory th = simulate_matched_theory(*t.rig, t.clearance_m, t.crank_speed_rad_s, fine, settings);
+  return statistics_of_theory(t, std::move(th), turns);
+}
+
+SimulatedStatistics statistics_of_theory(const RecordingTarget& t, MatchedTheory th, int turns) {
+  const CrankGrid fine = th.grid;
   SimulatedStatistics out;
   if (t.band_filter) {
     MatchedTheory band = th;

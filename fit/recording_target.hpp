@@ -62,6 +62,9 @@ struct RecordingTarget {
   /// band's deviations from the averaged curve. White noise alone gives
   /// ≈ 0.6 for 25 turns (the scatter of the 10 % quantile).
   double effect_ratio = 0;
+  /// Each link's tangential accelerometer as analyze used it (by FitLink):
+  /// what the elastic-link model reads (attach_sensors, linkage_statistics.hpp).
+  std::array<std::optional<ResolvedMount>, 2> sensor;
 };
 
 /// The analysis of the band above the averaging filter: band-pass from the
@@ -107,5 +110,11 @@ struct ModellingChoices {
 /// turns discarded, `turns` turns through the pass band and the statistics.
 SimulatedStatistics simulate_statistics(const RecordingTarget& target, const ContactParameters& p, int warmup,
                                         int turns, double tolerance = 1e-8, const ModellingChoices& choices = {});
+
+/// The statistics of a model run already on the target's grid (the band's
+/// finer grid when the target has the band, else its analysis grid):
+/// `th.series[…].clearance_revolutions` hold `turns` turns before any pass
+/// band. Both models go through it (simulate_statistics, linkage_statistics.hpp).
+SimulatedStatistics statistics_of_theory(const RecordingTarget& target, MatchedTheory th, int turns);
 
 }  // namespace fourbar

@@ -251,7 +251,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   if (targets.empty()) throw InputError("fit: no recordings to fit");
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
-  SimulationCache cache(targets, {o.warmup_turns, o.simulated_turns, o.tolerance, std::max(1u, o.threads), o.on_simulation});
+  SimulationCache cache(targets, {o.warmup_turns, o.simulated_turns, o.tolerance, std::max(1u, o.threads), o.model, o.on_simulation});
   FitResult out;
 
   // Global stage (DIRECT-L over the box), then the local one (BOBYQA).
@@ -389,7 +389,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
       o.magnification_turns > 0 ? o.magnification_turns
                                 : kMagnificationTurnsPerMeasuredTurn * static_cast<int>(std::max<std::size_t>(max_turns, 1));
   SimulationCache long_runs(targets,
-                            {o.warmup_turns, out.magnification_turns, o.tolerance, std::max(1u, o.threads), o.on_simulation});
+                            {o.warmup_turns, out.magnification_turns, o.tolerance, std::max(1u, o.threads), o.model, o.on_simulation});
   long_runs.ensure({best, prior});
   out.magnification_simulations = long_runs.simulations();
   for (std::size_t r = 0; r < targets.size(); ++r) {
@@ -448,6 +448,8 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
   out.turns_simulated = cache.turns_simulated() + long_runs.turns_simulated();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  out.simulation_cpu_seconds = cache.simulation_cpu_seconds() + long_runs.simulation_cpu_seconds();
+  out.simulation_idle_wall_seconds = cache.idle_wall_seconds() + long_runs.idle_wall_seconds();
   out.seconds_per_simulation =
       cache.simulations() > 0 ? cache.compute_seconds() * std::max(1u, o.threads) / cache.simulations() : 0.0;
   return out;

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "fit/family_judgement.hpp"
+#include "fit/fit_model.hpp"
 #include "fit/matched_magnification.hpp"
 #include "fit/objective_noise.hpp"
 #include "fit/recording_target.hpp"
@@ -73,6 +74,7 @@ struct FitOptions {
   int warmup_turns = 20;
   int simulated_turns = 50;        ///< turns per simulation kept for the statistics
   double tolerance = 1e-8;         ///< integrator tolerance
+  FitModel model;                  ///< the theory fitted (default: the three-mode model)
   unsigned threads = 1;
   int global_evaluations = 16;     ///< DIRECT-L
   int local_evaluations = 10;      ///< BOBYQA
@@ -151,6 +153,10 @@ struct FitResult {
   double seconds = 0;        ///< wall time
   double cpu_seconds = 0;    ///< CPU time of the process over the fit (all threads)
   double seconds_per_simulation = 0;  ///< CPU time per simulation (wall × threads / simulations, approx.)
+  /// The simulations' CPU time (each on its thread's clock; this process's
+  /// only under MPI) and the wall time they would take on `threads` idle
+  /// cores (SimulationCache::idle_wall_seconds).
+  double simulation_cpu_seconds = 0, simulation_idle_wall_seconds = 0;
   /// Magnification factor a of α3 (α4 without a coupler channel) per
   /// recording, at the fit and at the prior, with its standard error: the
   /// model's expected RMS of the averaged deviation of the measured number

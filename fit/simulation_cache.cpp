@@ -5,16 +5,25 @@
 #include <cstdio>
 #include <cmath>
 #include <cstring>
+#include <ctime>
+#include <mutex>
 #include <stdexcept>
 
 #include "cluster/case_queue.hpp"
 #include "common/error.hpp"
+#include "fit/linkage_statistics.hpp"
 
 namespace fourbar {
 
 namespace {
 
 constexpr double kResolution = 1e-6;
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 std::int64_t quantised(double v) { return static_cast<std::int64_t>(std::llround(v / kResolution)); }
 
@@ -76,9 +85,10 @@ CachedSimulation decode(const std::string& in) {
 /// What a rank needs to run one simulation: the recording's name, the
 /// parameters as simulated and the settings, doubles in exact hexadecimal.
 std::string describe(const std::string& name, const ContactParameters& p, const SimulationSettings& s) {
-  char line[200];
-  std::snprintf(line, sizeof line, "%a %d %a %d %d %a\n", p.restitution, static_cast<int>(p.contact),
-                p.friction_coefficient, s.warmup_turns, s.simulated_turns, s.tolerance);
+  char line[260];
+  std::snprintf(line, sizeof line, "%a %d %a %d %d %a %d %d %a\n", p.restitution, static_cast<int>(p.contact),
+                p.friction_coefficient, s.warmup_turns, s.simulated_turns, s.tolerance, static_cast<int>(s.model.kind),
+                s.model.elastic_modes, s.model.contact_stiffness_N_per_m_n);
   return line + name;
 }
 
@@ -89,19 +99,23 @@ std::string SimulationCache::simulate_described(const std::vector<RecordingTarge
   const auto eol = description.find('\n');
   ContactParameters p;
   SimulationSettings s;
-  int contact = 0;
+  int contact = 0, kind = 0;
   if (eol == std::string::npos ||
-      std::sscanf(description.c_str(), "%la %d %la %d %d %la", &p.restitution, &contact, &p.friction_coefficient,
-                  &s.warmup_turns, &s.simulated_turns, &s.tolerance) != 6)
+      std::sscanf(description.c_str(), "%la %d %la %d %d %la %d %d %la", &p.restitution, &contact,
+                  &p.friction_coefficient, &s.warmup_turns, &s.simulated_turns, &s.tolerance, &kind,
+                  &s.model.elastic_modes, &s.model.contact_stiffness_N_per_m_n) != 9)
     throw RunError("fit: internal error: unreadable simulation case '" + description + "'");
   p.contact = static_cast<ContactLaw>(contact);
+  s.model.kind = static_cast<FitModelKind>(kind);
   const std::string name = description.substr(eol + 1);
   const auto target = std::find_if(targets.begin(), targets.end(), [&](const RecordingTarget& t) { return t.name == name; });
   if (target == targets.end())
     throw RunError("fit: internal error: this rank has no recording named '" + name + "' to simulate");
   CachedSimulation c;
   try {
-    c.statistics = simulate_statistics(*target, p, s.warmup_turns, s.simulated_turns, s.tolerance);
+    c.statistics = s.model.kind == FitModelKind::elastic
+                       ? simulate_linkage_statistics(*target, p, s.warmup_turns, s.simulated_turns, s.tolerance, s.model)
+                       : simulate_statistics(*target, p, s.warmup_turns, s.simulated_turns, s.tolerance);
   } catch (const std::exception& e) {
     c.error = e.what();
     if (c.error.empty()) c.error = "failed";
@@ -141,13 +155,32 @@ void SimulationCache::ensure(const std::vector<ContactParameters>& points) {
   std::vector<std::string> cases;
   for (const auto& [r, p] : todo) cases.push_back(describe(targets_[r].name, p, settings_));
   const auto t0 = std::chrono::steady_clock::now();
+  std::mutex timing;
+  std::map<std::string, double> cpu_of;  // description → its thread's CPU seconds
   const CaseQueueStats stats = run_described_cases(
-      cases, settings_.threads, [&](const std::string& description) { return simulate_described(targets_, description); },
+      cases, settings_.threads,
+      [&](const std::string& description) {
+        const double c0 = thread_cpu_seconds();
+        std::string bytes = simulate_described(targets_, description);
+        const double used = thread_cpu_seconds() - c0;
+        const std::lock_guard<std::mutex> lock(timing);
+        cpu_of[description] = used;
+        return bytes;
+      },
       [&](std::size_t i, std::string&& bytes) {
         cache_[key(todo[i].first, todo[i].second)] = decode(bytes);
         if (settings_.on_simulation) settings_.on_simulation();
       });
   compute_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Each case to the worker that is free first, in queue order.
+  std::vector<double> free_at(std::max(1u, settings_.threads), 0.0);
+  for (const std::string& c : cases) {
+    const auto it = cpu_of.find(c);
+    if (it == cpu_of.end()) continue;
+    cpu_s_ += it->second;
+    *std::min_element(free_at.begin(), free_at.end()) += it->second;
+  }
+  idle_wall_s_ += *std::max_element(free_at.begin(), free_at.end());
   simulations_ += static_cast<int>(todo.size());
   computed_here_ += static_cast<int>(stats.computed_here);
   turns_ += static_cast<long long>(todo.size()) * (settings_.warmup_turns + settings_.simulated_turns);

@@ -15,6 +15,7 @@
 #include <tuple>
 #include <vector>
 
+#include "fit/fit_model.hpp"
 #include "fit/recording_target.hpp"
 
 namespace fourbar {
@@ -24,6 +25,7 @@ struct SimulationSettings {
   int simulated_turns = 50;
   double tolerance = 1e-8;
   unsigned threads = 1;
+  FitModel model;  ///< the theory simulated (fit_model.hpp)
   /// Called after each simulation arrives (one call at a time, maybe from a
   /// worker thread): progress for `fourbar fit`; may be empty.
   std::function<void()> on_simulation;
@@ -59,6 +61,13 @@ class SimulationCache {
   int computed_here() const { return computed_here_; }
   long long turns_simulated() const { return turns_; }
   double compute_seconds() const { return compute_s_; }
+  /// CPU time of the simulations computed by this process's threads (each
+  /// timed on its thread's clock), and the wall time they would take on
+  /// `threads` idle cores: each batch list-scheduled in queue order with
+  /// those times (what the queue does when no other load competes). Under
+  /// MPI the other ranks' cases are not timed.
+  double simulation_cpu_seconds() const { return cpu_s_; }
+  double idle_wall_seconds() const { return idle_wall_s_; }
   const std::vector<RecordingTarget>& targets() const { return targets_; }
 
  private:
@@ -70,7 +79,7 @@ class SimulationCache {
   std::map<Key, CachedSimulation> cache_;
   int simulations_ = 0, computed_here_ = 0;
   long long turns_ = 0;
-  double compute_s_ = 0;
+  double compute_s_ = 0, cpu_s_ = 0, idle_wall_s_ = 0;
 };
 
 }  // namespace fourbar

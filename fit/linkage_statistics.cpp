@@ -1,0 +1,179 @@
+#include "fit/linkage_statistics.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "acquire/manifest.hpp"
+#include "analyze/analysis_channels.hpp"
+#include "analyze/conversion.hpp"
+#include "analyze/link_motion.hpp"
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "common/units.hpp"
+#include "mechanism/kinematics.hpp"
+#include "sim/compliant/contact_stiffness.hpp"
+#include "sim/drive/crank_motion.hpp"
+#include "sim/linkage/linkage_simulator.hpp"
+
+namespace fourbar {
+
+std::string_view name_of(FitModelKind k) { return k == FitModelKind::elastic ? "elastic" : "three-mode"; }
+
+FitModelKind fit_model_kind(const std::string& text) {
+  if (text == "three-mode") return FitModelKind::three_mode;
+  if (text == "elastic") return FitModelKind::elastic;
+  throw InputError("fit: --model '" + text +
+                   "': write --model three-mode (the default: the rigid three-mode clearance model) or --model elastic "
+                   "(the linkage model with the rig's elastic coupler and rocker, docs/fit.md)");
+}
+
+namespace {
+
+std::string rig_name(const Rig& rig) { return rig.source.empty() ? std::string("the rig") : rig.source.string(); }
+
+/// The linkage model's spec for a fit point (the compliant law's other keys at their defaults).
+LinkageSpec elastic_spec(const Rig& rig, const FitModel& model, double clearance_m, const ContactParameters& p,
+                         double tolerance) {
+  const CompliantSettings k;  // exponent 1.5, calibrated damping, the friction ramp's speeds
+  LinkageSpec spec;
+  spec.clearance_m = {0.0, clearance_m, 0.0};
+  spec.law = {elastic_fit_stiffness(rig, model, clearance_m), k.exponent, k.damping, p.restitution};
+  spec.friction = {p.contact == ContactLaw::stick_slip ? p.friction_coefficient : 0.0, k.friction_stick_speed_m_s,
+                   k.friction_slip_speed_m_s};
+  spec.damping_floor_speed_m_s = k.damping_floor_speed_m_s;
+  spec.elastic = {false, rig.coupler_elastic.has_value(), rig.rocker_elastic.has_value()};
+  spec.elastic_modes = model.elastic_modes;
+  spec.tolerance = tolerance;
+  return spec;
+}
+
+}  // namespace
+
+double elastic_fit_stiffness(const Rig& rig, const FitModel& model, double clearance_m) {
+  if (model.contact_stiffness_N_per_m_n > 0) return model.contact_stiffness_N_per_m_n;
+  const BearingBodies& b = rig.bearing;
+  std::string missing;
+  for (const auto& [key, present] : {std::pair<const char*, bool>{"bearing_length_mm", b.length_m.has_value()},
+                                     {"pin_youngs_modulus_GPa", b.pin_youngs_modulus_Pa.has_value()},
+                                     {"pin_poisson_ratio", b.pin_poisson_ratio.has_value()},
+                                     {"bushing_youngs_modulus_GPa", b.bushing_youngs_modulus_Pa.has_value()},
+                                     {"bushing_poisson_ratio", b.bushing_poisson_ratio.has_value()}})
+    if (!present) missing += (missing.empty() ? "" : ", ") + std::string(key);
+  if (!missing.empty())
+    throw InputError("fit --model elastic: " + rig_name(rig) + " has no [clearance] " + missing +
+                     " to compute the compliant contact's stiffness from; add them to the rig file "
+                     "(docs/compliant.md) or give --contact-stiffness K (N/m^1.5, e.g. 1e10)");
+  ClearanceSettings cs;
+  cs.model = ClearanceKind::compliant;
+  cs.radial_clearance_m = clearance_m;
+  resolve_contact_stiffness(rig, clearance_m, cs, [&](const char* key, const std::string& what) {
+    throw InputError("fit --model elastic: " + rig_name(rig) + ": " + key + " " + what);
+  });
+  return cs.compliant.stiffness_N_per_m_n;
+}
+
+void check_elastic_fit_rig(const Rig& rig, const FitModel& model, double clearance_m) {
+  if (!rig.coupler_elastic && !rig.rocker_elastic)
+    throw InputError("fit --model elastic: " + rig_name(rig) +
+                     " has no modal data for the links: neither [coupler.elastic] nor [rocker.elastic] (keys modes "
+                     "and either E_GPa, density_kg_m3, width_mm, thickness_mm or mode_frequencies_Hz, with "
+                     "damping_ratios; docs/flex.md, e.g. data/rigs/thesis_elastic.toml). Add the tables to the rig "
+                     "file (measure the frequencies with `fourbar tap`), or fit the rigid three-mode model "
+                     "(leave out --model elastic)");
+  for (const auto* e : {&rig.coupler_elastic, &rig.rocker_elastic})
+    if (*e && model.elastic_modes > (*e)->modes)
+      throw InputError("fit: --elastic-modes " + std::to_string(model.elastic_modes) + " but " + rig_name(rig) + "'s [" +
+                       (e == &rig.coupler_elastic ? "coupler" : "rocker") + ".elastic] gives " +
+                       std::to_string((*e)->modes) + " modes; lower --elastic-modes or raise the table's modes");
+  (void)elastic_fit_stiffness(rig, model, clearance_m);  // its own message
+  try {
+    (void)build_linkage(rig, elastic_spec(rig, model, clearance_m, ContactParameters{}, 1e-6));
+  } catch (const InputError& e) {
+    throw InputError("fit --model elastic: " + rig_name(rig) + ": " + e.what());
+  }
+}
+
+void attach_sensors(RecordingTarget& t, const std::filesystem::path& manifest_file) {
+  const AnalysisChannels channels = analysis_channels(load_manifest(manifest_file));
+  for (const LinkChannels& l : channels.links) {
+    if (!l.tangential) continue;
+    const std::size_t i = l.link == SensedLink::coupler ? 0 : 1;
+    if (t.measured[i]) t.sensor[i] = resolve_mount(*t.rig, l.tangential->mount);
+  }
+}
+
+SimulatedStatistics simulate_linkage_statistics(const RecordingTarget& t, const ContactParameters& p, int warmup,
+                                                int turns, double tolerance, const FitModel& model) {
+  const Rig& rig = *t.rig;
+  const LinkageModel linkage = build_linkage(rig, elastic_spec(rig, model, t.clearance_m, p, tolerance));
+  // The fine grid (the band's, else the analysis grid) over the kept turns:
+  // grid point k of the run is at t = 2πk/(N·|ω2|).
+  CrankGrid grid = t.grid;
+  if (t.band_filter) grid.grid_points_per_rev = t.band_grid_points_per_rev;
+  const std::size_t n = grid.grid_points_per_rev;
+  const double w = t.crank_speed_rad_s;
+  if (!(grid.direction * w > 0))
+    throw RunError("fit: " + t.name + ": the grid turns against the crank speed (internal error)");
+  const double step_s = units::kTwoPi / (static_cast<double>(n) * std::abs(w));
+  const std::size_t first = static_cast<std::size_t>(warmup) * n, rows = static_cast<std::size_t>(turns) * n;
+  std::vector<double> times(rows);
+  for (std::size_t j = 0; j < rows; ++j) times[j] = static_cast<double>(first + j) * step_s;
+
+  std::vector<LinkSensor> sensors;
+  std::array<int, 2> sensor_index{-1, -1};
+  for (std::size_t i = 0; i < 2; ++i)
+    if (t.measured[i]) {
+      if (!t.sensor[i]) throw RunError("fit: " + t.name + ": no sensor attached for the elastic model (internal error)");
+      sensor_index[i] = static_cast<int>(sensors.size());
+      sensors.push_back({i == 0 ? 1 : 2, t.sensor[i]->r_m, t.sensor[i]->h_m});
+    }
+  const ConstantSpeedCrank crank(grid.start_rad, w);
+  LinkageSimulator sim(linkage, crank);
+  sim.set_sample_times(times);
+  sim.set_sensors(sensors);
+  sim.start_centred(0.0);
+  sim.advance_to(times.back());
+  const std::vector<LinkageSample>& samples = sim.samples();
+  if (samples.size() != rows)
+    throw RunError("fit: " + t.name + ": the linkage model gave " + std::to_string(samples.size()) + " of " +
+                   std::to_string(rows) + " samples");
+
+  MatchedTheory th;
+  th.grid = grid;
+  th.crank_speed_rad_s = w;
+  th.clearance_m = t.clearance_m;
+  for (TheorySeries& s : th.series) s.nominal.resize(n), s.clearance_revolutions.resize(rows);
+  auto series = [&](LinkQuantity q) -> TheorySeries& { return th.series[index_of(q)]; };
+  for (std::size_t k = 0; k < n; ++k) {
+    const NominalMotion m = solve_motion(rig, CrankState{grid.angle_rad(static_cast<double>(k)), w, 0.0});
+    series(LinkQuantity::omega3).nominal[k] = m.omega3_rad_s, series(LinkQuantity::omega4).nominal[k] = m.omega4_rad_s;
+    series(LinkQuantity::alpha3).nominal[k] = m.alpha3_rad_s2, series(LinkQuantity::alpha4).nominal[k] = m.alpha4_rad_s2;
+  }
+  for (std::size_t j = 0; j < rows; ++j) {
+    const LinkageSample& s = samples[j];
+    series(LinkQuantity::omega3).clearance_revolutions[j] = s.omega3_rad_s;
+    series(LinkQuantity::omega4).clearance_revolutions[j] = s.omega4_rad_s;
+    for (std::size_t i = 0; i < 2; ++i) {
+      const LinkQuantity q = i == 0 ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
+      double alpha = i == 0 ? s.alpha3_rad_s2 : s.alpha4_rad_s2;
+      if (sensor_index[i] >= 0) {
+        // What analyze makes of the reading: the nominal link at this crank state.
+        const SensedLink link = i == 0 ? SensedLink::coupler : SensedLink::rocker;
+        const SensedLinkMotion nominal = nominal_link_motion(rig, link, s.crank);
+        alpha = angular_acceleration_from_tangential(rig, *t.sensor[i], nominal,
+                                                     s.sensor_m_s2[static_cast<std::size_t>(sensor_index[i])]);
+      }
+      series(q).clearance_revolutions[j] = alpha;
+    }
+  }
+  const double warm_s = static_cast<double>(first) * step_s;
+  int impacts = 0;
+  double impulse = 0;
+  for (const LinkageContact& c : sim.contacts())
+    if (c.impact && c.time_s >= warm_s) ++impacts, impulse += c.impact_impulse_Ns;
+  th.severity.impacts_per_rev = impacts / static_cast<double>(turns);
+  th.severity.sum_normal_impulse_per_rev_Ns = impulse / static_cast<double>(turns);
+  return statistics_of_theory(t, std::move(th), turns);
+}
+
+}  // namespace fourbar
