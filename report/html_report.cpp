@@ -111,10 +111,18 @@ std::string render_html_report(const json& session_in, const std::vector<Recordi
 
   for (const RecordingPage& p : pages) h << p.section_html;
 
+  // session.toml's record (title, date, operator, rig, bearing, notes) and its
+  // file name are in the header and the files table below: on screen they stay
+  // in the list, on paper (report.css) they are not printed twice.
+  json settings = data["settings"], shown_elsewhere = json::object();
+  for (const char* key : {"title", "notes", "date", "operator", "rig_id", "bearing", "file"})
+    if (settings.contains(key)) shown_elsewhere[key] = settings[key], settings.erase(key);
   h << "<section id=\"settings\"><h2>Settings</h2><div class=\"settings-list\"><table><tr><th class=\"l\">setting</th>"
        "<th class=\"l\">value</th></tr>";
-  settings_rows(h, data["settings"], "");
-  h << "</table></div>";
+  settings_rows(h, settings, "");
+  h << "<tbody class=\"shown-above\">";
+  settings_rows(h, shown_elsewhere, "");
+  h << "</tbody></table></div>";
   if (!data["settings_file"].is_null()) files_table(h, json::array({data["settings_file"]}));
   h << "</section></main><footer><p class=\"note\">Self-contained: data and Debian's dygraphs "
        "(MIT licence) are inlined; nothing is fetched.</p></footer>";

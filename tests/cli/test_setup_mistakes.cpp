@@ -111,7 +111,7 @@ TEST(SetupMistakes, MissingClearanceIsRefusedAndTheTemplateAsksForIt) {
 
 // A calibration sheet in mV/g: accepted as sensitivity_mV_per_g; the same
 // number under the m/s² key is named as the unit mix-up it is, with the key
-// the manifest has.
+// the manifest has; so are the mix-ups by 1000 (mV for V, V for mV).
 TEST(SetupMistakes, MillivoltsPerG) {
   Trial t;
   // 0.002 V per m/s² = 19.6133 mV/g, on every accelerometer.
@@ -128,6 +128,24 @@ TEST(SetupMistakes, MillivoltsPerG) {
   EXPECT_NE(r.err.find("unit mix-up or gain step: the factor is 1/g"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("give it as sensitivity_mV_per_g"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("change [[channel]] name=\"coupler_t\" volts_per_unit"), std::string::npos) << r.err;
+  // The factor 1000 both ways: mV per m/s² written as V (volts_per_unit = 2
+  // for 2 mV), and V/g written under the mV/g key (0.0196 for 19.6 mV/g).
+  struct Thousand {
+    const char* key_and_value;
+    const char* key;
+    const char* told;
+  };
+  for (const Thousand& k : {Thousand{"volts_per_unit = 2", "volts_per_unit", "the factor is 1/1000: a value in mV written where V are meant"},
+                            Thousand{"sensitivity_mV_per_g = 0.0196133", "sensitivity_mV_per_g",
+                                     "the factor is 1000: a value in V written where mV are meant"}}) {
+    Trial x;
+    x.edit(vpu + "\n", std::string(k.key_and_value) + "\n");
+    r = x.run("analyze");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("change [[channel]] name=\"coupler_t\" " + std::string(k.key)), std::string::npos)
+        << "the key the manifest has: " << k.key_and_value << ": " << r.err;
+    EXPECT_NE(r.err.find(k.told), std::string::npos) << k.key_and_value << ": " << r.err;
+  }
 }
 
 // TOML slips: the error says what to type, not only the parser's words.
