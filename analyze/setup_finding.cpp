@@ -23,10 +23,18 @@ std::string channel_key(const std::string& name, const std::string& key) {
   return "[[channel]] name=\"" + name + "\" " + key;
 }
 
+std::string finding_label(const std::string& item, const std::string& key) {
+  if (key.rfind("[[channel]] ", 0) != 0 || key.find(" and ") != std::string::npos || key.find(" or ") != std::string::npos)
+    return item;
+  const std::size_t space = key.find_last_of(' ');
+  const std::string leaf = key.substr(space + 1);
+  return leaf.empty() || leaf.find('"') != std::string::npos ? item : leaf;
+}
+
 void add_finding(SetupCheck& out, std::string item, std::string channel, std::string key, std::string manifest,
                  std::string data, double confidence) {
   SetupFinding f{std::move(item), std::move(channel), std::move(key), std::move(manifest), std::move(data), confidence, {}};
-  f.message = (f.channel.empty() ? std::string() : "channel '" + f.channel + "': ") + f.item + ": the manifest says " +
+  f.message = (f.channel.empty() ? std::string() : "channel '" + f.channel + "': ") + finding_label(f.item, f.key) + ": the manifest says " +
               f.manifest + ", the data say " + f.data + " (confidence " + percent(f.confidence) + "); change " + f.key;
   out.findings.push_back(std::move(f));
 }

@@ -12,6 +12,10 @@ namespace fourbar {
 
 /// `[[channel]] name="NAME" KEY`: how a finding names a channel's key.
 std::string channel_key(const std::string& name, const std::string& key);
+/// What a finding is called to the user: the manifest's own key for a
+/// channel's key (a manifest with sensitivity_mV_per_g is told about
+/// sensitivity_mV_per_g, not volts_per_unit), else the finding's item.
+std::string finding_label(const std::string& item, const std::string& key);
 
 /// Appends the finding with its message ("channel 'X': item: the manifest
 /// says …, the data say … (confidence N %); change KEY").

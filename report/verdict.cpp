@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <span>
 
+#include "analyze/setup_finding.hpp"
 #include "common/format.hpp"
 
 namespace fourbar {
@@ -37,7 +38,7 @@ VerdictPart setup_part(const VerdictInputs& in) {
   if (!in.findings.empty()) {
     const VerdictFinding& f = *std::max_element(in.findings.begin(), in.findings.end(),
                                                 [](const auto& a, const auto& b) { return a.confidence < b.confidence; });
-    std::string s = "The data contradict the manifest: " + f.item + (f.channel.empty() ? "" : " of " + f.channel) +
+    std::string s = "The data contradict the manifest: " + finding_label(f.item, f.key) + (f.channel.empty() ? "" : " of " + f.channel) +
                     " — the manifest says " + f.manifest + ", the data say " + f.data + " (confidence " +
                     std::to_string(std::lround(100 * f.confidence)) + " %); change " + f.key;
     if (in.findings.size() > 1) s += " (and " + std::to_string(in.findings.size() - 1) + " more, listed in the set-up box)";

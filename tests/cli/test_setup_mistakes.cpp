@@ -128,6 +128,9 @@ TEST(SetupMistakes, MillivoltsPerG) {
   EXPECT_NE(r.err.find("unit mix-up or gain step: the factor is 1/g"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("give it as sensitivity_mV_per_g"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("change [[channel]] name=\"coupler_t\" volts_per_unit"), std::string::npos) << r.err;
+  // … and the finding is called by that key, not by the internal volts_per_unit.
+  EXPECT_NE(r.err.find("channel 'coupler_t': sensitivity_mV_per_m_s2: the manifest says"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("'coupler_t': volts_per_unit:"), std::string::npos) << r.err;
   // The factor 1000 both ways: mV per m/s² written as V (volts_per_unit = 2
   // for 2 mV), and V/g written under the mV/g key (0.0196 for 19.6 mV/g).
   struct Thousand {
