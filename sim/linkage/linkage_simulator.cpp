@@ -40,7 +40,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
         per_joint(dry ? 4 : 5),
         size(static_cast<std::size_t>(2 * n + 1) +
              m.clearance_joints().size() * static_cast<std::size_t>(per_joint) + (m.any_elastic() ? 1U : 0U)),
-        integ(m.spec().tolerance, size, static_cast<std::size_t>(2 * n), m.clearance_joints().size()) {}
+        integ(m.spec().tolerance, size, static_cast<std::size_t>(2 * n), m.clearance_joints().size(), m.spec().method) {}
 
   const LinkageModel& model;
   const CrankMotion& crank;
@@ -381,8 +381,11 @@ struct LinkageSimulator::Impl final : LinkageOde {
       s.midspan_deflection_m[static_cast<std::size_t>(b - 1)] = midspan_deflection_m(model, c, ws, b);
     for (int b = 1; b < kBodies; ++b)
       if (const ElasticLink* link = model.elastic(b))
-        for (int k = 0; k < link->modes(); ++k)
-          s.modal_m[static_cast<std::size_t>(b - 1)][static_cast<std::size_t>(k)] = c.q_offsets(model.modal_index(b) + k);
+        for (int k = 0; k < link->modes(); ++k) {
+          const auto bu = static_cast<std::size_t>(b - 1), ku = static_cast<std::size_t>(k);
+          s.modal_m[bu][ku] = c.q_offsets(model.modal_index(b) + k);
+          s.modal_accel_m_s2[bu][ku] = ws.z_accel(model.modal_index(b) + k);
+        }
     for (int j : model.clearance_joints()) {
       const PairState& ps = ws.pair[static_cast<std::size_t>(j)];
       JointSample& js = s.joint[static_cast<std::size_t>(j)];
