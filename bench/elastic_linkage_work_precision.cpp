@@ -10,13 +10,19 @@
 // this single-threaded process, median of `repeats`) and wall time.
 // Lines for 2 and 4 modes per link.
 //
-//   bench/elastic_linkage_work_precision [repeats] [modes...]
-//   bench/elastic_linkage_work_precision --one MODES TOL [CSV]   (one run, for a
+//   bench/elastic_linkage_work_precision [--method bdf|esdirk4|esdirk5|erk] [repeats] [modes...]
+//   bench/elastic_linkage_work_precision [--method M] --one MODES TOL [CSV]   (one run, for a
 //     profiler; CSV gets the coupler and rocker sensor columns and α3)
+//   bench/elastic_linkage_work_precision --share MODES SAMPLES [CSV]   (the
+//     reference at tol 1e-12 sampled SAMPLES times a turn; per link and shape
+//     its eigenfrequency and the RMS of its direct part Φy_k(L/2)·η̈_k of the
+//     mid-span sensor over the sensor's RMS; CSV: the sensors and those parts,
+//     for bench/elastic_mode_share.py's spectrum)
 
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -25,6 +31,7 @@
 #include <vector>
 
 #include "common/units.hpp"
+#include "sim/flex/shape_function.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
 
 using namespace fourbar;
@@ -33,6 +40,7 @@ namespace {
 
 struct Result {
   std::vector<double> coupler, rocker, alpha3;
+  std::vector<std::array<std::array<double, 4>, 2>> modal_accel;
   double cpu_s = 0, wall_s = 0;
   std::string counters;
 };
@@ -41,6 +49,12 @@ double rel_rms(const std::vector<double>& a, const std::vector<double>& b) {
   double num = 0, den = 0;
   for (std::size_t i = 0; i < a.size(); ++i) num += (a[i] - b[i]) * (a[i] - b[i]), den += b[i] * b[i];
   return std::sqrt(num / den);
+}
+
+double rms(const std::vector<double>& a) {
+  double s = 0;
+  for (double x : a) s += x * x;
+  return std::sqrt(s / static_cast<double>(a.size()));
 }
 
 double cpu_seconds() {
@@ -52,18 +66,36 @@ double cpu_seconds() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc_in, char** argv_in) {
+  // --method bdf|esdirk4|esdirk5|erk (first), then the modes below.
+  std::vector<char*> args(argv_in, argv_in + argc_in);
+  LinkageMethod method = LinkageMethod::bdf;
+  std::string method_name = "bdf";
+  if (args.size() > 2 && std::string(args[1]) == "--method") {
+    method_name = args[2];
+    if (method_name == "esdirk4") method = LinkageMethod::esdirk4;
+    else if (method_name == "esdirk5") method = LinkageMethod::esdirk5;
+    else if (method_name == "erk") method = LinkageMethod::erk;
+    else if (method_name != "bdf") {
+      std::fprintf(stderr, "fourbar: --method %s: use bdf, esdirk4, esdirk5 or erk\n", method_name.c_str());
+      return 2;
+    }
+    args.erase(args.begin() + 1, args.begin() + 3);
+  }
+  const int argc = static_cast<int>(args.size());
+  char** argv = args.data();
   const bool one = (argc == 4 || argc == 5) && std::string(argv[1]) == "--one";
-  const int repeats = argc > 1 && !one ? std::max(1, std::atoi(argv[1])) : 3;
+  const bool share = (argc == 4 || argc == 5) && std::string(argv[1]) == "--share";
+  const int repeats = argc > 1 && !one && !share ? std::max(1, std::atoi(argv[1])) : 3;
   std::vector<int> mode_counts;
-  for (int i = 2; i < argc && !one; ++i) mode_counts.push_back(std::atoi(argv[i]));
+  for (int i = 2; i < argc && !one && !share; ++i) mode_counts.push_back(std::atoi(argv[i]));
   if (mode_counts.empty()) mode_counts = {2, 4};
   const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
   const double w = units::rpm_to_rad_s(350), T = units::kTwoPi / w;
   const ConstantSpeedCrank crank(0.0, w);
   std::vector<double> times;
   for (int i = 0; i <= 720; ++i) times.push_back(T * i / 720.0);
-  auto run = [&](int modes, double tol, int reps) {
+  auto spec = [&](int modes, double tol, LinkageMethod meth) {
     LinkageSpec s;
     s.clearance_m = {0, 0.254e-3, 0};
     s.law = {1e10, 1.5, DampingLaw::calibrated, 0.5};
@@ -71,7 +103,11 @@ int main(int argc, char** argv) {
     s.tolerance = tol;
     s.elastic = {false, true, true};
     s.elastic_modes = modes;
-    const LinkageModel m = build_linkage(rig, s);
+    s.method = meth;
+    return s;
+  };
+  auto run = [&](int modes, double tol, int reps, LinkageMethod meth) {
+    const LinkageModel m = build_linkage(rig, spec(modes, tol, meth));
     Result r;
     std::vector<double> cpu, wall;
     for (int k = 0; k < reps; ++k) {
@@ -87,10 +123,12 @@ int main(int argc, char** argv) {
       r.coupler.clear();
       r.rocker.clear();
       r.alpha3.clear();
+      r.modal_accel.clear();
       for (const LinkageSample& x : sim.samples()) {
         r.coupler.push_back(x.sensor_m_s2[0]);
         r.rocker.push_back(x.sensor_m_s2[1]);
         r.alpha3.push_back(x.alpha3_rad_s2);
+        r.modal_accel.push_back(x.modal_accel_m_s2);
       }
       r.counters = sim.integrator_counters() + ", steps " + std::to_string(sim.diagnostics().steps) + ", contacts " +
                    std::to_string(sim.contacts().size());
@@ -101,8 +139,49 @@ int main(int argc, char** argv) {
     r.wall_s = wall[wall.size() / 2];
     return r;
   };
+  if (share) {
+    // Each mode's direct part of the sensors at the reference tolerance: the
+    // lateral Φy_k(r)·η̈_k at the sensor, its RMS over the sensor's RMS.
+    const int modes = std::atoi(argv[2]), count = std::atoi(argv[3]);
+    times.clear();
+    for (int i = 0; i <= count; ++i) times.push_back(T * i / count);
+    const Result a = run(modes, 1e-12, 1, LinkageMethod::bdf);
+    const LinkageModel m = build_linkage(rig, spec(modes, 1e-12, LinkageMethod::bdf));
+    std::FILE* f = argc == 5 ? std::fopen(argv[4], "w") : nullptr;
+    if (f) std::fprintf(f, "time_s,coupler_m_s2,rocker_m_s2");
+    std::vector<std::vector<double>> parts;
+    for (int b = 1; b <= 2; ++b) {
+      const ElasticLink& link = *m.elastic(b);
+      const double phi_scale = 0.5;  // both sensors at mid-span
+      for (int k = 0; k < link.modes(); ++k) {
+        const double phi = evaluate(link.shapes[static_cast<std::size_t>(k)], phi_scale).y;
+        std::vector<double> p;
+        for (const auto& acc : a.modal_accel) p.push_back(phi * acc[static_cast<std::size_t>(b - 1)][static_cast<std::size_t>(k)]);
+        const std::vector<double>& sensor = b == 1 ? a.coupler : a.rocker;
+        std::vector<double> antinode;
+        for (const auto& acc : a.modal_accel) antinode.push_back(acc[static_cast<std::size_t>(b - 1)][static_cast<std::size_t>(k)]);
+        std::printf("%s shape %d: eigenfrequency %7.1f Hz, direct share at mid-span %.3e (shape value %+.3f), "
+                    "at its antinode %.3e\n",
+                    b == 1 ? "coupler" : "rocker", k + 1, link.frequencies_rad_s(k) / units::kTwoPi,
+                    rms(p) / rms(sensor), phi, rms(antinode) / rms(sensor));
+        if (f) std::fprintf(f, ",%s_eta%d_part_m_s2", b == 1 ? "coupler" : "rocker", k + 1);
+        parts.push_back(std::move(p));
+      }
+    }
+    if (f) {
+      std::fprintf(f, "\n");
+      for (std::size_t i = 0; i < a.coupler.size(); ++i) {
+        std::fprintf(f, "%.17g,%.17g,%.17g", times[i], a.coupler[i], a.rocker[i]);
+        for (const auto& p : parts) std::fprintf(f, ",%.17g", p[i]);
+        std::fprintf(f, "\n");
+      }
+      std::fclose(f);
+    }
+    std::printf("cpu %.3f s, %s\n", a.cpu_s, a.counters.c_str());
+    return 0;
+  }
   if (one) {
-    const Result a = run(std::atoi(argv[2]), std::atof(argv[3]), 1);
+    const Result a = run(std::atoi(argv[2]), std::atof(argv[3]), 1, method);
     std::printf("cpu %.4f s, wall %.4f s, %s\n", a.cpu_s, a.wall_s, a.counters.c_str());
     if (argc == 5)
       if (std::FILE* f = std::fopen(argv[4], "w")) {
@@ -115,15 +194,16 @@ int main(int argc, char** argv) {
   }
   std::printf("# one turn, thesis_elastic rig 350 rpm, clearance 0.254 mm at B, e = 0.5, K = 1e10, mu = 0;\n"
               "# elastic coupler and rocker; error = relative RMS against the same model at tol 1e-12 of the\n"
-              "# coupler's mid-span sensor (tangential m/s^2), the rocker's, and alpha3; CPU and wall s per turn\n");
+              "# coupler's mid-span sensor (tangential m/s^2), the rocker's, and alpha3; CPU and wall s per turn\n"
+              "# method %s (the reference is BDF at tol 1e-12 whatever the method)\n", method_name.c_str());
   for (int modes : mode_counts) {
-    const Result ref = run(modes, 1e-12, 1);
+    const Result ref = run(modes, 1e-12, 1, LinkageMethod::bdf);
     std::printf("\n## %d modes per link; reference (tol 1e-12): cpu %.3f s, %s\n", modes, ref.cpu_s,
                 ref.counters.c_str());
     std::printf("%-7s %9s %9s %11s %11s %11s  %s\n", "tol", "cpu_s", "wall_s", "err_sensor", "err_rocker",
                 "err_alpha3", "counters");
     for (double tol : {1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11}) {
-      const Result a = run(modes, tol, repeats);
+      const Result a = run(modes, tol, repeats, method);
       std::printf("%-7.0e %9.4f %9.4f %11.3e %11.3e %11.3e  %s\n", tol, a.cpu_s, a.wall_s,
                   rel_rms(a.coupler, ref.coupler), rel_rms(a.rocker, ref.rocker), rel_rms(a.alpha3, ref.alpha3),
                   a.counters.c_str());

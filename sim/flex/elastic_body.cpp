@@ -14,9 +14,11 @@ Eigen::Matrix2d rotation(double angle) {
   return a;
 }
 
+using ShapeMatrix = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxModes>;
+
 /// Φ(s) as a 2×n matrix.
-Eigen::Matrix2Xd shape_matrix(const ElasticLink& link, double s_m) {
-  Eigen::Matrix2Xd phi(2, link.modes());
+ShapeMatrix shape_matrix(const ElasticLink& link, double s_m) {
+  ShapeMatrix phi(2, link.modes());
   const double xi = s_m / link.length_m;
   for (int k = 0; k < link.modes(); ++k) {
     const ShapeValue v = evaluate(link.shapes[static_cast<std::size_t>(k)], xi);
@@ -29,15 +31,15 @@ Eigen::Matrix2Xd shape_matrix(const ElasticLink& link, double s_m) {
 }  // namespace
 
 ModalState zero_modal_state(const ElasticLink& link) {
-  const Eigen::VectorXd z = Eigen::VectorXd::Zero(link.modes());
+  const ModalVector z = ModalVector::Zero(link.modes());
   return {z, z, z};
 }
 
-Vec2 deflection(const ElasticLink& link, double s_m, const Eigen::VectorXd& eta) {
+Vec2 deflection(const ElasticLink& link, double s_m, const ModalVector& eta) {
   return to_vec(shape_matrix(link, s_m) * eta);
 }
 
-double slope_rad(const ElasticLink& link, double s_m, const Eigen::VectorXd& eta) {
+double slope_rad(const ElasticLink& link, double s_m, const ModalVector& eta) {
   double slope = 0;
   const double xi = s_m / link.length_m;
   for (int k = 0; k < link.modes(); ++k)
@@ -61,14 +63,14 @@ Vec2 point_position(const ElasticLink& link, double s_m, const FrameState& frame
 }
 
 Vec2 point_velocity(const ElasticLink& link, double s_m, const FrameState& frame, const ModalState& modal) {
-  const Eigen::Matrix2Xd phi = shape_matrix(link, s_m);
+  const ShapeMatrix phi = shape_matrix(link, s_m);
   const Eigen::Vector2d u = Eigen::Vector2d(s_m, 0) + phi * modal.eta_m;
   const Eigen::Vector2d local = frame.angular_velocity_rad_s * turn(u) + phi * modal.eta_dot_m_s;
   return frame.velocity_m_s + to_vec(rotation(frame.angle_rad) * local);
 }
 
 Vec2 point_acceleration(const ElasticLink& link, double s_m, const FrameState& frame, const ModalState& modal) {
-  const Eigen::Matrix2Xd phi = shape_matrix(link, s_m);
+  const ShapeMatrix phi = shape_matrix(link, s_m);
   const Eigen::Vector2d u = Eigen::Vector2d(s_m, 0) + phi * modal.eta_m;
   const double w = frame.angular_velocity_rad_s;
   const Eigen::Vector2d local = frame.angular_acceleration_rad_s2 * turn(u) - w * w * u +
@@ -77,45 +79,49 @@ Vec2 point_acceleration(const ElasticLink& link, double s_m, const FrameState& f
 }
 
 ElasticBodyData::ElasticBodyData(const ElasticLink& link)
-    : mass(Eigen::MatrixXd::Zero(3 + link.modes(), 3 + link.modes())),
-      quadratic_force(Eigen::VectorXd::Zero(3 + link.modes())),
-      stiffness_force(Eigen::VectorXd::Zero(3 + link.modes())),
-      damping_force(Eigen::VectorXd::Zero(3 + link.modes())),
-      point_jacobian(Eigen::Matrix2Xd::Zero(2, 3 + link.modes())) {}
+    : mass(BodyMatrix::Zero(3 + link.modes(), 3 + link.modes())),
+      quadratic_force(BodyVector::Zero(3 + link.modes())),
+      stiffness_force(BodyVector::Zero(3 + link.modes())),
+      damping_force(BodyVector::Zero(3 + link.modes())),
+      point_jacobian(Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, 3 + kMaxModes>::Zero(2, 3 + link.modes())) {}
 
 void body_terms(const ElasticLink& link, ElasticBodyData& data, const FrameState& frame, const ModalState& modal) {
   const int n = link.modes();
-  const Eigen::VectorXd& eta = modal.eta_m;
-  const Eigen::VectorXd& eta_dot = modal.eta_dot_m_s;
+  const ModalVector& eta = modal.eta_m;
+  const ModalVector& eta_dot = modal.eta_dot_m_s;
   const Eigen::Matrix2d a = rotation(frame.angle_rad);
   const Eigen::Vector2d s = link.first_moment_kg_m + link.shape_moment * eta;
-  const Eigen::VectorXd m_eta = link.modal_mass * eta;
+  ModalVector m_eta(n), v(n);  // fixed capacity, products written in place (noalias): no heap
+  m_eta.noalias() = link.modal_mass * eta;
   const double w = frame.angular_velocity_rad_s;
 
-  Eigen::MatrixXd& m = data.mass;
+  BodyMatrix& m = data.mass;
   m.setZero();
   m(0, 0) = m(1, 1) = link.mass_kg;
   m.block<2, 1>(0, 2) = a * turn(s);
-  m.block(0, 3, 2, n) = a * link.shape_moment;
+  m.block(0, 3, 2, n).noalias() = a * link.shape_moment;
   m(2, 2) = link.inertia_origin_kg_m2 + 2 * link.axial_coupling.dot(eta) + eta.dot(m_eta);
-  m.block(2, 3, 1, n) = (link.bending_coupling + link.gyroscopic.transpose() * eta).transpose();
+  v.noalias() = link.gyroscopic.transpose() * eta;
+  m.block(2, 3, 1, n) = (link.bending_coupling + v).transpose();
   m.block(3, 3, n, n) = link.modal_mass;
   m.triangularView<Eigen::StrictlyLower>() = m.transpose();
 
-  Eigen::VectorXd& q = data.quadratic_force;
-  q.head<2>() = a * (w * w * s - 2 * w * turn(link.shape_moment * eta_dot));
+  BodyVector& q = data.quadratic_force;
+  const Eigen::Vector2d s_dot = link.shape_moment * eta_dot;
+  q.head<2>() = a * (w * w * s - 2 * w * turn(s_dot));
   q(2) = -2 * w * (link.axial_coupling.dot(eta_dot) + eta_dot.dot(m_eta));
-  q.tail(n) = w * w * (link.axial_coupling + m_eta) + 2 * w * link.gyroscopic * eta_dot;
+  v.noalias() = link.gyroscopic * eta_dot;
+  q.tail(n) = w * w * (link.axial_coupling + m_eta) + 2 * w * v;
 
   data.stiffness_force.head<3>().setZero();
-  data.stiffness_force.tail(n) = -link.modal_stiffness * eta;
+  data.stiffness_force.tail(n).noalias() = -link.modal_stiffness * eta;
   data.damping_force.head<3>().setZero();
-  data.damping_force.tail(n) = -link.modal_damping * eta_dot;
+  data.damping_force.tail(n).noalias() = -link.modal_damping * eta_dot;
 }
 
 void point_jacobian(const ElasticLink& link, ElasticBodyData& data, double s_m, const FrameState& frame,
                     const ModalState& modal) {
-  const Eigen::Matrix2Xd phi = shape_matrix(link, s_m);
+  const ShapeMatrix phi = shape_matrix(link, s_m);
   const Eigen::Vector2d u = Eigen::Vector2d(s_m, 0) + phi * modal.eta_m;
   const Eigen::Matrix2d a = rotation(frame.angle_rad);
   data.point_jacobian.leftCols<2>().setIdentity();
@@ -126,7 +132,7 @@ void point_jacobian(const ElasticLink& link, ElasticBodyData& data, double s_m, 
 double kinetic_energy(const ElasticLink& link, ElasticBodyData& data, const FrameState& frame,
                       const ModalState& modal) {
   body_terms(link, data, frame, modal);
-  Eigen::VectorXd zdot(3 + link.modes());
+  BodyVector zdot(3 + link.modes());
   zdot << frame.velocity_m_s.x, frame.velocity_m_s.y, frame.angular_velocity_rad_s, modal.eta_dot_m_s;
   return 0.5 * zdot.dot(data.mass * zdot);
 }

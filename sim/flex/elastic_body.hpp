@@ -35,16 +35,23 @@ struct FrameState {
   double angular_acceleration_rad_s2 = 0;
 };
 
+/// At most this many modes per link (the rig file's limit, mechanism/link_elasticity.cpp):
+/// the per-call vectors and matrices below have fixed capacity and never touch the heap.
+inline constexpr int kMaxModes = 16;
+using ModalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxModes, 1>;
+using BodyVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3 + kMaxModes, 1>;
+using BodyMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3 + kMaxModes, 3 + kMaxModes>;
+
 /// Modal coordinates and rates (each of size link.modes()).
 struct ModalState {
-  Eigen::VectorXd eta_m, eta_dot_m_s, eta_ddot_m_s2;
+  ModalVector eta_m, eta_dot_m_s, eta_ddot_m_s2;
 };
 
 ModalState zero_modal_state(const ElasticLink& link);
 
 /// The deflection Φ(s)·η in the frame (m) and the bending slope (rad) at s.
-Vec2 deflection(const ElasticLink& link, double s_m, const Eigen::VectorXd& eta);
-double slope_rad(const ElasticLink& link, double s_m, const Eigen::VectorXd& eta);
+Vec2 deflection(const ElasticLink& link, double s_m, const ModalVector& eta);
+double slope_rad(const ElasticLink& link, double s_m, const ModalVector& eta);
 
 /// The deformed axis's unit tangent at s, in the plane: A·(1 + Φx'η, Φy'η)
 /// normalised (' = d/ds). An accelerometer at s reads its acceleration minus
@@ -60,11 +67,11 @@ Vec2 point_acceleration(const ElasticLink& link, double s_m, const FrameState& f
 
 /// The workspace of one elastic body, sized once from its link.
 struct ElasticBodyData {
-  Eigen::MatrixXd mass;             ///< M(η), (3+n)²
-  Eigen::VectorXd quadratic_force;  ///< Q_v, (3+n)
-  Eigen::VectorXd stiffness_force;  ///< (0, 0, 0, −K_ff·η)
-  Eigen::VectorXd damping_force;    ///< (0, 0, 0, −D_ff·η̇)
-  Eigen::Matrix2Xd point_jacobian;  ///< ∂r/∂z of the last point asked, 2×(3+n)
+  BodyMatrix mass;             ///< M(η), (3+n)²
+  BodyVector quadratic_force;  ///< Q_v, (3+n)
+  BodyVector stiffness_force;  ///< (0, 0, 0, −K_ff·η)
+  BodyVector damping_force;    ///< (0, 0, 0, −D_ff·η̇)
+  Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, 3 + kMaxModes> point_jacobian;  ///< ∂r/∂z of the last point asked, 2×(3+n)
 
   explicit ElasticBodyData(const ElasticLink& link);
 };

@@ -1,9 +1,9 @@
 #include "sim/integrate/linkage_integrator.hpp"
 
+#include <arkode/arkode_arkstep.h>
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
@@ -13,16 +13,19 @@
 #include <utility>
 
 #include "common/error.hpp"
+#include "sim/integrate/second_order_linear_solver.hpp"
 
 namespace fourbar {
 
 namespace {
 
 void check(int flag, const char* what) {
-  if (flag < 0) throw RunError(std::string("CVODE (BDF, linkage) ") + what + " failed (flag " + std::to_string(flag) + ")");
+  if (flag < 0) throw RunError(std::string("SUNDIALS (linkage) ") + what + " failed (flag " + std::to_string(flag) + ")");
 }
 
 void silent_handler(int, const char*, const char*, char*, void*) {}
+
+constexpr long kJacobianAge = 1000;  ///< steps between Jacobians when Newton keeps converging
 
 int rhs_fn(double t, N_Vector y, N_Vector ydot, void* user) {
   auto* self = static_cast<LinkageIntegrator*>(user);
@@ -79,6 +82,8 @@ int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector,
 }  // namespace
 
 struct LinkageIntegrator::Cvode {
+  LinkageMethod method = LinkageMethod::bdf;
+  bool ark() const { return method != LinkageMethod::bdf; }
   SUNContext ctx = nullptr;
   N_Vector y = nullptr, dky = nullptr;
   SUNMatrix jac = nullptr;
@@ -88,25 +93,33 @@ struct LinkageIntegrator::Cvode {
   bool initialised = false;
 };
 
-LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::size_t coupled, std::size_t roots)
+LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::size_t coupled, std::size_t roots,
+                                     LinkageMethod method)
     : cv_(std::make_unique<Cvode>()), size_(size), coupled_(coupled), roots_(roots) {
   if (!(coupled <= size && size > 0)) throw std::logic_error("LinkageIntegrator: size out of range");
   Cvode& c = *cv_;
+  c.method = method;
   c.tol = tolerance;
   check(SUNContext_Create(nullptr, &c.ctx), "context");
   const auto n = static_cast<sunindextype>(size);
   c.y = N_VNew_Serial(n, c.ctx);
   c.dky = N_VNew_Serial(n, c.ctx);
   N_VConst(0.0, c.y);
-  c.mem = CVodeCreate(CV_BDF, c.ctx);
-  if (!c.mem) throw RunError("CVODE (BDF, linkage): cannot create the integrator");
+  if (!c.ark()) {
+    c.mem = CVodeCreate(CV_BDF, c.ctx);
+    if (!c.mem) throw RunError("CVODE (BDF, linkage): cannot create the integrator");
+  }
   c.jac = SUNDenseMatrix(n, n, c.ctx);
-  c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
+  c.ls = second_order_linear_solver(c.ctx, size, coupled / 2);
+  if (!c.ls) throw RunError("SUNDIALS (linkage): cannot create the linear solver");
 }
 
 LinkageIntegrator::~LinkageIntegrator() {
   Cvode& c = *cv_;
-  CVodeFree(&c.mem);
+  if (c.ark())
+    ARKStepFree(&c.mem);
+  else
+    CVodeFree(&c.mem);
   SUNLinSolFree(c.ls);
   SUNMatDestroy(c.jac);
   N_VDestroy(c.y);
@@ -121,6 +134,10 @@ void LinkageIntegrator::reset(LinkageOde& ode, double t0, const std::vector<doub
   y0_ = y0;
   t_ = t0;
   stepped_ = false;
+  if (c.ark()) {
+    reset_arkode(t0);
+    return;
+  }
   if (!c.initialised) {
     check(CVodeInit(c.mem, rhs_fn, t0, c.y), "init");
     check(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
@@ -128,6 +145,12 @@ void LinkageIntegrator::reset(LinkageOde& ode, double t0, const std::vector<doub
     check(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
     check(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
     check(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
+    // The Jacobian is re-evaluated only when Newton fails to converge, not
+    // every 51 steps: it is nearly constant between contact changes (the
+    // modes are linear), and Newton still converges in ~1 iteration a step
+    // with a 1000-step-old one (elastic 4+4 modes, tol 1e-9: 48 Jacobians a
+    // turn instead of 696, same steps and error; docs/linkage-model.md).
+    check(CVodeSetJacEvalFrequency(c.mem, kJacobianAge), "Jacobian age");
     check(CVodeSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
     check(CVodeRootInit(c.mem, static_cast<int>(roots_), root_fn), "root finding");
     c.initialised = true;
@@ -138,22 +161,60 @@ void LinkageIntegrator::reset(LinkageOde& ode, double t0, const std::vector<doub
   }
 }
 
+void LinkageIntegrator::reset_arkode(double t0) {
+  Cvode& c = *cv_;
+  const bool explicit_rk = c.method == LinkageMethod::erk;
+  if (!c.initialised) {
+    c.mem = explicit_rk ? ARKStepCreate(rhs_fn, nullptr, t0, c.y, c.ctx) : ARKStepCreate(nullptr, rhs_fn, t0, c.y, c.ctx);
+    if (!c.mem) throw RunError("ARKODE (linkage): cannot create the integrator");
+    check(ARKStepSStolerances(c.mem, c.tol, c.tol), "tolerances");
+    check(ARKStepSetUserData(c.mem, this), "user data");
+    if (explicit_rk) {
+      check(ARKStepSetTableNum(c.mem, ARKODE_DIRK_NONE, ARKODE_VERNER_8_5_6), "ERK table");
+    } else {
+      check(ARKStepSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
+      check(ARKStepSetJacFn(c.mem, jac_fn), "Jacobian");
+      const ARKODE_DIRKTableID table =
+          c.method == LinkageMethod::esdirk4 ? ARKODE_ESDIRK436L2SA_6_3_4 : ARKODE_ESDIRK547L2SA2_7_4_5;
+      check(ARKStepSetTableNum(c.mem, table, ARKODE_ERK_NONE), "ESDIRK table");
+    }
+    check(ARKStepSetInterpolantDegree(c.mem, ARK_INTERP_MAX_DEGREE), "interpolant");
+    check(ARKStepSetMaxNumSteps(c.mem, 1'000'000), "max steps");
+    check(ARKStepSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
+    check(ARKStepRootInit(c.mem, static_cast<int>(roots_), root_fn), "root finding");
+    c.initialised = true;
+  } else {
+    before_reset_ = counters();
+    check(explicit_rk ? ARKStepReInit(c.mem, rhs_fn, nullptr, t0, c.y) : ARKStepReInit(c.mem, nullptr, rhs_fn, t0, c.y),
+          "reinit");
+  }
+}
+
 LinkageIntegrator::Step LinkageIntegrator::step(double t_stop) {
   Cvode& c = *cv_;
-  check(CVodeSetStopTime(c.mem, t_stop), "stop time");
   double t = t_;
-  const int flag = CVode(c.mem, t_stop, c.y, &t, CV_ONE_STEP);
+  int flag = 0;
+  bool root = false;
+  if (c.ark()) {
+    check(ARKStepSetStopTime(c.mem, t_stop), "stop time");
+    flag = ARKStepEvolve(c.mem, t_stop, c.y, &t, ARK_ONE_STEP);
+    root = flag == ARK_ROOT_RETURN;
+  } else {
+    check(CVodeSetStopTime(c.mem, t_stop), "stop time");
+    flag = CVode(c.mem, t_stop, c.y, &t, CV_ONE_STEP);
+    root = flag == CV_ROOT_RETURN;
+  }
   if (pending) std::rethrow_exception(std::exchange(pending, nullptr));
   if (flag < 0)
-    throw RunError("CVODE (BDF) could not advance the linkage model past t = " + std::to_string(t_) + " s (flag " +
+    throw RunError(std::string(c.ark() ? "ARKODE" : "CVODE (BDF)") + " could not advance the linkage model past t = " + std::to_string(t_) + " s (flag " +
                    std::to_string(flag) + "); try a looser [linkage] tolerance or a lower contact stiffness");
   Step s;
   s.start = t_;
   s.end = t;
   s.roots.assign(roots_, 0);
-  if (flag == CV_ROOT_RETURN) {
+  if (root) {
     std::vector<int> found(roots_, 0);
-    check(CVodeGetRootInfo(c.mem, found.data()), "root info");
+    check(c.ark() ? ARKStepGetRootInfo(c.mem, found.data()) : CVodeGetRootInfo(c.mem, found.data()), "root info");
     for (std::size_t i = 0; i < roots_; ++i) s.roots[i] = found[i] > 0 ? 1 : (found[i] < 0 ? -1 : 0);
     s.any_root = true;
   }
@@ -174,7 +235,7 @@ void LinkageIntegrator::interpolate(double t, std::vector<double>& y) {
     y = y_end_;
     return;
   }
-  check(CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
+  check(cv_->ark() ? ARKStepGetDky(cv_->mem, t, 0, cv_->dky) : CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
   const double* p = N_VGetArrayPointer(cv_->dky);
   y.assign(p, p + size_);
 }
@@ -182,6 +243,18 @@ void LinkageIntegrator::interpolate(double t, std::vector<double>& y) {
 LinkageIntegrator::Counters LinkageIntegrator::since_reset() const {
   Counters c;
   if (!cv_->initialised) return c;
+  if (cv_->ark()) {
+    long fe = 0, fi = 0, setups = 0;
+    ARKStepGetNumRhsEvals(cv_->mem, &fe, &fi);
+    c.rhs = fe + fi;
+    if (cv_->method != LinkageMethod::erk) {
+      ARKStepGetNumJacEvals(cv_->mem, &c.jacobians);
+      ARKStepGetNumNonlinSolvConvFails(cv_->mem, &c.newton_failures);
+    }
+    ARKStepGetNumErrTestFails(cv_->mem, &c.error_failures);
+    (void)setups;
+    return c;
+  }
   CVodeGetNumRhsEvals(cv_->mem, &c.rhs);
   CVodeGetNumJacEvals(cv_->mem, &c.jacobians);
   CVodeGetNumErrTestFails(cv_->mem, &c.error_failures);

@@ -22,11 +22,18 @@ class LinkageOde {
   virtual void witnesses(double t, const double* y, double* g) = 0;
 };
 
+/// The stepping method: CVODE's variable-order BDF (1–5), or ARKODE's ARKStep
+/// with an L-stable ESDIRK table (order 4: ESDIRK436L2SA_6_3_4, order 5:
+/// ESDIRK547L2SA2_7_4_5; Newton with the same dense Jacobian) or an explicit
+/// Verner 8-5-6 (order 6, no Jacobian).
+enum class LinkageMethod { bdf, esdirk4, esdirk5, erk };
+
 class LinkageIntegrator {
  public:
   /// Scalar relative and absolute `tolerance` on the scaled state; `size`
   /// components, the first `coupled` differenced for the Jacobian; `roots` witnesses.
-  LinkageIntegrator(double tolerance, std::size_t size, std::size_t coupled, std::size_t roots);
+  LinkageIntegrator(double tolerance, std::size_t size, std::size_t coupled, std::size_t roots,
+                    LinkageMethod method = LinkageMethod::bdf);
   ~LinkageIntegrator();
   LinkageIntegrator(const LinkageIntegrator&) = delete;
   LinkageIntegrator& operator=(const LinkageIntegrator&) = delete;
@@ -56,6 +63,7 @@ class LinkageIntegrator {
 
  private:
   Counters since_reset() const;
+  void reset_arkode(double t0);
   struct Cvode;
   std::unique_ptr<Cvode> cv_;
   LinkageOde* ode_ = nullptr;

@@ -67,7 +67,9 @@ void add_elastic_body(const LinkageModel& m, const LinkageCoordinates& c, const 
       data.quadratic_force + data.stiffness_force + data.damping_force;
   for (int i = 0; i < 3 + modes; ++i) qb(i) += -g * mb(1, i) - mb.row(i).head<3>().dot(bias_r);
   const Eigen::Matrix3d mrr = mb.topLeftCorner<3, 3>();
-  w.M.noalias() += G.transpose().lazyProduct(mrr.lazyProduct(G));
+  // M_rr·G first (a nested lazy product would redo it for every entry of M).
+  const Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxFull> mg = mrr.lazyProduct(G);
+  w.M.noalias() += G.transpose().lazyProduct(mg);
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, kMaxFull> fr =
       mb.bottomLeftCorner(modes, 3).lazyProduct(G);
   w.M.middleRows(i0, modes) += fr;
@@ -101,7 +103,7 @@ ModalState modal_state(const LinkageModel& m, const LinkageCoordinates& c, const
                        bool with_accel) {
   const ElasticLink* link = m.elastic(body);
   const int modes = link ? link->modes() : 0, i0 = m.modal_index(body);
-  ModalState s{Eigen::VectorXd::Zero(modes), Eigen::VectorXd::Zero(modes), Eigen::VectorXd::Zero(modes)};
+  ModalState s{ModalVector::Zero(modes), ModalVector::Zero(modes), ModalVector::Zero(modes)};
   for (int k = 0; k < modes; ++k) {
     s.eta_m(k) = c.q_offsets(i0 + k);
     s.eta_dot_m_s(k) = c.z_rate(i0 + k);

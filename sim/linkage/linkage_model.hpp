@@ -43,6 +43,7 @@
 #include "sim/contact/contact_force.hpp"
 #include "sim/contact/film_force.hpp"
 #include "sim/flex/elastic_link.hpp"
+#include "sim/integrate/linkage_integrator.hpp"
 
 namespace fourbar {
 
@@ -67,6 +68,7 @@ struct LinkageSpec {
   double damping_floor_speed_m_s = 1e-5;
   double settle_speed_m_s = 1e-6;  ///< an onset faster than this is an impact
   double tolerance = 1e-10;        ///< CVODE relative and absolute, on the scaled state
+  LinkageMethod method = LinkageMethod::bdf;  ///< the stepping method (linkage_integrator.hpp)
   /// Elastic bodies (LinkBody order; the crank stays rigid): the rig's
   /// [<link>.elastic] table as sim/flex's floating frame with pinned–pinned modes.
   std::array<bool, kBodies> elastic{false, false, false};

@@ -40,7 +40,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
         per_joint(dry ? 4 : 5),
         size(static_cast<std::size_t>(2 * n + 1) +
              m.clearance_joints().size() * static_cast<std::size_t>(per_joint) + (m.any_elastic() ? 1U : 0U)),
-        integ(m.spec().tolerance, size, static_cast<std::size_t>(2 * n), m.clearance_joints().size()) {}
+        integ(m.spec().tolerance, size, static_cast<std::size_t>(2 * n), m.clearance_joints().size(), m.spec().method) {}
 
   const LinkageModel& model;
   const CrankMotion& crank;
@@ -377,12 +377,13 @@ struct LinkageSimulator::Impl final : LinkageOde {
     s.potential_energy_J = potential_energy_J(model, ws, c);
     s.strain_energy_J = ws.strain_energy_J;
     for (const LinkSensor& x : sensors) s.sensor_m_s2.push_back(sensor_reading(model, c, ws, x).tangential_m_s2);
-    for (int b = 1; b < kBodies; ++b)
-      s.midspan_deflection_m[static_cast<std::size_t>(b - 1)] = midspan_deflection_m(model, c, ws, b);
-    for (int b = 1; b < kBodies; ++b)
-      if (const ElasticLink* link = model.elastic(b))
-        for (int k = 0; k < link->modes(); ++k)
-          s.modal_m[static_cast<std::size_t>(b - 1)][static_cast<std::size_t>(k)] = c.q_offsets(model.modal_index(b) + k);
+    for (int b = 1; b < kBodies; ++b) {
+      const auto bu = static_cast<std::size_t>(b - 1);
+      s.midspan_deflection_m[bu] = midspan_deflection_m(model, c, ws, b);
+      const ModalState ms = modal_state(model, c, ws, b, true);  // no modes on a rigid link
+      std::copy(ms.eta_m.begin(), ms.eta_m.end(), s.modal_m[bu].begin());
+      std::copy(ms.eta_ddot_m_s2.begin(), ms.eta_ddot_m_s2.end(), s.modal_accel_m_s2[bu].begin());
+    }
     for (int j : model.clearance_joints()) {
       const PairState& ps = ws.pair[static_cast<std::size_t>(j)];
       JointSample& js = s.joint[static_cast<std::size_t>(j)];

@@ -49,6 +49,7 @@ struct LinkageSample {
   double strain_energy_J = 0;  ///< elastic links' ½ηᵀKη
   /// Modal coordinates η (m) of the coupler [0] and rocker [1], zero on a rigid link.
   std::array<std::array<double, 4>, 2> modal_m{};
+  std::array<std::array<double, 4>, 2> modal_accel_m_s2{};  ///< η̈ of the coupler [0] and rocker [1]
   std::array<double, 2> midspan_deflection_m{};  ///< coupler, rocker (0 when rigid)
   std::vector<double> sensor_m_s2;               ///< tangential readings, set_sensors' order
   bool in_contact = false;  ///< any joint
