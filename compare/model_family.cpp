@@ -34,6 +34,16 @@ std::vector<double> record_power(std::span<const double> turns, std::span<const 
   return p;
 }
 
+/// Σ of the bins of `p` (a record of `rows` turns) with crank order in [lo, hi).
+double band_sum(const std::vector<double>& p, double rows, double lo_order, double hi_order) {
+  double s = 0;
+  for (std::size_t k = 1; k < p.size(); ++k) {
+    const double o = static_cast<double>(k) / rows;
+    if (o >= lo_order && o < hi_order) s += p[k];
+  }
+  return s;
+}
+
 double mean_square(std::span<const double> x) {
   double s = 0;
   for (double v : x) s += v * v;
@@ -73,6 +83,34 @@ double turn_scatter(std::span<const double> turns, std::size_t n) {
     total += s2 / static_cast<double>(rows - 1);
   }
   return std::sqrt(total / static_cast<double>(n));
+}
+
+std::vector<double> band_mean_squares(std::span<const double> turns, std::span<const double> nominal, double crank_hz,
+                                      std::span<const FamilyBand> bands) {
+  std::vector<double> out(bands.size(), 0.0);
+  const std::size_t n = nominal.size();
+  if (n == 0 || turns.size() % n != 0 || turns.empty() || !(crank_hz > 0)) return out;
+  const std::vector<double> p = record_power(turns, nominal);
+  const double rows = static_cast<double>(turns.size() / n);
+  for (std::size_t b = 0; b < bands.size(); ++b) out[b] = band_sum(p, rows, bands[b].low_hz / crank_hz, bands[b].high_hz / crank_hz);
+  return out;
+}
+
+void judge_below(UnmodelledEnergy& u, std::span<const double> measured, std::span<const double> model, std::size_t n,
+                 double crank_hz) {
+  u.judged_below_hz = std::min(u.low_hz, kCutShareOfPeak * u.peak_hz);
+  u.measured_scatter_below = u.model_scatter_below = 0;
+  u.a_scatter_below.reset();
+  u.cannot_judge.clear();
+  const double cut_order = u.judged_below_hz / crank_hz;
+  if (cut_order < kMinJudgedOrders) {
+    u.cannot_judge = "the unmodelled energy starts below crank order " + std::to_string(static_cast<int>(kMinJudgedOrders));
+    return;
+  }
+  u.measured_scatter_below = turn_scatter(low_passed_turns(measured, n, cut_order), n);
+  u.model_scatter_below = turn_scatter(low_passed_turns(model, n, cut_order), n);
+  if (u.measured_scatter_below > 0) u.a_scatter_below = u.model_scatter_below / u.measured_scatter_below;
+  else u.cannot_judge = "no turn-to-turn scatter is left below the band";
 }
 
 void judge_below_first_finding(ModelFamilyCheck& c) {
@@ -126,14 +164,8 @@ ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<
     FamilyBand fb;
     fb.low_hz = first_hz + static_cast<double>(b) * settings.band_width_hz;
     fb.high_hz = fb.low_hz + settings.band_width_hz;
-    for (std::size_t k = 1; k < pm.size(); ++k) {
-      const double o = static_cast<double>(k) / rows_m;
-      if (o >= order_of(fb.low_hz) && o < order_of(fb.high_hz)) fb.measured_ms += pm[k];
-    }
-    for (std::size_t k = 1; k < ps.size(); ++k) {
-      const double o = static_cast<double>(k) / rows_s;
-      if (o >= order_of(fb.low_hz) && o < order_of(fb.high_hz)) fb.model_ms += ps[k];
-    }
+    fb.measured_ms = band_sum(pm, rows_m, order_of(fb.low_hz), order_of(fb.high_hz));
+    fb.model_ms = band_sum(ps, rows_s, order_of(fb.low_hz), order_of(fb.high_hz));
     fb.ratio = fb.measured_ms / std::max(fb.model_ms, model_floor);
     ratios.push_back(fb.ratio);
     c.bands.push_back(fb);
@@ -223,16 +255,7 @@ ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<
     u.rms_share = measured_ms > 0 ? std::sqrt(excess / measured_ms) : 0.0;
     // Below this finding (and below kCutShareOfPeak of its peak) the family
     // is taken to hold: the agreement there, should this be the first finding.
-    u.judged_below_hz = std::min(u.low_hz, kCutShareOfPeak * u.peak_hz);
-    const double cut_order = u.judged_below_hz / crank_hz;
-    if (cut_order < kMinJudgedOrders) {
-      u.cannot_judge = "the unmodelled energy starts below crank order " + std::to_string(static_cast<int>(kMinJudgedOrders));
-    } else {
-      u.measured_scatter_below = turn_scatter(low_passed_turns(measured, n, cut_order), n);
-      u.model_scatter_below = turn_scatter(low_passed_turns(model, n, cut_order), n);
-      if (u.measured_scatter_below > 0) u.a_scatter_below = u.model_scatter_below / u.measured_scatter_below;
-      else u.cannot_judge = "no turn-to-turn scatter is left below the band";
-    }
+    judge_below(u, measured, model, n, crank_hz);
     c.unmodelled.push_back(u);
     b = hi + 1;
   }

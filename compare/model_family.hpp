@@ -73,6 +73,10 @@ struct ModelFamilySettings {
   /// Highest frequency checked, Hz ([model_family] max_frequency_hz); 0: the
   /// grid's and the analysis filter's limit.
   double max_frequency_hz = 0;
+  /// The compliant contact's stiffness (N/m^n) of the elastic-link reference
+  /// (compare/link_vibration.hpp) when the rig file gives no bearing to
+  /// compute it from ([model_family] contact_stiffness_N_per_m_n); 0: the rig's.
+  double contact_stiffness_N_per_m_n = 0;
 };
 
 struct FamilyBand {
@@ -125,6 +129,18 @@ ModelFamilyCheck check_model_family(std::span<const double> measured, std::span<
 /// The check's verdict fields (judged_below_hz, the scatters below, a,
 /// cannot_judge) from its first finding, or cleared when it has none.
 void judge_below_first_finding(ModelFamilyCheck& c);
+
+/// Mean square of (turn − nominal) in each of `bands` (the check's own
+/// spectrum of the whole record, Hann-windowed): a third side compared on the
+/// check's bands (compare/link_vibration.hpp).
+std::vector<double> band_mean_squares(std::span<const double> turns, std::span<const double> nominal, double crank_hz,
+                                      std::span<const FamilyBand> bands);
+
+/// Where the agreement is judged should `u` be the first finding (below its
+/// band and below kCutShareOfPeak of its peak), the turn-to-turn scatter of
+/// both sides low-passed there and their ratio, or why it cannot be judged.
+void judge_below(UnmodelledEnergy& u, std::span<const double> measured, std::span<const double> model, std::size_t n,
+                 double crank_hz);
 
 /// Turns × N (consecutive turns) with every crank order at or above
 /// `cut_order` removed, by one transform of the whole record.

@@ -12,8 +12,8 @@
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
 #include "sim/compliant/contact_stiffness.hpp"
-#include "sim/drive/crank_motion.hpp"
-#include "sim/linkage/linkage_simulator.hpp"
+#include "compare/linkage_theory.hpp"
+#include "sim/linkage/linkage_model.hpp"
 
 namespace fourbar {
 
@@ -106,74 +106,21 @@ SimulatedStatistics simulate_linkage_statistics(const RecordingTarget& t, const 
                                                 int turns, double tolerance, const FitModel& model) {
   const Rig& rig = *t.rig;
   const LinkageModel linkage = build_linkage(rig, elastic_spec(rig, model, t.clearance_m, p, tolerance));
-  // The fine grid (the band's, else the analysis grid) over the kept turns:
-  // grid point k of the run is at t = 2πk/(N·|ω2|).
-  CrankGrid grid = t.grid;
-  if (t.band_filter) grid.grid_points_per_rev = t.band_grid_points_per_rev;
-  const std::size_t n = grid.grid_points_per_rev;
-  const double w = t.crank_speed_rad_s;
-  if (!(grid.direction * w > 0))
-    throw RunError("fit: " + t.name + ": the grid turns against the crank speed (internal error)");
-  const double step_s = units::kTwoPi / (static_cast<double>(n) * std::abs(w));
-  const std::size_t first = static_cast<std::size_t>(warmup) * n, rows = static_cast<std::size_t>(turns) * n;
-  std::vector<double> times(rows);
-  for (std::size_t j = 0; j < rows; ++j) times[j] = static_cast<double>(first + j) * step_s;
-
-  std::vector<LinkSensor> sensors;
-  std::array<int, 2> sensor_index{-1, -1};
+  // The fine grid (the band's, else the analysis grid) over the kept turns.
+  LinkageTheoryRun run;
+  run.grid = t.grid;
+  if (t.band_filter) run.grid.grid_points_per_rev = t.band_grid_points_per_rev;
+  run.crank_speed_rad_s = t.crank_speed_rad_s;
+  run.clearance_m = t.clearance_m;
+  run.warmup_turns = warmup;
+  run.turns = turns;
+  run.name = "fit: " + t.name;
   for (std::size_t i = 0; i < 2; ++i)
     if (t.measured[i]) {
       if (!t.sensor[i]) throw RunError("fit: " + t.name + ": no sensor attached for the elastic model (internal error)");
-      sensor_index[i] = static_cast<int>(sensors.size());
-      sensors.push_back({i == 0 ? 1 : 2, t.sensor[i]->r_m, t.sensor[i]->h_m});
+      run.sensor[i] = t.sensor[i];
     }
-  const ConstantSpeedCrank crank(grid.start_rad, w);
-  LinkageSimulator sim(linkage, crank);
-  sim.set_sample_times(times);
-  sim.set_sensors(sensors);
-  sim.start_centred(0.0);
-  sim.advance_to(times.back());
-  const std::vector<LinkageSample>& samples = sim.samples();
-  if (samples.size() != rows)
-    throw RunError("fit: " + t.name + ": the linkage model gave " + std::to_string(samples.size()) + " of " +
-                   std::to_string(rows) + " samples");
-
-  MatchedTheory th;
-  th.grid = grid;
-  th.crank_speed_rad_s = w;
-  th.clearance_m = t.clearance_m;
-  for (TheorySeries& s : th.series) s.nominal.resize(n), s.clearance_revolutions.resize(rows);
-  auto series = [&](LinkQuantity q) -> TheorySeries& { return th.series[index_of(q)]; };
-  for (std::size_t k = 0; k < n; ++k) {
-    const NominalMotion m = solve_motion(rig, CrankState{grid.angle_rad(static_cast<double>(k)), w, 0.0});
-    series(LinkQuantity::omega3).nominal[k] = m.omega3_rad_s, series(LinkQuantity::omega4).nominal[k] = m.omega4_rad_s;
-    series(LinkQuantity::alpha3).nominal[k] = m.alpha3_rad_s2, series(LinkQuantity::alpha4).nominal[k] = m.alpha4_rad_s2;
-  }
-  for (std::size_t j = 0; j < rows; ++j) {
-    const LinkageSample& s = samples[j];
-    series(LinkQuantity::omega3).clearance_revolutions[j] = s.omega3_rad_s;
-    series(LinkQuantity::omega4).clearance_revolutions[j] = s.omega4_rad_s;
-    for (std::size_t i = 0; i < 2; ++i) {
-      const LinkQuantity q = i == 0 ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
-      double alpha = i == 0 ? s.alpha3_rad_s2 : s.alpha4_rad_s2;
-      if (sensor_index[i] >= 0) {
-        // What analyze makes of the reading: the nominal link at this crank state.
-        const SensedLink link = i == 0 ? SensedLink::coupler : SensedLink::rocker;
-        const SensedLinkMotion nominal = nominal_link_motion(rig, link, s.crank);
-        alpha = angular_acceleration_from_tangential(rig, *t.sensor[i], nominal,
-                                                     s.sensor_m_s2[static_cast<std::size_t>(sensor_index[i])]);
-      }
-      series(q).clearance_revolutions[j] = alpha;
-    }
-  }
-  const double warm_s = static_cast<double>(first) * step_s;
-  int impacts = 0;
-  double impulse = 0;
-  for (const LinkageContact& c : sim.contacts())
-    if (c.impact && c.time_s >= warm_s) ++impacts, impulse += c.impact_impulse_Ns;
-  th.severity.impacts_per_rev = impacts / static_cast<double>(turns);
-  th.severity.sum_normal_impulse_per_rev_Ns = impulse / static_cast<double>(turns);
-  return statistics_of_theory(t, std::move(th), turns);
+  return statistics_of_theory(t, simulate_linkage_theory(linkage, run), turns);
 }
 
 }  // namespace fourbar

@@ -45,6 +45,12 @@ std::size_t set_aside_findings_that_move_with_speed(std::vector<json>& records) 
     std::string text;
     for (const json& u : mf["unmodelled"]) {
       const double lo = u.value("low_hz", 0.0), hi = u.value("high_hz", 0.0);
+      // Link vibration placed by the elastic-link reference: the rig's modal
+      // data, not a coincidence of this record's spectrum, says where it is.
+      if (u.value("kind", std::string()) == "link vibration") {
+        kept.push_back(u);
+        continue;
+      }
       bool any_partner = false, confirmed = false;
       std::string not_at;
       for (std::size_t k = 0; k < records.size() && !confirmed; ++k) {

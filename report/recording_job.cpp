@@ -5,8 +5,10 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "compare/link_vibration.hpp"
 #include "fit/response_statistics.hpp"
 #include "report/comparison_record.hpp"
+#include "report/elastic_reference.hpp"
 #include "report/verdict_family.hpp"
 #include "report/setup_check_record.hpp"
 #include "report/theory_omega.hpp"
@@ -187,10 +189,27 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
       const LinkResult& link = a.coupler ? *a.coupler : *a.rocker;
       const TheorySeries& ts = t.series[index_of(q)];
       const bool has_top = a.filter.band == BandType::lowpass || a.filter.band == BandType::bandpass;
-      r["model_family"] = model_family_json(check_model_family(link.alpha_grid, ts.clearance_revolutions, ts.nominal,
-                                                               std::abs(a.mean_crank_speed_rad_s) / units::kTwoPi,
-                                                               has_top ? a.filter.high_hz : 0.0, family));
+      ModelFamilyCheck check = check_model_family(link.alpha_grid, ts.clearance_revolutions, ts.nominal,
+                                                  std::abs(a.mean_crank_speed_rad_s) / units::kTwoPi,
+                                                  has_top ? a.filter.high_hz : 0.0, family);
+      // The rig's modal data: the elastic-link reference says where the
+      // links' vibration lies (compare/link_vibration.hpp).
+      json vibration;
+      if (check.checked && (a.rig->coupler_elastic || a.rig->rocker_elastic)) {
+        const ElasticReference ref = elastic_reference(a, measured.grid, settings, family, check.checked_up_to_hz);
+        if (ref.theory) {
+          const LinkVibrationCheck lv = check_link_vibration(
+              check, link.alpha_grid, ts.clearance_revolutions, ref.rigid_links->series[index_of(q)].clearance_revolutions,
+              ref.theory->series[index_of(q)].clearance_revolutions, ts.nominal);
+          vibration = link_vibration_json(lv);
+          vibration["reference"] = ref.description;
+        } else {
+          vibration = {{"checked", false}, {"not_checked", ref.not_run}};
+        }
+      }
+      r["model_family"] = model_family_json(check);
       r["model_family"]["quantity"] = std::string(column_name(q));
+      if (!vibration.is_null()) r["model_family"]["link_vibration"] = vibration;
     }
     r["operating_point"]["clearance_source"] = a.clearance_from_rig ? "rig file (clearance_mm = \"rig\")" : "manifest";
     if (fitted) {

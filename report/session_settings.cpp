@@ -133,7 +133,8 @@ nlohmann::json SessionSettings::to_json() const {
           {"bearing", bearing},
           {"analysis", a},
           {"theory", theory_settings_json(theory)},
-          {"model_family", {{"band_width_hz", model_family.band_width_hz}, {"max_frequency_hz", model_family.max_frequency_hz}}},
+          {"model_family", {{"band_width_hz", model_family.band_width_hz}, {"max_frequency_hz", model_family.max_frequency_hz},
+                            {"contact_stiffness_N_per_m_n", model_family.contact_stiffness_N_per_m_n}}},
           {"theory_by_recording", per}};
 }
 
@@ -171,6 +172,7 @@ SessionSettings load_session_settings(const std::filesystem::path& dir) {
   if (auto m = root.optional_section("model_family")) {
     s.model_family.band_width_hz = m->in_range("band_width_hz", 1, 1e5, s.model_family.band_width_hz);
     s.model_family.max_frequency_hz = m->in_range("max_frequency_hz", 1, 1e7, 0.0);
+    s.model_family.contact_stiffness_N_per_m_n = m->in_range("contact_stiffness_N_per_m_n", 1e3, 1e15, 0.0);
     m->finish();
   }
   std::set<std::string> recordings;  // what a [[recording]] may name: the folder's recordings, nothing else

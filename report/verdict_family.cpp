@@ -65,6 +65,25 @@ json model_family_json(const ModelFamilyCheck& c) {
   return j;
 }
 
+json link_vibration_json(const LinkVibrationCheck& v) {
+  json j = {{"checked", v.checked}};
+  if (!v.checked) {
+    j["not_checked"] = v.not_checked;
+    if (v.elastic_ms.empty()) return j;
+  }
+  json bands = json::array();
+  for (std::size_t b : v.vibration_bands) bands.push_back(b);
+  json elastic = json::array(), rigid = json::array();
+  for (double e : v.elastic_ms) elastic.push_back(e);
+  for (double e : v.rigid_band_ms) rigid.push_back(e);
+  j.update({{"present", v.present}, {"low_hz", v.low_hz}, {"high_hz", v.high_hz}, {"position", v.position},
+            {"rms_share", v.rms_share}, {"reference_ratio", v.reference_ratio},
+            {"elastic_reference_ratio", v.elastic_reference_ratio}, {"measured_ms", v.measured_ms},
+            {"rigid_ms", v.rigid_ms}, {"elastic_ms", v.elastic_ms_sum}, {"vibration_bands", bands},
+            {"reference_band_count", v.reference_bands.size()}, {"elastic_band_ms", elastic}, {"rigid_band_ms", rigid}});
+  return j;
+}
+
 std::optional<VerdictFamily> verdict_family(const json& r) {
   if (!r.is_object() || !r.contains("model_family") || !r["model_family"].is_object()) return std::nullopt;
   const json& j = r["model_family"];
@@ -101,6 +120,9 @@ VerdictPart family_part(const VerdictInputs& in) {
   for (std::size_t i = 1; i < f.unmodelled.size(); ++i) s += "; " + unmodelled_text(f.unmodelled[i]);
   s += u.kind == "narrow resonance"
            ? ". A narrow resonance is a link's bending mode or the accelerometer's mounted resonance (compare its calibration sheet); "
+       : u.kind == "link vibration"
+           ? ". It lies where the elastic-link model of the rig file's modal data puts the links' vibration, and the measurement there is "
+             "nearer that model than the rigid one; "
            : ". Broad ringing after the impacts is the links' or the frame's structural response; ";
   s += "the model agreement is judged below " + hz(f.judged_below_hz.value_or(u.low_hz)) + " only. Stiffen or damp the mounting, or compare with a model that has the links' modes." + set_aside;
   return {VerdictLevel::attention, u.kind + " " + format_number(u.peak_hz, 4) + " Hz (" + format_number(100 * u.rms_share, 2) + " %)", s};

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/link_vibration.hpp"
 #include "compare/model_family.hpp"
 
 namespace fourbar {
@@ -36,6 +37,9 @@ struct VerdictFamily {
 
 /// The record's "model_family" object.
 nlohmann::json model_family_json(const ModelFamilyCheck& c);
+
+/// summary.json → model_family.link_vibration (compare/link_vibration.hpp).
+nlohmann::json link_vibration_json(const LinkVibrationCheck& v);
 /// From a record; nullopt when the record has no "model_family" (older records).
 std::optional<VerdictFamily> verdict_family(const nlohmann::json& record);
 

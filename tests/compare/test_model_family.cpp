@@ -1,7 +1,7 @@
-// The model-family check (compare/model_family.hpp) on turns made here: an
-// impact-like broadband response in both, white noise in the measurement,
-// and — in some — a damped 600 Hz ringing after each impact that the model
-// lacks.
+// The model-family check (compare/model_family.hpp) on turns made by
+// tests/support/impact_turns.hpp: an impact-like broadband response in both,
+// white noise in the measurement, and — in some — a damped 600 Hz ringing
+// after each impact that the model lacks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,46 +9,16 @@
 #include <vector>
 
 #include "compare/model_family.hpp"
+#include "support/impact_turns.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr std::size_t kN = 720;
-constexpr double kCrankHz = 250.0 / 60.0;
-constexpr double kGridHz = kN * kCrankHz;  // 3000 samples per second on the grid
-constexpr double kPi = 3.14159265358979323846;
-
-std::vector<double> nominal() {
-  std::vector<double> x(kN);
-  for (std::size_t i = 0; i < kN; ++i) x[i] = 100 * std::sin(2 * kPi * static_cast<double>(i) / kN) + 30 * std::cos(4 * kPi * static_cast<double>(i) / kN);
-  return x;
-}
-
-/// turns × N: nominal + `impact` × single-point impulses (3 a turn at random
-/// angles) + white noise + optional ringing of `ring` × impact amplitude.
-std::vector<double> turns(std::size_t count, double impact, double noise, double ring, std::uint64_t seed,
-                          double ring_hz = 600, double zeta = 0.02) {
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<std::size_t> at(0, kN - 1);
-  std::normal_distribution<double> normal(0, 1);
-  const std::vector<double> nom = nominal();
-  std::vector<double> x(count * kN);
-  for (std::size_t r = 0; r < count; ++r)
-    for (std::size_t i = 0; i < kN; ++i) x[r * kN + i] = nom[i] + noise * normal(rng);
-  const double w = 2 * kPi * ring_hz, sigma = zeta * w;
-  for (std::size_t r = 0; r < count; ++r)
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t i0 = r * kN + at(rng);
-      const double a = impact * (0.5 + std::abs(normal(rng)));
-      x[i0] += a;
-      if (ring > 0)
-        for (std::size_t j = 1; i0 + j < x.size() && j < kN; ++j) {
-          const double t = static_cast<double>(j) / kGridHz;
-          x[i0 + j] += ring * a * std::exp(-sigma * t) * std::sin(w * t);
-        }
-    }
-  return x;
-}
+using test::kCrankHz;
+using test::kN;
+using test::kPi;
+using test::nominal;
+using test::turns;
 
 TEST(ModelFamily, RigidMeasurementOfAnotherRestitutionNamesNothing) {
   // A model 1.6x more violent than the measurement, noise in the measurement only.

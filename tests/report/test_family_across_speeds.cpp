@@ -47,6 +47,18 @@ json record(const std::string& name, double rpm, json found, json b, double top_
   return {{"name", name}, {"model_family", mf}};
 }
 
+TEST(FamilyAcrossSpeeds, LinkVibrationPlacedByTheRigsModesStays) {
+  // The same lone finding, but placed by the elastic-link reference: the
+  // rig's modal data, not this record's spectrum, says where it lies.
+  json u = finding(560, 940, 420, 3.6);
+  u["kind"] = "link vibration";
+  std::vector<json> r = {record("a_350.flac", 350, json::array({u}), bands(940)),
+                         record("b_250.flac", 250, json::array(), bands(940))};
+  EXPECT_EQ(set_aside_findings_that_move_with_speed(r), 0u);
+  ASSERT_EQ(r[0]["model_family"]["unmodelled"].size(), 1u);
+  EXPECT_FALSE(r[0]["model_family"].contains("moves_with_speed"));
+}
+
 TEST(FamilyAcrossSpeeds, AFindingTheOtherSpeedLacksIsSetAside) {
   // 350 rpm: energy at 140-180 Hz; 250 rpm: nothing there (1.7x, as the
   // hold-out's false alarm's partners).
