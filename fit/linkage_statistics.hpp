@@ -7,10 +7,11 @@
 // What it gives for each link is what the recording's tangential
 // accelerometer would read there (rigid frame + elastic deflection,
 // sim/linkage/linkage_sensor.hpp), turned into α by analyze's own
-// conversion (analyze/conversion.hpp) with the nominal link angle, sampled
-// at the points of the target's grid (point values: the compliant contact
-// has no jumps), then the same pass bands and statistics as the three-mode
-// model (statistics_of_theory).
+// conversion (analyze/conversion.hpp) with the nominal link angle, as the
+// mean over each cell of the target's grid (compare/linkage_theory.hpp: point
+// values would fold the contact's energy above the grid's Nyquist order
+// into the band energy), then the same pass bands and statistics as the
+// three-mode model (statistics_of_theory).
 
 #include "fit/fit_model.hpp"
 #include "fit/recording_target.hpp"

@@ -81,7 +81,7 @@ ElasticReference elastic_reference(const RecordingAnalysis& a, const CrankGrid& 
     run.warmup_turns = settings.warmup_revolutions;
     run.turns = settings.averaged_revolutions;
     run.name = a.recording.filename().string() + ": the elastic-link reference";
-    run.sub_samples = kReferenceSubSamples;
+    run.sub_samples = kCellMeanSubSamples;  // α as cell means, as the three-mode theory's
     run.warmup_turns = std::max(run.warmup_turns, 1);
     const AnalysisChannels channels = analysis_channels(load_manifest(a.manifest_file));
     for (const LinkChannels& l : channels.links)

@@ -29,8 +29,6 @@ inline constexpr double kReferenceModeShare = 2.0;
 /// position of the measurement between the two (compare/link_vibration.hpp)
 /// barely moved (docs/verdict.md "Link vibration").
 inline constexpr double kReferenceMaxRestitution = 0.9;
-/// Samples per grid cell: α as cell means, as the three-mode theory's.
-inline constexpr int kReferenceSubSamples = 8;
 /// The reference's integrator tolerance (band energies, not a waveform).
 inline constexpr double kReferenceTolerance = 1e-6;
 
