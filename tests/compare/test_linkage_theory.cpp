@@ -15,7 +15,7 @@
 namespace fourbar {
 namespace {
 
-constexpr double kXi = 0.1016e-3;
+constexpr double kLinkageClearance_m = 0.1016e-3;
 
 double relative_rms(const std::vector<double>& a, const std::vector<double>& b) {
   double d = 0, s = 0;
@@ -35,7 +35,7 @@ LinkageTheoryRun run_on(const CrankGrid& grid, double w, int sub) {
   LinkageTheoryRun run;
   run.grid = grid;
   run.crank_speed_rad_s = w;
-  run.clearance_m = kXi;
+  run.clearance_m = kLinkageClearance_m;
   run.warmup_turns = 1;
   run.turns = 2;
   run.name = "test";

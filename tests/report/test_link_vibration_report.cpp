@@ -39,7 +39,7 @@ thickness_mm = 4.0
 damping_ratios = [0.02, 0.015]
 )";
 
-const std::string kScene = R"(rig = "rig.toml"
+const std::string kRigidLinkScene = R"(rig = "rig.toml"
 model = "clearance"
 crank_speed_rpm = 350
 outputs = ["alpha3_rad_s2"]
@@ -57,14 +57,14 @@ seed = 12
 angle_deg = 0.0
 )" + testing::sensor_toml("coupler_t", "coupler_tangential", 154.5);
 
-const std::string kTheory = "[theory]\nrestitution = 0.5\nwarmup_revolutions = 4\naveraged_revolutions = 8\n";
+const std::string kShortTheory = "[theory]\nrestitution = 0.5\nwarmup_revolutions = 4\naveraged_revolutions = 8\n";
 
 class LinkVibrationReport : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new testing::TempDir;
     dir_->write("make/rig.toml", testing::thesis_rig_toml() + kElasticLinks);
-    dir_->write("make/rec.toml", kScene);
+    dir_->write("make/rec.toml", kRigidLinkScene);
     std::filesystem::create_directories(dir_->path() / "session");
     const auto r = testing::record_virtual(dir_->path() / "make" / "rec.toml", dir_->path() / "session" / "rec.flac");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -86,7 +86,7 @@ class LinkVibrationReport : public ::testing::Test {
 testing::TempDir* LinkVibrationReport::dir_ = nullptr;
 
 TEST_F(LinkVibrationReport, WithoutAStiffnessTheCheckSaysWhatToGive) {
-  const auto r = report(kTheory, "no_stiffness");
+  const auto r = report(kShortTheory, "no_stiffness");
   ASSERT_EQ(r.status, 0) << r.err;
   const json f = family("no_stiffness");
   ASSERT_TRUE(f.contains("link_vibration")) << f.dump();
@@ -96,7 +96,7 @@ TEST_F(LinkVibrationReport, WithoutAStiffnessTheCheckSaysWhatToGive) {
 }
 
 TEST_F(LinkVibrationReport, RigidLinkRecordingIsNotCalledVibrating) {
-  const auto r = report(kTheory + "[model_family]\ncontact_stiffness_N_per_m_n = 1e10\n", "stiffness");
+  const auto r = report(kShortTheory + "[model_family]\ncontact_stiffness_N_per_m_n = 1e10\n", "stiffness");
   ASSERT_EQ(r.status, 0) << r.err;
   const json f = family("stiffness");
   ASSERT_TRUE(f.contains("link_vibration")) << f.dump();
@@ -115,7 +115,7 @@ TEST_F(LinkVibrationReport, RigidLinkRecordingIsNotCalledVibrating) {
 }
 
 TEST_F(LinkVibrationReport, BadStiffnessExitsTwoNamingTheKey) {
-  const auto r = report(kTheory + "[model_family]\ncontact_stiffness_N_per_m_n = -1\n", "bad");
+  const auto r = report(kShortTheory + "[model_family]\ncontact_stiffness_N_per_m_n = -1\n", "bad");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("contact_stiffness_N_per_m_n"), std::string::npos) << r.err;
 }
