@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "common/units.hpp"
 #include "compare/model_family.hpp"
 
 namespace fourbar {
@@ -16,7 +17,7 @@ namespace {
 constexpr std::size_t kN = 720;
 constexpr double kCrankHz = 250.0 / 60.0;
 constexpr double kGridHz = kN * kCrankHz;  // 3000 samples per second on the grid
-constexpr double kPi = 3.14159265358979323846;
+using units::kPi;
 
 std::vector<double> nominal() {
   std::vector<double> x(kN);
