@@ -28,6 +28,10 @@ std::string pulse_channel_label(const ChannelSpec& pulse) {
   return "pulse channel '" + pulse.name + "' (index " + std::to_string(static_cast<std::size_t>(*pulse.index)) + ")";
 }
 
+std::string channel_label(const ChannelSpec& c) {
+  return "channel '" + c.name + "' (" + to_string(c.role) + ", index " + std::to_string(c.index.value_or(0)) + ")";
+}
+
 ClipRange clip_range(const RecordingInfo& recording, const Manifest& manifest) {
   ClipRange r;
   if (recording.integer_bits > 0) {

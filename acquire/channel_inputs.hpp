@@ -38,6 +38,9 @@ PulseInput pulse_input(const Manifest& manifest);
 /// "pulse channel 'NAME' (index I)", for messages.
 std::string pulse_channel_label(const ChannelSpec& pulse);
 
+/// "channel 'NAME' (ROLE, index I)", for messages.
+std::string channel_label(const ChannelSpec& c);
+
 /// Recorded values at or beyond these limits are clipped: integer samples at
 /// the rails; float and text samples beyond the manifest's adc_range_V. With
 /// neither, nothing is checked (±∞).

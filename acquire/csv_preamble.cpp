@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "acquire/csv_units.hpp"
+#include "acquire/text_cells.hpp"
 #include "common/error.hpp"
 
 namespace fourbar {
@@ -15,25 +16,8 @@ namespace {
 constexpr std::size_t kScanLines = 400;  ///< lines searched for the header
 constexpr std::size_t kDataRowsChecked = 3;
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
-  return s;
-}
-
-std::vector<std::string_view> split(std::string_view line, char d) {
-  std::vector<std::string_view> cells;
-  for (std::size_t start = 0;;) {
-    const std::size_t end = line.find(d, start);
-    cells.push_back(trim(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
-    if (end == std::string_view::npos) return cells;
-    start = end + 1;
-  }
-}
-
 std::optional<double> number(std::string_view cell, bool decimal_comma) {
-  std::string buf(trim(cell));
+  std::string buf(trim_cell(cell));
   if (decimal_comma) std::replace(buf.begin(), buf.end(), ',', '.');
   std::string_view v = buf;
   if (!v.empty() && v.front() == '+') v.remove_prefix(1);
@@ -44,7 +28,7 @@ std::optional<double> number(std::string_view cell, bool decimal_comma) {
 }
 
 bool blank_or_comment(std::string_view line) {
-  const auto t = trim(line);
+  const auto t = trim_cell(line);
   return t.empty() || t.front() == '#';
 }
 
@@ -56,7 +40,7 @@ std::string lower(std::string_view s) {
 
 /// A units-row cell: a unit in brackets ("[V]", "(s)"), a common unit, or empty.
 bool unit_like(std::string_view c) {
-  c = trim(c);
+  c = trim_cell(c);
   if (c.size() >= 2 && ((c.front() == '[' && c.back() == ']') || (c.front() == '(' && c.back() == ')'))) return true;
   static const char* units[] = {"", "s", "ms", "us", "V", "mV", "uV", "A", "mA", "g", "m/s^2", "m/s2", "m/s\xC2\xB2",
                                 "Pa", "kPa", "bar", "N", "Nm", "rpm", "Hz", "deg", "\xC2\xB0", "rad", "mm", "m", "K",
@@ -75,7 +59,7 @@ bool data_rows_follow(const std::vector<Line>& lines, std::size_t from, std::siz
   std::size_t rows = 0;
   for (std::size_t i = from; i < lines.size() && rows < kDataRowsChecked; ++i) {
     if (blank_or_comment(lines[i].text)) continue;
-    const auto c = split(lines[i].text, d);
+    const auto c = split_cells(lines[i].text, d);
     if (c.size() != cells) return false;
     for (auto cell : c)
       if (!number(cell, d != ',')) return false;
@@ -91,14 +75,14 @@ std::size_t next_content(const std::vector<Line>& lines, std::size_t from) {
 
 /// The sample rate or start a preamble line states, into `p`.
 void read_preamble_line(const Line& l, char d, CsvPreamble& p) {
-  std::string_view t = trim(l.text);
-  while (!t.empty() && t.front() == '#') t = trim(t.substr(1));
+  std::string_view t = trim_cell(l.text);
+  while (!t.empty() && t.front() == '#') t = trim_cell(t.substr(1));
   // "Key;value;unit", "Key: value unit" or "Key = value".
-  std::vector<std::string_view> cells = split(t, d);
+  std::vector<std::string_view> cells = split_cells(t, d);
   if (cells.size() < 2) {
     const std::size_t sep = t.find_first_of(":=");
     if (sep == std::string_view::npos) return;
-    cells = {trim(t.substr(0, sep)), trim(t.substr(sep + 1))};
+    cells = {trim_cell(t.substr(0, sep)), trim_cell(t.substr(sep + 1))};
   }
   std::string key = lower(cells[0]);
   while (!key.empty() && (key.back() == ':' || key.back() == '=' || key.back() == ' ')) key.pop_back();
@@ -111,7 +95,7 @@ void read_preamble_line(const Line& l, char d, CsvPreamble& p) {
     std::string value(cells[1]), unit = key_unit.empty() ? (cells.size() > 2 ? lower(cells[2]) : "") : lower(key_unit);
     // "12800 Hz" in one cell.
     if (const std::size_t sp = value.find(' '); sp != std::string::npos && unit.empty())
-      unit = lower(trim(std::string_view(value).substr(sp + 1))), value.resize(sp);
+      unit = lower(trim_cell(std::string_view(value).substr(sp + 1))), value.resize(sp);
     const auto v = number(value, true);
     const double scale = unit == "khz" ? 1e3 : (unit.empty() || unit == "hz" || unit == "s/s" || unit == "sps" || unit == "1/s") ? 1.0 : 0.0;
     if (v && *v > 0 && scale > 0) p.sample_rate_hz = *v * scale, p.rate_line = l.number;
@@ -156,7 +140,7 @@ CsvPreamble find_csv_header(std::istream& in, const std::string& file, std::opti
     std::size_t previous = lines.size();
     for (std::size_t i = next_content(lines, 0); i < lines.size(); previous = i, i = next_content(lines, i + 1)) {
       const char d = csv_delimiter(lines[i].text);
-      const auto cells = split(lines[i].text, d);
+      const auto cells = split_cells(lines[i].text, d);
       const auto numeric = static_cast<std::size_t>(
           std::count_if(cells.begin(), cells.end(), [&](std::string_view c) { return number(c, d != ',').has_value(); }));
       const std::size_t after = next_content(lines, i + 1);
@@ -165,7 +149,7 @@ CsvPreamble find_csv_header(std::istream& in, const std::string& file, std::opti
       if (!data_follow || numeric > 0) continue;             // column names are not numbers
       p.header_line = lines[i].number;
       if (previous < lines.size() && std::all_of(cells.begin(), cells.end(), unit_like)) {
-        const auto above = split(lines[previous].text, d);
+        const auto above = split_cells(lines[previous].text, d);
         if (above.size() == cells.size() && is_units_row(above)) p.header_line = lines[previous].number;
       }
       break;
@@ -178,7 +162,7 @@ CsvPreamble find_csv_header(std::istream& in, const std::string& file, std::opti
   if (p.header_line > 0) {
     const char d = csv_delimiter(lines[p.header_line - 1].text);
     for (std::size_t i = 0; i + 1 < p.header_line; ++i) {
-      if (trim(lines[i].text).empty()) continue;
+      if (trim_cell(lines[i].text).empty()) continue;
       ++p.preamble_lines;
       read_preamble_line(lines[i], d, p);
     }

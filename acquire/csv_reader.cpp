@@ -10,6 +10,7 @@
 
 #include "acquire/csv_preamble.hpp"
 #include "acquire/csv_units.hpp"
+#include "acquire/text_cells.hpp"
 #include "common/error.hpp"
 #include "common/number_text.hpp"
 #include "common/toml_section.hpp"
@@ -18,13 +19,6 @@ namespace fourbar {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
-  return s;
-}
-
 std::string joined(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
@@ -32,24 +26,12 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 bool is_skipped(std::string_view line) {
-  const std::string_view t = trim(line);
+  const std::string_view t = trim_cell(line);
   return t.empty() || t.front() == '#';
 }
 
-std::vector<std::string_view> split(std::string_view line, char delimiter) {
-  std::vector<std::string_view> cells;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t end = line.find(delimiter, start);
-    cells.push_back(trim(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start)));
-    if (end == std::string_view::npos) break;
-    start = end + 1;
-  }
-  return cells;
-}
-
 /// Seconds per unit of a time column, or 0 when `name` is not a time column.
-double time_unit_s(std::string name) {
+double time_column_unit_s(std::string name) {
   std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
   static const std::regex seconds(R"((t|time)(_s|\s*\[s\]|\s*\(s\))?)"), millis(R"((t|time)(_ms|\s*\[ms\]|\s*\(ms\)))");
   if (std::regex_match(name, seconds)) return 1.0;
@@ -78,7 +60,7 @@ class CsvReader final : public Reader {
     if (line.empty()) throw InputError(file.string() + ": no header row (the file is empty or only comments)");
     header_line_ = line_no_;
     delimiter_ = csv_delimiter(line);
-    for (auto cell : split(line, delimiter_)) names_.push_back(as_utf8(cell));
+    for (auto cell : split_cells(line, delimiter_)) names_.push_back(as_utf8(cell));
     for (std::size_t c = 0; c < names_.size(); ++c) {
       if (names_[c].empty())
         throw InputError(where(header_line_, c) + ": empty column name in the header row; name every column");
@@ -100,7 +82,7 @@ class CsvReader final : public Reader {
         after_header = in_.tellg();
         continue;
       }
-      const auto cells = split(line, delimiter_);
+      const auto cells = split_cells(line, delimiter_);
       const bool short_cells = std::all_of(cells.begin(), cells.end(), [](std::string_view c) { return c.size() <= 24; });
       if (cells.size() == names_.size() && short_cells && is_units_row(cells)) {
         for (std::size_t c = 0; c < cells.size(); ++c)
@@ -129,11 +111,11 @@ class CsvReader final : public Reader {
       }
       time_col_ = static_cast<int>(it - names_.begin());
       const std::size_t c = static_cast<std::size_t>(time_col_);
-      const double u = time_unit_s(units[c].empty() ? names_[c] : bare[c] + "_" + units[c]);
+      const double u = time_column_unit_s(units[c].empty() ? names_[c] : bare[c] + "_" + units[c]);
       time_unit_s_ = u > 0 ? u : 1.0;
     } else {
       for (std::size_t c = 0; c < names_.size() && time_col_ < 0; ++c)  // `time [ms]`, or `time` over `ms`
-        if (double u = time_unit_s(units[c].empty() ? names_[c] : bare[c] + "_" + units[c]); u > 0)
+        if (double u = time_column_unit_s(units[c].empty() ? names_[c] : bare[c] + "_" + units[c]); u > 0)
           time_col_ = static_cast<int>(c), time_unit_s_ = u;
     }
     bool any_unit = false;
@@ -228,7 +210,7 @@ class CsvReader final : public Reader {
       ++line_no_;
       strip_cr(line);
       if (is_skipped(line)) continue;
-      const auto cells = split(line, delimiter_);
+      const auto cells = split_cells(line, delimiter_);
       if (cells.size() != names_.size())
         throw InputError(file_.string() + ":" + std::to_string(line_no_) + ": " + std::to_string(cells.size()) +
                          " cells but the header has " + std::to_string(names_.size()) +
@@ -285,7 +267,7 @@ class CsvReader final : public Reader {
     return v;
   }
   double time_of(const std::string& line, std::size_t line_no) const {
-    const auto cells = split(line, delimiter_);
+    const auto cells = split_cells(line, delimiter_);
     if (static_cast<std::size_t>(time_col_) >= cells.size())
       throw InputError(file_.string() + ":" + std::to_string(line_no) +
                        ": row has fewer cells than the header (a truncated or damaged row); fix or delete it");

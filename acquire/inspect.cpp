@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 
 #include "acquire/inspect_pulse.hpp"
+#include "common/format.hpp"
 
 namespace fourbar {
 
@@ -14,12 +14,6 @@ namespace {
 constexpr std::size_t kBlockFrames = 8192;
 
 bool contains(const std::string& s, const char* word) { return s.find(word) != std::string::npos; }
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
 
 /// Reads every block of `reader` from the start, calling f(frame, channel, value).
 template <class F>
@@ -38,22 +32,22 @@ void guess_role(ChannelInspection& ch) {
   const std::string by_name = role_from_name(ch.name);
   if (ch.constant) {
     ch.role = "ignore";
-    ch.reason = "constant " + number(ch.mean) + ": not connected or switched off";
+    ch.reason = "constant " + format_number(ch.mean, 4) + ": not connected or switched off";
   } else if (ch.pulse) {
     const PulseTrainGuess& p = *ch.pulse;
     ch.role = "crank_pulse";
-    ch.reason = "pulse train: " + std::to_string(p.pulses) + " pulses at " + number(p.rate_hz) + " Hz = " +
-                number(p.rpm) + " rpm at one pulse per turn; short state " + (p.short_state_high ? "high" : "low") +
-                " (" + number(100 * std::min(p.high_fraction, 1 - p.high_fraction)) + " % of the time)";
+    ch.reason = "pulse train: " + std::to_string(p.pulses) + " pulses at " + format_number(p.rate_hz, 4) + " Hz = " +
+                format_number(p.rpm, 4) + " rpm at one pulse per turn; short state " + (p.short_state_high ? "high" : "low") +
+                " (" + format_number(100 * std::min(p.high_fraction, 1 - p.high_fraction), 4) + " % of the time)";
     if (p.regular_fraction < 0.98)
-      ch.reason += "; " + number(100 * (1 - p.regular_fraction)) + " % of the intervals irregular (missing or extra pulses)";
+      ch.reason += "; " + format_number(100 * (1 - p.regular_fraction), 4) + " % of the intervals irregular (missing or extra pulses)";
   } else if (!by_name.empty() && by_name != "crank_pulse") {
     ch.role = by_name;
-    ch.reason = "its name says " + by_name + "; the data look like a vibration signal (DC " + number(ch.mean) +
-                ", AC RMS " + number(ch.ac_rms) + ")";
+    ch.reason = "its name says " + by_name + "; the data look like a vibration signal (DC " + format_number(ch.mean, 4) +
+                ", AC RMS " + format_number(ch.ac_rms, 4) + ")";
   } else {
     ch.reason = std::string(by_name == "crank_pulse" ? "named like a pulse channel but not a pulse train; " : "") +
-                "a continuous signal (DC " + number(ch.mean) + ", AC RMS " + number(ch.ac_rms) +
+                "a continuous signal (DC " + format_number(ch.mean, 4) + ", AC RMS " + format_number(ch.ac_rms, 4) +
                 "): an accelerometer? its role cannot be told from the data";
   }
   if (ch.rail_samples > 0)

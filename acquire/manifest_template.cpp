@@ -5,17 +5,12 @@
 
 #include "acquire/csv_units.hpp"
 #include "acquire/manifest_placeholders.hpp"
+#include "common/format.hpp"
 #include "common/toml_writer.hpp"
 
 namespace fourbar {
 
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
 
 /// Text for a TOML comment: UTF-8, control characters (TOML forbids them in
 /// comments; a newline would end the comment) written as \xNN.
@@ -68,8 +63,8 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
   std::ostringstream os;
   comment_line(os, "Manifest for " + info.file.filename().string() + ", started by `fourbar inspect --manifest-template`.");
   comment_line(os, info.format + " " + info.sample_format + ", " + std::to_string(info.channels) + " channels, " +
-                       number(info.sample_rate_hz) + " Hz, " + std::to_string(info.frames) + " samples (" +
-                       number(info.duration_s()) + " s).");
+                       format_number(info.sample_rate_hz, 10) + " Hz, " + std::to_string(info.frames) + " samples (" +
+                       format_number(info.duration_s(), 10) + " s).");
   os << "# Replace every \"FILL IN\" by its value (the comment says what it is): acquire refuses this\n"
      << "# file while one is left. Every key: docs/acquire.md.\n\n";
   os << fill_in("rig", "the rig file, relative to this manifest, e.g. \"../rigs/thesis.toml\"");
@@ -89,7 +84,7 @@ std::string manifest_template(const RecordingInspection& r, const ReaderOptions&
   }
   if (info.integer_bits == 0)
     os << "# adc_range_V = 10  # the DAQ's input range in V: samples at +- this are counted as clipped\n";
-  if (options.sample_rate_hz) os << "sample_rate_hz = " << number(*options.sample_rate_hz) << "  # as given to inspect\n";
+  if (options.sample_rate_hz) os << "sample_rate_hz = " << format_number(*options.sample_rate_hz, 10) << "  # as given to inspect\n";
   else if (info.rate_variable) os << "rate_variable = " << toml_quoted(*info.rate_variable) << "  # the variable holding the sample rate in Hz\n";
   if (options.time_column) os << "time_column = " << toml_quoted(*options.time_column) << "\n";
   if (options.header_line) os << "header_line = " << *options.header_line << "  # the line of the column names\n";

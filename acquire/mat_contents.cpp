@@ -70,7 +70,7 @@ double element(const matvar_t& v, std::size_t i) {
 }
 
 /// Seconds per unit of a time variable's name, 0 when it is not one.
-double time_unit_s(std::string name) {
+double time_variable_unit_s(std::string name) {
   std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
   if (name == "t" || name == "time" || name == "time_s") return 1.0;
   if (name == "time_ms" || name == "t_ms") return 1e-3;
@@ -294,7 +294,7 @@ class MatLoader {
                                                   std::to_string(v.cols) + ") has another length; not a channel");
         continue;
       }
-      if (v.width() == 1 && time_var < 0 && time_unit_s(v.name) > 0) {
+      if (v.width() == 1 && time_var < 0 && time_variable_unit_s(v.name) > 0) {
         time_var = static_cast<int>(i);
         continue;
       }
@@ -379,7 +379,7 @@ class MatLoader {
 
   double rate_from_time(mat_t* mat, const VarInfo& tv, const std::string& f) {
     const Var v = read_var(mat, tv.raw, f);
-    const double unit = time_unit_s(tv.name);
+    const double unit = time_variable_unit_s(tv.name);
     const std::size_t n = tv.length();
     const double t0 = element(*v, 0) * unit, tn = element(*v, n - 1) * unit;
     if (!(tn > t0) || !std::isfinite(tn - t0))

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "acquire/channel_inputs.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/units.hpp"
@@ -10,10 +11,6 @@
 namespace fourbar {
 
 namespace {
-
-std::string label(const ChannelSpec& c) {
-  return "channel '" + c.name + "' (crank_speed, index " + std::to_string(c.index.value_or(0)) + ")";
-}
 
 /// The angle at `tau` seconds into the sample interval [i, i+1] of length dt,
 /// the speed linear between w0 and w1 (rad/s).
@@ -63,7 +60,7 @@ SpeedAngle speed_angle_edges(const std::vector<double>& rpm, double sample_rate_
     if (rpm[i] > 0 && std::isfinite(rpm[i])) continue;
     std::size_t j = i;
     while (j + 1 < end && !(rpm[j + 1] > 0 && std::isfinite(rpm[j + 1]))) ++j;
-    throw InputError(manifest_file.string() + ": " + label(speed) + " reads " + format_number(rpm[i], 4) +
+    throw InputError(manifest_file.string() + ": " + channel_label(speed) + " reads " + format_number(rpm[i], 4) +
                      " rpm: a speed ≤ 0 (or not a number) from " + format_number(time_of(i), 6) + " s to " +
                      format_number(time_of(j), 6) + " s, through which no crank angle can be integrated; analyse "
                      "the running part only (start_s/end_s in the manifest or --start-s/--end-s); " + fix);
@@ -99,18 +96,18 @@ SpeedAngle speed_angle_edges(const std::vector<double>& rpm, double sample_rate_
     out.zero_known = true;
     out.source = "speed channel '" + speed.name + "' integrated, zero at the pulses of '" + pulse->name + "'";
     if (out.zero_spread_deg > 5)
-      out.warnings.push_back("the crank angle integrated from " + label(speed) + " misses the pulses of '" + pulse->name +
+      out.warnings.push_back("the crank angle integrated from " + channel_label(speed) + " misses the pulses of '" + pulse->name +
                              "' by up to " + format_number(out.zero_spread_deg, 3) + "° over " +
                              std::to_string(phase.size()) + " pulses: the speed's scale is off or the track lags; " + fix);
   } else if (speed.crank_offset_given) {
     out.source = "speed channel '" + speed.name + "' integrated, zero from its crank_offset_deg";
-    out.warnings.push_back("the crank angle is integrated from " + label(speed) +
+    out.warnings.push_back("the crank angle is integrated from " + channel_label(speed) +
                            " with its zero from crank_offset_deg (the crank angle at the first sample analysed: it "
                            "moves with start_s); a once-per-turn crank_pulse channel would fix the zero from the data");
   } else {
     out.source = "speed channel '" + speed.name + "' integrated, zero unknown";
     out.warnings.push_back(
-        "the crank angle is integrated from " + label(speed) +
+        "the crank angle is integrated from " + channel_label(speed) +
         (pulse ? " and the pulse channel '" + pulse->name + "' has no edges in it"
                : std::string(" without a crank_pulse channel")) +
         ": its zero is unknown, taken as 0° at the first sample analysed. The turns, the speed and the spread are "

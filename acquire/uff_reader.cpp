@@ -9,18 +9,13 @@
 #include <iterator>
 #include <sstream>
 
+#include "acquire/text_cells.hpp"
 #include "common/error.hpp"
 #include "common/number_text.hpp"
 
 namespace fourbar {
 
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
 
 std::vector<std::string_view> tokens(std::string_view s) {
   std::vector<std::string_view> out;
@@ -36,7 +31,7 @@ std::vector<std::string_view> tokens(std::string_view s) {
 
 /// A Fortran number ("1.52588E-05", "1.5D-05", "+3"); nullopt when it is not one.
 std::optional<double> number(std::string_view t) {
-  t = trim(t);
+  t = trim_space(t);
   std::string buf(t);
   std::replace(buf.begin(), buf.end(), 'D', 'E');
   std::replace(buf.begin(), buf.end(), 'd', 'e');
@@ -71,7 +66,7 @@ std::optional<std::vector<double>> fields(std::string_view line, const std::vect
 }
 
 std::string unit_name(std::string_view label) {
-  std::string u(trim(label));
+  std::string u(trim_space(label));
   if (u == "NONE" || u == "none") return "";
   if (u == "m/s2" || u == "m/s**2" || u == "m/s\xC2\xB2" || u == "m s^-2" || u == "m/s^2") return "m/s^2";
   if (u == "G") return "g";
@@ -96,9 +91,9 @@ class UffParser {
     std::vector<Record> out;
     std::string_view l;
     while (next_line(l)) {
-      if (trim(l) != "-1") {
-        if (trim(l).empty()) continue;
-        throw InputError(at() + ": '" + std::string(trim(l).substr(0, 40)) + "' where a UFF dataset delimiter '    -1' "
+      if (trim_space(l) != "-1") {
+        if (trim_space(l).empty()) continue;
+        throw InputError(at() + ": '" + std::string(trim_space(l).substr(0, 40)) + "' where a UFF dataset delimiter '    -1' "
                          "belongs (not a universal file, or damaged)");
       }
       std::string_view head;
@@ -135,7 +130,7 @@ class UffParser {
   void skip_dataset() {
     std::string_view l;
     while (next_line(l))
-      if (trim(l) == "-1") return;
+      if (trim_space(l) == "-1") return;
   }
 
   Record read_58(const std::vector<std::string_view>& head, std::size_t number_in_file) {
@@ -156,9 +151,9 @@ class UffParser {
       big = h[0] == 2;
       binary_bytes = static_cast<std::uint64_t>(h[3]);
     }
-    const std::string id1(trim(header_line("ID line 1")));
+    const std::string id1(trim_space(header_line("ID line 1")));
     header_line("ID line 2");
-    r.date = std::string(trim(header_line("ID line 3")));
+    r.date = std::string(trim_space(header_line("ID line 3")));
     if (r.date == "NONE") r.date.clear();
     header_line("ID line 4");
     header_line("ID line 5");
@@ -226,25 +221,25 @@ class UffParser {
       if (pos_ < b_.size() && b_[pos_] == '\r') ++pos_;
       if (pos_ < b_.size() && b_[pos_] == '\n') ++pos_;
       std::string_view l;
-      while (next_line(l) && trim(l).empty()) {
+      while (next_line(l) && trim_space(l).empty()) {
       }
-      if (trim(l) != "-1") throw InputError(rec + ": no '    -1' line after its binary data (damaged file)");
+      if (trim_space(l) != "-1") throw InputError(rec + ": no '    -1' line after its binary data (damaged file)");
     } else {
       const std::size_t width = size == 4 ? 13 : 20, per_line = size == 4 ? 6 : 4;
       std::string_view l;
       for (;;) {
         if (!next_line(l)) throw InputError(rec + ": the file ends before the record's closing '    -1' line (cut short)");
-        if (trim(l) == "-1") break;
+        if (trim_space(l) == "-1") break;
         const auto t = tokens(l);
         std::size_t parsed = 0;
         for (auto s : t)
           if (auto v = number(s)) r.values.push_back(*v), ++parsed;
         if (parsed != t.size()) {  // fields that touch: cut at the format's width
           r.values.resize(r.values.size() - parsed);
-          for (std::size_t at = 0; at < l.size() && !trim(l.substr(at)).empty(); at += width) {
+          for (std::size_t at = 0; at < l.size() && !trim_space(l.substr(at)).empty(); at += width) {
             auto v = number(l.substr(at, width));
             if (!v)
-              throw InputError(at_line() + ": '" + std::string(trim(l.substr(at, width))) + "' is not a finite number "
+              throw InputError(at_line() + ": '" + std::string(trim_space(l.substr(at, width))) + "' is not a finite number "
                                "(dataset 58 record " + std::to_string(r.number) + ", " + std::to_string(per_line) +
                                " values of " + std::to_string(width) + " characters a line)");
             r.values.push_back(*v);
@@ -260,7 +255,7 @@ class UffParser {
     }
     r.name = id1 == "NONE" ? "" : id1;
     if (r.name.empty()) {
-      const std::string entity = r6.size() > 31 ? std::string(trim(r6.substr(31, 10))) : "";
+      const std::string entity = r6.size() > 31 ? std::string(trim_space(r6.substr(31, 10))) : "";
       const auto t6 = tokens(r6.size() > 41 ? r6.substr(41) : std::string_view());
       r.name = entity.empty() || entity == "NONE" ? "record " + std::to_string(r.number)
                                                   : entity + (t6.size() >= 2 ? ":" + std::string(t6[0]) + ":" + std::string(t6[1]) : "");
@@ -356,7 +351,7 @@ bool uff_claims(const std::filesystem::path& file, std::span<const unsigned char
   if (ext == ".uff" || ext == ".unv" || ext == ".uf") return true;
   const std::string_view h(reinterpret_cast<const char*>(head.data()), head.size());
   const std::size_t e = h.find('\n');
-  return e != std::string_view::npos && trim(h.substr(0, e)) == "-1";
+  return e != std::string_view::npos && trim_space(h.substr(0, e)) == "-1";
 }
 
 std::unique_ptr<Reader> open_uff_reader(const std::filesystem::path& file, const ReaderOptions& options) {

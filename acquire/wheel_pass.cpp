@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "acquire/edge_detector.hpp"
+#include "acquire/channel_inputs.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 
@@ -16,10 +17,6 @@ struct Source {
   PulseThresholds thresholds;
 };
 
-std::string label(const ChannelSpec& c) {
-  return "channel '" + c.name + "' (" + to_string(c.role) + ", index " + std::to_string(*c.index) + ")";
-}
-
 /// Manual thresholds from the manifest or automatic ones from the histogram.
 /// An index high for one encoder state per turn (a Z gated to A/B: 1/4096 of
 /// a 1024-line turn, a sample or two) is too rare for its histogram to show
@@ -31,7 +28,7 @@ PulseThresholds thresholds_of(const ChannelSpec& c, const LevelHistogram& h, con
   const ChannelSpec& primary = m.pulse_channel();
   if (!automatic && !c.threshold_low_V && c.role == ChannelRole::crank_index && h.count() > 0) {
     automatic = main;
-    warnings.push_back(label(c) + " is high too briefly for its own levels to show (an index gated to one "
+    warnings.push_back(channel_label(c) + " is high too briefly for its own levels to show (an index gated to one "
                        "encoder state); it is read with the thresholds of '" + primary.name + "' (" +
                        format_number(main.low) + " V to " + format_number(main.high) +
                        " V); set threshold_low_V/threshold_high_V on it if its levels differ");
@@ -41,7 +38,7 @@ PulseThresholds thresholds_of(const ChannelSpec& c, const LevelHistogram& h, con
   if (c.threshold_low_V) {
     t.low = *c.threshold_low_V, t.high = *c.threshold_high_V, t.automatic = false;
   } else if (!automatic) {
-    throw InputError(m.file.string() + ": " + label(c) +
+    throw InputError(m.file.string() + ": " + channel_label(c) +
                      " has no two distinct levels (no edges); check its index and the sensor, or set "
                      "threshold_low_V/threshold_high_V");
   }
@@ -115,7 +112,7 @@ WheelEdges wheel_edge_pass(const BlockStream& stream, const Manifest& manifest, 
     if (det[k].out->empty()) {
       const Source& s = *std::find_if(sources.begin(), sources.end(),
                                       [&](const Source& x) { return static_cast<std::size_t>(*x.spec->index) == det[k].index; });
-      throw InputError(info.file.string() + ": " + label(*s.spec) + " never crosses from " +
+      throw InputError(info.file.string() + ": " + channel_label(*s.spec) + " never crosses from " +
                        format_number(s.thresholds.low) + " V to " + format_number(s.thresholds.high) +
                        " V: no edges; check the channel index and thresholds in " + manifest.file.string());
     }

@@ -11,13 +11,6 @@
 
 namespace fourbar {
 
-namespace {
-
-bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
-bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
-
-}  // namespace
-
 double longest_segment_frames(const PulseTrain& pulses, double sample_rate_hz) {
   double longest_frames = 0;  // pulse-train segments, in samples
   for (const auto& seg : pulses.segments) {

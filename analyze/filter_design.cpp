@@ -27,9 +27,6 @@ void check_corner(const char* key, double f, double nyquist) {
   }
 }
 
-bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
-bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
-
 // Σ over the band edges of ±sin(2π·f_e·i/fs) for i = 0 … m (the ideal
 // kernel is that divided by π·i): each edge's sine by a rotation recurrence,
 // re-seeded from std::sin/cos every 64 taps so the rounding cannot grow.

@@ -23,6 +23,11 @@ namespace fourbar {
 
 enum class BandType { all_pass, lowpass, highpass, bandpass, bandstop };
 
+/// Whether a band of this type has a lower corner (high-pass, band-pass,
+/// band-stop) / an upper corner (low-pass, band-pass, band-stop).
+inline bool uses_low(BandType b) { return b == BandType::highpass || b == BandType::bandpass || b == BandType::bandstop; }
+inline bool uses_high(BandType b) { return b == BandType::lowpass || b == BandType::bandpass || b == BandType::bandstop; }
+
 struct FilterSpec {
   BandType band = BandType::all_pass;
   double low_hz = 0;          ///< lower corner (highpass, bandpass, bandstop)

@@ -22,7 +22,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Reads a recording (WAV/W64/RF64/FLAC/CAF/AIFF via libsndfile, MATLAB .mat,
+constexpr const char* kAcquireDetails = R"(Reads a recording (WAV/W64/RF64/FLAC/CAF/AIFF via libsndfile, MATLAB .mat,
 NI TDMS, UFF dataset 58/58b, or CSV/TSV text)
 and its manifest (default: REC with extension .toml beside it), finds the
 crank pulses, fits the crank angle through them. Without --out it only
@@ -223,7 +223,7 @@ int run_acquire(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--start-s T] [--end-s T] [--no-samples] [--binary] [--csv-comments] [-q]", kDetails, opts, pos,
+  if (!parse_arguments("acquire", "REC [--manifest M] [--out [DIR]] [-n N] [--start-s T] [--end-s T] [--no-samples] [--binary] [--csv-comments] [-q]", kAcquireDetails, opts, pos,
                        inv, vm))
     return 0;
   const bool write = vm.count("out") > 0;

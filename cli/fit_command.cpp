@@ -31,7 +31,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Every recording in SESSION_DIR goes through acquire and analyze with the
+constexpr const char* kFitDetails = R"(Every recording in SESSION_DIR goes through acquire and analyze with the
 session's settings (session.toml, as `fourbar report` does). For each, the
 turn-to-turn statistics of the coupler and rocker alpha (spread over turns,
 per-turn deviation, per-turn peak deviation, averaged deviation; each with its
@@ -155,7 +155,7 @@ int run_fit(const Invocation& inv) {
   pos.add("session", 1);
   po::variables_map vm;
   if (!parse_arguments("fit", "SESSION_DIR [--out DIR] [--per-recording] [--smooth] [--restitution LO:HI] [--friction LO:HI]",
-                       kDetails, opts, pos, inv, vm))
+                       kFitDetails, opts, pos, inv, vm))
     return 0;
 
   if (!restitution_box.empty()) std::tie(o.box.restitution_low, o.box.restitution_high) = parse_box("restitution", restitution_box);

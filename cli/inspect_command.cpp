@@ -15,7 +15,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Reads a recording without a manifest (WAV/W64/RF64/FLAC/CAF/AIFF, MATLAB
+constexpr const char* kInspectDetails = R"(Reads a recording without a manifest (WAV/W64/RF64/FLAC/CAF/AIFF, MATLAB
 .mat v5/v7/v7.3, NI TDMS, UFF dataset 58/58b, CSV/TSV text) and prints its format, sample rate and
 duration, and per channel: min, max, mean (the DC level), RMS, AC RMS (about
 the mean), clipping (samples at the digital rails of an integer format, or
@@ -98,7 +98,7 @@ int run_inspect(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("inspect", "REC [--manifest-template] [--sample-rate-hz F] [--rate-variable NAME]", kDetails, opts,
+  if (!parse_arguments("inspect", "REC [--manifest-template] [--sample-rate-hz F] [--rate-variable NAME]", kInspectDetails, opts,
                        pos, inv, vm))
     return 0;
   ReaderOptions options;

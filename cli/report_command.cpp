@@ -14,7 +14,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Every recording in SESSION_DIR (top level: .wav .w64 .rf64 .flac .caf .aiff
+constexpr const char* kReportDetails = R"(Every recording in SESSION_DIR (top level: .wav .w64 .rf64 .flac .caf .aiff
 .aif .mat .csv .tsv .txt, except *.truth.csv), each with its manifest REC.toml
 beside it, goes through acquire and analyze; the clearance model and the
 nominal mechanism are simulated at its measured mean crank speed and its
@@ -89,7 +89,7 @@ int run_report(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("session", 1);
   po::variables_map vm;
-  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache] [--jobs N] [--fit FIT.json | --no-fit] [--strict]", kDetails, opts, pos, inv,
+  if (!parse_arguments("report", "SESSION_DIR [--out report.html] [--cache DIR] [--no-cache] [--jobs N] [--fit FIT.json | --no-fit] [--strict]", kReportDetails, opts, pos, inv,
                        vm))
     return 0;
   ReportOptions o;

@@ -33,7 +33,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Runs the clearance model over a grid and writes one CSV row per grid point.
+constexpr const char* kSweepDetails = R"(Runs the clearance model over a grid and writes one CSV row per grid point.
 
 Sweep file keys:
   scene                 base scene (model = "clearance"), relative to the sweep file
@@ -139,7 +139,7 @@ int run_sweep(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("sweep", 1);
   po::variables_map vm;
-  if (!parse_arguments("sweep", "SWEEP.toml [--out FILE] [--jobs N] [--csv-comments]", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("sweep", "SWEEP.toml [--out FILE] [--jobs N] [--csv-comments]", kSweepDetails, opts, pos, inv, vm)) return 0;
   if (jobs < 1 || jobs > 4096) throw InputError("sweep: --jobs " + std::to_string(jobs) + " must be between 1 and 4096");
 
   // Every rank reads and checks the inputs (so a bad file fails on all of

@@ -16,7 +16,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails =
+constexpr const char* kTapDetails =
     "Finds the tap (the largest value), fits the free decay after it with a sum of\n"
     "damped sinusoids (spectrum peaks to start, then nonlinear least squares), and\n"
     "prints each mode's natural frequency and damping ratio with its standard error,\n"
@@ -68,7 +68,7 @@ int run_tap(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("recording", 1);
   po::variables_map vm;
-  if (!parse_arguments("tap", "REC [--channel C] [--modes N] [--link coupler|rocker]", kDetails, opts, pos, inv, vm))
+  if (!parse_arguments("tap", "REC [--channel C] [--modes N] [--link coupler|rocker]", kTapDetails, opts, pos, inv, vm))
     return 0;
   if (link != "coupler" && link != "rocker")
     throw InputError("tap: --link must be coupler or rocker, not '" + link + "'");

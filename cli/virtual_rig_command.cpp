@@ -22,7 +22,7 @@ namespace fourbar::cli {
 
 namespace {
 
-constexpr const char* kDetails = R"(Writes REC (format by extension: .wav .w64 .rf64 .flac .caf .aiff .aif .csv),
+constexpr const char* kVirtualRigDetails = R"(Writes REC (format by extension: .wav .w64 .rf64 .flac .caf .aiff .aif .csv),
 REC's manifest (same name, .toml) and REC's truth (<stem>.truth.csv: crank_deg,
 time_s, theta2..alpha4 and each sensor's true specific force <name>_m_s2, plus
 <name>_hp_m_s2 after the high-pass of an AC-coupled sensor), from the scene's
@@ -65,7 +65,7 @@ int run_virtual_rig(const Invocation& inv) {
   po::positional_options_description pos;
   pos.add("scene", 1);
   po::variables_map vm;
-  if (!parse_arguments("virtual-rig", "SCENE.toml --out REC.wav [--no-truth] [-q]", kDetails, opts, pos, inv, vm)) return 0;
+  if (!parse_arguments("virtual-rig", "SCENE.toml --out REC.wav [--no-truth] [-q]", kVirtualRigDetails, opts, pos, inv, vm)) return 0;
 
   const Scene scene = load_scene(scene_file);
   const RecordingSpec spec = read_recording_spec(scene);

@@ -51,7 +51,7 @@ std::optional<double> scatter_rms(const json& std_series) {
   return std::sqrt(s / static_cast<double>(std_series.size()));
 }
 
-json opt(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+json json_or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
 /// Measured vs one model run (the prior's or the fitted one) on the quantity `q`.
 json model_row(const json& metrics, const json& series, const std::optional<double>& measured_scatter, double measured_turns,
@@ -62,7 +62,7 @@ json model_row(const json& metrics, const json& series, const std::optional<doub
               {"correlation", metrics["correlation_simulated"]},
               {"model_deviation_rms", metrics["magnification"]["simulated_deviation_rms"]}};
   const std::optional<double> s = scatter_rms(series["clearance_std"]);
-  row["model_scatter_rms"] = opt(s);
+  row["model_scatter_rms"] = json_or_null(s);
   // Averaged over R turns, the deviation's mean square holds σ²/R of scatter
   // (turns independent): the a that scatter alone would give, and a with the
   // scatter taken out of both averaged deviations (absent when nothing is left).
@@ -74,8 +74,8 @@ json model_row(const json& metrics, const json& series, const std::optional<doub
     const double ds2 = ds * ds - *s * *s / model_turns;
     if (dm2 > 0 && ds2 > 0) a_without = std::sqrt(ds2 / dm2);
   }
-  row["a_from_scatter_alone"] = opt(a_scatter);
-  row["a_without_scatter"] = opt(a_without);
+  row["a_from_scatter_alone"] = json_or_null(a_scatter);
+  row["a_without_scatter"] = json_or_null(a_without);
   return row;
 }
 
@@ -158,7 +158,7 @@ std::optional<json> fit_report_row(const ReportFit& fit, const json& r) {
               {"quantity", q},
               {"measured_turns", rm},
               {"measured_deviation_rms", dm},
-              {"measured_scatter_rms", opt(sm)},
+              {"measured_scatter_rms", json_or_null(sm)},
               // The share of the measured averaged deviation that scatter
               // over the turns alone would give: near 1, a compares scatter.
               {"measured_scatter_share", sm && dm > 0 ? json(*sm / std::sqrt(rm) / dm) : json(nullptr)}};

@@ -11,7 +11,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string num(double v, int digits = 3) { return format_number(v, digits); }
 std::string hz(double v) { return format_number(v, 4) + " Hz"; }
 
 UnmodelledEnergy unmodelled_of(const json& u) {
@@ -163,16 +162,16 @@ void judge_agreement_below_band(const VerdictInputs& in, Verdict& v) {
   v.a = a;
   v.a_from = "scatter below " + format_number(cut, 4) + " Hz";
   VerdictPart p;
-  p.words = "a " + num(a, 2) + " (below " + format_number(cut, 4) + " Hz)";
+  p.words = "a " + format_number(a, 2) + " (below " + format_number(cut, 4) + " Hz)";
   p.level = (a >= kAgreeLow && a <= kAgreeHigh)                 ? VerdictLevel::good
             : (a >= kAgreeProblemLow && a <= kAgreeProblemHigh) ? VerdictLevel::attention
                                                                 : VerdictLevel::problem;
   p.sentence = "Judged below " + hz(cut) + " only, because " + lacks +
                ": a (scatter below the band) = model / measured turn-to-turn scatter of α3, both low-passed at " + hz(cut) +
-               ", = " + num(a) + ": ";
-  const std::string e = "e = " + num(in.restitution);
-  if (a > kAgreeHigh) p.sentence += "the model is " + num(a, 2) + "× more violent than the measurement; lower the restitution (" + e + ")";
-  else if (a < kAgreeLow) p.sentence += "the model is gentler than the measurement (" + num(1.0 / a, 2) + "× weaker); raise the restitution (" + e + ")";
+               ", = " + format_number(a, 3) + ": ";
+  const std::string e = "e = " + format_number(in.restitution, 3);
+  if (a > kAgreeHigh) p.sentence += "the model is " + format_number(a, 2) + "× more violent than the measurement; lower the restitution (" + e + ")";
+  else if (a < kAgreeLow) p.sentence += "the model is gentler than the measurement (" + format_number(1.0 / a, 2) + "× weaker); raise the restitution (" + e + ")";
   else {
     // Agreement below the band only: the model family lacks what lies above
     // it, so the model as a whole is not "good" (docs/verdict.md "Model family").

@@ -14,16 +14,16 @@ using nlohmann::json;
 
 namespace {
 
-json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json stats_json(const ChannelStats& s, bool checked) {
-  return {{"min", number(s.min)},
-          {"max", number(s.max)},
-          {"mean", number(s.mean)},
-          {"rms", number(s.rms)},
+  return {{"min", finite_or_null(s.min)},
+          {"max", finite_or_null(s.max)},
+          {"mean", finite_or_null(s.mean)},
+          {"rms", finite_or_null(s.rms)},
           {"clipping_checked", checked},
           {"clipped_samples", s.clipped_samples},
-          {"first_clip_s", s.clipped_samples > 0 ? number(s.first_clip_s) : json(nullptr)}};
+          {"first_clip_s", s.clipped_samples > 0 ? finite_or_null(s.first_clip_s) : json(nullptr)}};
 }
 
 /// The set-up check's word on one channel ("" for the crank).
@@ -85,11 +85,11 @@ json channel_sheet_json(const Manifest& m, const AcquisitionReport& acq, const j
         const PulseThresholds& t = acq.thresholds;
         row["recorded"] = stats_json(acq.pulse_stats, false);
         row["crank_offset_deg"] = units::rad_to_deg(c.crank_offset_rad);
-        row["thresholds"] = {{"low_V", number(t.low)},
-                             {"high_V", number(t.high)},
-                             {"bottom_level_V", number(t.bottom_level)},
-                             {"top_level_V", number(t.top_level)},
-                             {"noise_V", number(t.noise)},
+        row["thresholds"] = {{"low_V", finite_or_null(t.low)},
+                             {"high_V", finite_or_null(t.high)},
+                             {"bottom_level_V", finite_or_null(t.bottom_level)},
+                             {"top_level_V", finite_or_null(t.top_level)},
+                             {"noise_V", finite_or_null(t.noise)},
                              {"automatic", t.automatic},
                              {"follows_baseline", t.follows_baseline}};
         if (c.pulses_per_rev > 1) row["pulses_per_rev"] = c.pulses_per_rev, row["missing_teeth"] = c.missing_teeth;
@@ -132,8 +132,8 @@ json excerpt_json(const AcquisitionReport& acq) {
           {"pulse_inserted", x.pulse_inserted},
           {"removed_edge_s", x.removed_edge_s},
           {"wheel_edge_s", x.wheel_edge_s},
-          {"thresholds", {{"low_V", number(th.low)}, {"high_V", number(th.high)}, {"follows_baseline", th.follows_baseline}}},
-          {"edge_level_V", number(acq.edge_level_V)}};
+          {"thresholds", {{"low_V", finite_or_null(th.low)}, {"high_V", finite_or_null(th.high)}, {"follows_baseline", th.follows_baseline}}},
+          {"edge_level_V", finite_or_null(acq.edge_level_V)}};
 }
 
 json speed_json(const AcquisitionReport& acq) {

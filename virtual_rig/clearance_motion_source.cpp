@@ -4,19 +4,12 @@
 #include <cmath>
 
 #include "common/error.hpp"
+#include "common/angle_unwrap.hpp"
 #include "common/units.hpp"
 #include "sim/compliant/compliant_simulator.hpp"
 #include "virtual_rig/drive_crank.hpp"
 
 namespace fourbar {
-
-namespace {
-
-double unwrap(double angle, double previous) {
-  return angle - units::kTwoPi * std::round((angle - previous) / units::kTwoPi);
-}
-
-}  // namespace
 
 ClearanceMotionSource::ClearanceMotionSource(std::shared_ptr<const Rig> rig, CrankDrive drive,
                                              const ClearanceSettings& settings, double clearance_m, double start_s,
@@ -45,8 +38,8 @@ ClearanceMotionSource::ClearanceMotionSource(std::shared_ptr<const Rig> rig, Cra
     double th3 = 0, th4 = 0;
     for (const ClearanceSample& s : sim.samples()) {
       const double a3 = std::atan2(s.links.u3.y, s.links.u3.x), a4 = std::atan2(s.links.u4.y, s.links.u4.x);
-      th3 = nodes_.empty() ? a3 : unwrap(a3, th3);
-      th4 = nodes_.empty() ? a4 : unwrap(a4, th4);
+      th3 = nodes_.empty() ? a3 : units::unwrap_rad(a3, th3);
+      th4 = nodes_.empty() ? a4 : units::unwrap_rad(a4, th4);
       nodes_.push_back({th3, s.links.omega3_rad_s, th4, s.links.omega4_rad_s});
     }
     impacts_ = sim.impacts();

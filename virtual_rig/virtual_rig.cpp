@@ -11,6 +11,7 @@
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "common/angle_unwrap.hpp"
 #include "common/units.hpp"
 #include "common/version.hpp"
 #include "virtual_rig/clearance_motion_source.hpp"
@@ -68,11 +69,6 @@ class PulseShape {
   double rise_;
   std::size_t first_ = 0;
 };
-
-/// Principal angle brought within π of the previous one.
-double unwrap(double angle, double previous) {
-  return angle - units::kTwoPi * std::round((angle - previous) / units::kTwoPi);
-}
 
 /// The recording, its manifest and its truth must not land on a file the run
 /// reads (the scene, the rig): `--out S.flac` beside the scene `S.toml` would
@@ -319,7 +315,7 @@ VirtualRigResult make_virtual_recording(const Scene& scene, const RecordingSpec&
                std::sin(units::kTwoPi * spec.hum_frequency_hz * static_cast<double>(h + 1) * t + hum_phase[h]);
       if (truth) {
         double th3 = st.theta3_rad, th4 = st.theta4_rad;
-        if (first + f > 0) th3 = unwrap(th3, theta3_prev), th4 = unwrap(th4, theta4_prev);
+        if (first + f > 0) th3 = units::unwrap_rad(th3, theta3_prev), th4 = units::unwrap_rad(th4, theta4_prev);
         theta3_prev = th3, theta4_prev = th4;
         row = {units::rad_to_deg(st.crank.angle_rad), t, st.crank.angle_rad, st.crank.speed_rad_s,
                st.crank.accel_rad_s2, th3, st.omega3_rad_s, st.alpha3_rad_s2, th4, st.omega4_rad_s, st.alpha4_rad_s2};

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "sim/integrate/sundials_flags.hpp"
 #include "sim/integrate/integrator.hpp"
 
 namespace fourbar {
@@ -18,28 +19,24 @@ std::unique_ptr<DenseIntegrator> make_cvode_integrator(double tolerance);
 
 namespace {
 
-void check(int flag, const char* what) {
-  if (flag < 0) throw RunError(std::string("CVODE ") + what + " failed (flag " + std::to_string(flag) + ")");
-}
-
-void silent_handler(int, const char*, const char*, char*, void*) {}
+constexpr SundialsCheck check_cvode{"CVODE"};
 
 class CvodeIntegrator final : public DenseIntegrator {
  public:
   explicit CvodeIntegrator(double tol) {
-    check(SUNContext_Create(nullptr, &ctx_), "context");
+    check_cvode(SUNContext_Create(nullptr, &ctx_), "context");
     y_ = N_VNew_Serial(kOdeSize, ctx_);
     dky_ = N_VNew_Serial(kOdeSize, ctx_);
     N_VConst(0.0, y_);
     mem_ = CVodeCreate(CV_ADAMS, ctx_);
     if (!mem_) throw RunError("CVODE: cannot create the integrator");
-    check(CVodeInit(mem_, &CvodeIntegrator::f, 0.0, y_), "init");
-    check(CVodeSStolerances(mem_, tol, tol), "tolerances");
+    check_cvode(CVodeInit(mem_, &CvodeIntegrator::f, 0.0, y_), "init");
+    check_cvode(CVodeSStolerances(mem_, tol, tol), "tolerances");
     nls_ = SUNNonlinSol_FixedPoint(y_, 0, ctx_);
-    check(CVodeSetNonlinearSolver(mem_, nls_), "nonlinear solver");
-    check(CVodeSetUserData(mem_, this), "user data");
-    check(CVodeSetMaxNumSteps(mem_, 1'000'000), "max steps");
-    check(CVodeSetErrHandlerFn(mem_, silent_handler, nullptr), "error handler");
+    check_cvode(CVodeSetNonlinearSolver(mem_, nls_), "nonlinear solver");
+    check_cvode(CVodeSetUserData(mem_, this), "user data");
+    check_cvode(CVodeSetMaxNumSteps(mem_, 1'000'000), "max steps");
+    check_cvode(CVodeSetErrHandlerFn(mem_, silent_sundials_handler, nullptr), "error handler");
   }
   ~CvodeIntegrator() override {
     CVodeFree(&mem_);
@@ -55,12 +52,12 @@ class CvodeIntegrator final : public DenseIntegrator {
   void do_reset(double t0, const OdeState& y0) override {
     double* y = N_VGetArrayPointer(y_);
     for (std::size_t i = 0; i < kOdeSize; ++i) y[i] = y0[i];
-    check(CVodeReInit(mem_, t0, y_), "reinit");
+    check_cvode(CVodeReInit(mem_, t0, y_), "reinit");
     t_cvode_ = t0;
   }
 
   std::pair<double, double> do_step(double t_stop) override {
-    check(CVodeSetStopTime(mem_, t_stop), "stop time");
+    check_cvode(CVodeSetStopTime(mem_, t_stop), "stop time");
     double t = t_cvode_;
     const int flag = CVode(mem_, t_stop, y_, &t, CV_ONE_STEP);
     if (flag < 0)
@@ -73,7 +70,7 @@ class CvodeIntegrator final : public DenseIntegrator {
   }
 
   void do_interpolate(double t, OdeState& y) override {
-    check(CVodeGetDky(mem_, t, 0, dky_), "dense output");
+    check_cvode(CVodeGetDky(mem_, t, 0, dky_), "dense output");
     const double* d = N_VGetArrayPointer(dky_);
     for (std::size_t i = 0; i < kOdeSize; ++i) y[i] = d[i];
   }

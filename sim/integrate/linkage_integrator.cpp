@@ -13,21 +13,18 @@
 #include <utility>
 
 #include "common/error.hpp"
+#include "sim/integrate/sundials_flags.hpp"
 #include "sim/integrate/second_order_linear_solver.hpp"
 
 namespace fourbar {
 
 namespace {
 
-void check(int flag, const char* what) {
-  if (flag < 0) throw RunError(std::string("SUNDIALS (linkage) ") + what + " failed (flag " + std::to_string(flag) + ")");
-}
-
-void silent_handler(int, const char*, const char*, char*, void*) {}
+constexpr SundialsCheck check_linkage{"SUNDIALS (linkage)"};
 
 constexpr long kJacobianAge = 1000;  ///< steps between Jacobians when Newton keeps converging
 
-int rhs_fn(double t, N_Vector y, N_Vector ydot, void* user) {
+int linkage_rhs(double t, N_Vector y, N_Vector ydot, void* user) {
   auto* self = static_cast<LinkageIntegrator*>(user);
   try {
     self->ode().rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
@@ -38,7 +35,7 @@ int rhs_fn(double t, N_Vector y, N_Vector ydot, void* user) {
   return 0;
 }
 
-int root_fn(double t, N_Vector y, double* g, void* user) {
+int linkage_roots(double t, N_Vector y, double* g, void* user) {
   auto* self = static_cast<LinkageIntegrator*>(user);
   try {
     self->ode().witnesses(t, N_VGetArrayPointer(y), g);
@@ -51,7 +48,7 @@ int root_fn(double t, N_Vector y, double* g, void* user) {
 
 /// Forward differences over the coupled columns, increment √u·max(|y_j|, 1e-3)
 /// (the state is scaled to order one), as stiff_integrator.cpp.
-int jac_fn(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
+int linkage_jacobian(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
   auto* self = static_cast<LinkageIntegrator*>(user);
   const std::size_t n = self->size();
   std::vector<double>& yy = self->scratch0;
@@ -100,7 +97,7 @@ LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::si
   Cvode& c = *cv_;
   c.method = method;
   c.tol = tolerance;
-  check(SUNContext_Create(nullptr, &c.ctx), "context");
+  check_linkage(SUNContext_Create(nullptr, &c.ctx), "context");
   const auto n = static_cast<sunindextype>(size);
   c.y = N_VNew_Serial(n, c.ctx);
   c.dky = N_VNew_Serial(n, c.ctx);
@@ -139,25 +136,25 @@ void LinkageIntegrator::reset(LinkageOde& ode, double t0, const std::vector<doub
     return;
   }
   if (!c.initialised) {
-    check(CVodeInit(c.mem, rhs_fn, t0, c.y), "init");
-    check(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
-    check(CVodeSetUserData(c.mem, this), "user data");
-    check(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
-    check(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
-    check(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
+    check_linkage(CVodeInit(c.mem, linkage_rhs, t0, c.y), "init");
+    check_linkage(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
+    check_linkage(CVodeSetUserData(c.mem, this), "user data");
+    check_linkage(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
+    check_linkage(CVodeSetJacFn(c.mem, linkage_jacobian), "Jacobian");
+    check_linkage(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
     // The Jacobian is re-evaluated only when Newton fails to converge, not
     // every 51 steps: it is nearly constant between contact changes (the
     // modes are linear), and Newton still converges in ~1 iteration a step
     // with a 1000-step-old one (elastic 4+4 modes, tol 1e-9: 48 Jacobians a
     // turn instead of 696, same steps and error; docs/linkage-model.md).
-    check(CVodeSetJacEvalFrequency(c.mem, kJacobianAge), "Jacobian age");
-    check(CVodeSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
-    check(CVodeRootInit(c.mem, static_cast<int>(roots_), root_fn), "root finding");
+    check_linkage(CVodeSetJacEvalFrequency(c.mem, kJacobianAge), "Jacobian age");
+    check_linkage(CVodeSetErrHandlerFn(c.mem, silent_sundials_handler, nullptr), "error handler");
+    check_linkage(CVodeRootInit(c.mem, static_cast<int>(roots_), linkage_roots), "root finding");
     c.initialised = true;
   } else {
     const Counters k = counters();
     before_reset_ = k;
-    check(CVodeReInit(c.mem, t0, c.y), "reinit");
+    check_linkage(CVodeReInit(c.mem, t0, c.y), "reinit");
   }
 }
 
@@ -165,27 +162,27 @@ void LinkageIntegrator::reset_arkode(double t0) {
   Cvode& c = *cv_;
   const bool explicit_rk = c.method == LinkageMethod::erk;
   if (!c.initialised) {
-    c.mem = explicit_rk ? ARKStepCreate(rhs_fn, nullptr, t0, c.y, c.ctx) : ARKStepCreate(nullptr, rhs_fn, t0, c.y, c.ctx);
+    c.mem = explicit_rk ? ARKStepCreate(linkage_rhs, nullptr, t0, c.y, c.ctx) : ARKStepCreate(nullptr, linkage_rhs, t0, c.y, c.ctx);
     if (!c.mem) throw RunError("ARKODE (linkage): cannot create the integrator");
-    check(ARKStepSStolerances(c.mem, c.tol, c.tol), "tolerances");
-    check(ARKStepSetUserData(c.mem, this), "user data");
+    check_linkage(ARKStepSStolerances(c.mem, c.tol, c.tol), "tolerances");
+    check_linkage(ARKStepSetUserData(c.mem, this), "user data");
     if (explicit_rk) {
-      check(ARKStepSetTableNum(c.mem, ARKODE_DIRK_NONE, ARKODE_VERNER_8_5_6), "ERK table");
+      check_linkage(ARKStepSetTableNum(c.mem, ARKODE_DIRK_NONE, ARKODE_VERNER_8_5_6), "ERK table");
     } else {
-      check(ARKStepSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
-      check(ARKStepSetJacFn(c.mem, jac_fn), "Jacobian");
+      check_linkage(ARKStepSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
+      check_linkage(ARKStepSetJacFn(c.mem, linkage_jacobian), "Jacobian");
       const ARKODE_DIRKTableID table =
           c.method == LinkageMethod::esdirk4 ? ARKODE_ESDIRK436L2SA_6_3_4 : ARKODE_ESDIRK547L2SA2_7_4_5;
-      check(ARKStepSetTableNum(c.mem, table, ARKODE_ERK_NONE), "ESDIRK table");
+      check_linkage(ARKStepSetTableNum(c.mem, table, ARKODE_ERK_NONE), "ESDIRK table");
     }
-    check(ARKStepSetInterpolantDegree(c.mem, ARK_INTERP_MAX_DEGREE), "interpolant");
-    check(ARKStepSetMaxNumSteps(c.mem, 1'000'000), "max steps");
-    check(ARKStepSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
-    check(ARKStepRootInit(c.mem, static_cast<int>(roots_), root_fn), "root finding");
+    check_linkage(ARKStepSetInterpolantDegree(c.mem, ARK_INTERP_MAX_DEGREE), "interpolant");
+    check_linkage(ARKStepSetMaxNumSteps(c.mem, 1'000'000), "max steps");
+    check_linkage(ARKStepSetErrHandlerFn(c.mem, silent_sundials_handler, nullptr), "error handler");
+    check_linkage(ARKStepRootInit(c.mem, static_cast<int>(roots_), linkage_roots), "root finding");
     c.initialised = true;
   } else {
     before_reset_ = counters();
-    check(explicit_rk ? ARKStepReInit(c.mem, rhs_fn, nullptr, t0, c.y) : ARKStepReInit(c.mem, nullptr, rhs_fn, t0, c.y),
+    check_linkage(explicit_rk ? ARKStepReInit(c.mem, linkage_rhs, nullptr, t0, c.y) : ARKStepReInit(c.mem, nullptr, linkage_rhs, t0, c.y),
           "reinit");
   }
 }
@@ -196,11 +193,11 @@ LinkageIntegrator::Step LinkageIntegrator::step(double t_stop) {
   int flag = 0;
   bool root = false;
   if (c.ark()) {
-    check(ARKStepSetStopTime(c.mem, t_stop), "stop time");
+    check_linkage(ARKStepSetStopTime(c.mem, t_stop), "stop time");
     flag = ARKStepEvolve(c.mem, t_stop, c.y, &t, ARK_ONE_STEP);
     root = flag == ARK_ROOT_RETURN;
   } else {
-    check(CVodeSetStopTime(c.mem, t_stop), "stop time");
+    check_linkage(CVodeSetStopTime(c.mem, t_stop), "stop time");
     flag = CVode(c.mem, t_stop, c.y, &t, CV_ONE_STEP);
     root = flag == CV_ROOT_RETURN;
   }
@@ -214,7 +211,7 @@ LinkageIntegrator::Step LinkageIntegrator::step(double t_stop) {
   s.roots.assign(roots_, 0);
   if (root) {
     std::vector<int> found(roots_, 0);
-    check(c.ark() ? ARKStepGetRootInfo(c.mem, found.data()) : CVodeGetRootInfo(c.mem, found.data()), "root info");
+    check_linkage(c.ark() ? ARKStepGetRootInfo(c.mem, found.data()) : CVodeGetRootInfo(c.mem, found.data()), "root info");
     for (std::size_t i = 0; i < roots_; ++i) s.roots[i] = found[i] > 0 ? 1 : (found[i] < 0 ? -1 : 0);
     s.any_root = true;
   }
@@ -235,7 +232,7 @@ void LinkageIntegrator::interpolate(double t, std::vector<double>& y) {
     y = y_end_;
     return;
   }
-  check(cv_->ark() ? ARKStepGetDky(cv_->mem, t, 0, cv_->dky) : CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
+  check_linkage(cv_->ark() ? ARKStepGetDky(cv_->mem, t, 0, cv_->dky) : CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
   const double* p = N_VGetArrayPointer(cv_->dky);
   y.assign(p, p + size_);
 }

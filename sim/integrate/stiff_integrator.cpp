@@ -13,17 +13,14 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "sim/integrate/sundials_flags.hpp"
 #include "sim/integrate/radau_integrator.hpp"
 
 namespace fourbar {
 
 namespace {
 
-void check(int flag, const char* what) {
-  if (flag < 0) throw RunError(std::string("CVODE (BDF) ") + what + " failed (flag " + std::to_string(flag) + ")");
-}
-
-void silent_handler(int, const char*, const char*, char*, void*) {}
+constexpr SundialsCheck check_bdf{"CVODE (BDF)"};
 
 /// The first N_VGetLength(v) components (the rest of `a` zero).
 void copy_in(N_Vector v, StiffState& a) {
@@ -103,7 +100,7 @@ StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::siz
   }
   Cvode& c = *cv_;
   c.tol = tolerance;
-  check(SUNContext_Create(nullptr, &c.ctx), "context");
+  check_bdf(SUNContext_Create(nullptr, &c.ctx), "context");
   const auto n = static_cast<sunindextype>(size);
   c.y = N_VNew_Serial(n, c.ctx);
   c.dky = N_VNew_Serial(n, c.ctx);
@@ -142,22 +139,22 @@ void StiffIntegrator::reset(StiffSystem& system, double t0, const StiffState& y0
   t_ = t0;
   stepped_ = false;
   if (!c.initialised) {
-    check(CVodeInit(c.mem, rhs_fn, t0, c.y), "init");
-    check(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
-    check(CVodeSetUserData(c.mem, this), "user data");
+    check_bdf(CVodeInit(c.mem, rhs_fn, t0, c.y), "init");
+    check_bdf(CVodeSStolerances(c.mem, c.tol, c.tol), "tolerances");
+    check_bdf(CVodeSetUserData(c.mem, this), "user data");
     if (c.fixed_point) {
-      check(CVodeSetNonlinearSolver(c.mem, c.fixed_point), "nonlinear solver");
+      check_bdf(CVodeSetNonlinearSolver(c.mem, c.fixed_point), "nonlinear solver");
     } else {
-      check(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
-      check(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
+      check_bdf(CVodeSetLinearSolver(c.mem, c.ls, c.jac), "linear solver");
+      check_bdf(CVodeSetJacFn(c.mem, jac_fn), "Jacobian");
     }
-    check(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
-    check(CVodeSetErrHandlerFn(c.mem, silent_handler, nullptr), "error handler");
-    check(CVodeRootInit(c.mem, 1, root_fn), "root finding");
+    check_bdf(CVodeSetMaxNumSteps(c.mem, 1'000'000), "max steps");
+    check_bdf(CVodeSetErrHandlerFn(c.mem, silent_sundials_handler, nullptr), "error handler");
+    check_bdf(CVodeRootInit(c.mem, 1, root_fn), "root finding");
     c.initialised = true;
   } else {
     before_reset_ = counters();
-    check(CVodeReInit(c.mem, t0, c.y), "reinit");
+    check_bdf(CVodeReInit(c.mem, t0, c.y), "reinit");
   }
 }
 
@@ -167,7 +164,7 @@ StiffIntegrator::Step StiffIntegrator::step(double t_stop) {
     return radau_->step(t_stop);
   }
   Cvode& c = *cv_;
-  check(CVodeSetStopTime(c.mem, t_stop), "stop time");
+  check_bdf(CVodeSetStopTime(c.mem, t_stop), "stop time");
   double t = t_;
   const int flag = CVode(c.mem, t_stop, c.y, &t, CV_ONE_STEP);
   if (flag < 0)
@@ -178,7 +175,7 @@ StiffIntegrator::Step StiffIntegrator::step(double t_stop) {
   s.end = t;
   if (flag == CV_ROOT_RETURN) {
     int found = 0;
-    check(CVodeGetRootInfo(c.mem, &found), "root info");
+    check_bdf(CVodeGetRootInfo(c.mem, &found), "root info");
     s.root = found > 0 ? 1 : -1;
   }
   t_ = t;
@@ -218,7 +215,7 @@ void StiffIntegrator::interpolate(double t, StiffState& y) {
     y = y_end_;
     return;
   }
-  check(CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
+  check_bdf(CVodeGetDky(cv_->mem, t, 0, cv_->dky), "dense output");
   copy_in(cv_->dky, y);
 }
 

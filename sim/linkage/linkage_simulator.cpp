@@ -27,7 +27,7 @@ Vec2 rotated(Vec2 u, double a) {
 }
 double angle_between(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
 /// A segment longer than this many turns restarts at a new time origin (as the compliant model).
-constexpr double kRestartTurns = 64;
+constexpr double kLinkageRestartTurns = 64;
 
 }  // namespace
 
@@ -414,7 +414,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
     for (;;) {
       const double t_end = local(abs_end);
       if (!(t < t_end)) break;
-      if ((t - seg_start) * w > kRestartTurns * units::kTwoPi) restart(t, state_at(t));
+      if ((t - seg_start) * w > kLinkageRestartTurns * units::kTwoPi) restart(t, state_at(t));
       const LinkageIntegrator::Step st = integ.step(t_end);
       const double ta = t, tb = st.end;
       emit_samples(tb);

@@ -2,20 +2,12 @@
 
 #include <cmath>
 
+#include "common/angle_unwrap.hpp"
 #include "common/units.hpp"
 #include "mechanism/kinetostatics.hpp"
 #include "sim/outputs.hpp"
 
 namespace fourbar {
-
-namespace {
-
-/// Brings `angle` within π of `previous` by whole turns (continuous series).
-double unwrap(double angle, double previous) {
-  return angle - units::kTwoPi * std::round((angle - previous) / units::kTwoPi);
-}
-
-}  // namespace
 
 SeriesTable run_nominal(const Scene& scene, NominalRunStats* stats) {
   const Rig& rig = *scene.rig;
@@ -54,8 +46,8 @@ SeriesTable run_nominal(const Scene& scene, NominalRunStats* stats) {
       theta3 = m.pose.theta3_rad();
       theta4 = m.pose.theta4_rad();
       if (i > 0) {
-        theta3 = unwrap(theta3, theta3_prev);
-        theta4 = unwrap(theta4, theta4_prev);
+        theta3 = units::unwrap_rad(theta3, theta3_prev);
+        theta4 = units::unwrap_rad(theta4, theta4_prev);
       }
       theta3_prev = theta3;
       theta4_prev = theta4;

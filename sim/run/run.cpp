@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/progress.hpp"
+#include "common/angle_unwrap.hpp"
 #include "common/units.hpp"
 #include "sim/compliant/compliant_simulator.hpp"
 #include "sim/outputs.hpp"
@@ -14,10 +15,6 @@ namespace {
 
 /// α3-deviation samples per turn for the per-turn statistics (every 1°).
 constexpr int kStatisticsPerTurn = 360;
-
-double unwrap(double angle, double previous) {
-  return angle - units::kTwoPi * std::round((angle - previous) / units::kTwoPi);
-}
 
 /// Largest scaled difference between the turn-start states of turns a and b.
 double state_difference(const RevolutionRecord& a, const RevolutionRecord& b) {
@@ -161,9 +158,9 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& s
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const ClearanceSample& s = samples[i];
     const double a3 = std::atan2(s.links.u3.y, s.links.u3.x), a4 = std::atan2(s.links.u4.y, s.links.u4.x);
-    th3 = i ? unwrap(a3, th3) : a3;
-    th4 = i ? unwrap(a4, th4) : a4;
-    eta = i ? unwrap(s.eta_rad, eta) : s.eta_rad;
+    th3 = i ? units::unwrap_rad(a3, th3) : a3;
+    th4 = i ? units::unwrap_rad(a4, th4) : a4;
+    eta = i ? units::unwrap_rad(s.eta_rad, eta) : s.eta_rad;
     out.series.columns[0][i] = units::rad_to_deg(s.crank.angle_rad);
     for (std::size_t c = 0; c < specs.size(); ++c)
       out.series.columns[c + 1][i] = clearance_column_value(*specs[c], s, th3, th4, eta);

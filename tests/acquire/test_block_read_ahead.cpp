@@ -75,7 +75,7 @@ TEST(BlockReadAhead, StoppedHalfWayEndsCleanly) {
 }
 
 /// Keeps what acquire streams, to compare bit for bit.
-struct Collect : AcquisitionSink {
+struct CollectValues : AcquisitionSink {
   std::vector<double> values;
   std::vector<std::int64_t> revolutions;
   void on_samples(const SampleBlock& b) override {
@@ -99,7 +99,7 @@ TEST(BlockReadAhead, AcquireOnTwoThreadsGivesTheNumbersOfOne) {
   v.spec.revolutions = 30;
   const auto written = v.write("read_ahead.wav", false);
   AcquisitionReport report[2];
-  Collect out[2];
+  CollectValues out[2];
   for (unsigned t : {1u, 2u}) {
     OpenedRecording o = open_with_manifest(written.recording, {});
     AcquireOptions options;

@@ -9,18 +9,13 @@
 #include "acquire/reader.hpp"
 #include "common/error.hpp"
 #include "support/temp_dir.hpp"
+#include "read_recording.hpp"
 
 namespace fourbar {
 namespace {
 
+using testing::read_all;
 using testing::TempDir;
-
-std::vector<double> read_all(Reader& r) {
-  std::vector<double> all, block(static_cast<std::size_t>(r.info().channels) * 2);
-  for (std::size_t n; (n = r.read(block)) > 0;)
-    all.insert(all.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(n * r.info().channels));
-  return all;
-}
 
 TEST(CsvUnits, SplitUnit) {
   EXPECT_EQ(split_unit("coupler_t [V]").name, "coupler_t");
@@ -59,7 +54,7 @@ TEST(CsvUnits, HeaderUnitsGiveBareNames) {
   EXPECT_EQ(r->info().channel_names, (std::vector<std::string>{"coupler_t", "pulse"}));
   EXPECT_EQ(r->info().channel_units, (std::vector<std::string>{"V", "V"}));
   EXPECT_NEAR(r->info().sample_rate_hz, 1000.0, 1e-9);
-  EXPECT_EQ(read_all(*r), (std::vector<double>{1.5, 0, 2.5, 5, 3.5, 0}));
+  EXPECT_EQ(read_all(*r, 2), (std::vector<double>{1.5, 0, 2.5, 5, 3.5, 0}));
 }
 
 TEST(CsvUnits, UnitsRowUnderTheHeaderIsReadAndSkipped) {
@@ -70,9 +65,9 @@ TEST(CsvUnits, UnitsRowUnderTheHeaderIsReadAndSkipped) {
   EXPECT_EQ(r->info().channel_names, (std::vector<std::string>{"coupler_t", "rocker_t"}));
   EXPECT_EQ(r->info().channel_units, (std::vector<std::string>{"V", "mV"}));
   EXPECT_NEAR(r->info().sample_rate_hz, 2000.0, 1e-9) << "the units row says the time is in ms";
-  EXPECT_EQ(read_all(*r), (std::vector<double>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(read_all(*r, 2), (std::vector<double>{1, 2, 3, 4, 5, 6}));
   r->rewind();
-  EXPECT_EQ(read_all(*r), (std::vector<double>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(read_all(*r, 2), (std::vector<double>{1, 2, 3, 4, 5, 6}));
 }
 
 TEST(CsvUnits, AFirstRowWithSomeNumbersIsDataAndItsTextAnError) {
@@ -80,7 +75,7 @@ TEST(CsvUnits, AFirstRowWithSomeNumbersIsDataAndItsTextAnError) {
   const auto f = dir.write("r.csv", "time_s,a,b\n0,x,2\n0.1,1,2\n");
   try {
     auto r = open_recording(f);
-    read_all(*r);
+    read_all(*r, 2);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(f.string() + ":2:2 (column 'a'): 'x' is not a finite number"), std::string::npos)

@@ -15,28 +15,14 @@
 #include "common/error.hpp"
 #include "support/temp_dir.hpp"
 #include "format_writers.hpp"
+#include "read_recording.hpp"
 
 namespace fourbar {
 namespace {
 
+using testing::read_all;
+using testing::read_error_of;
 using testing::TempDir;
-
-std::vector<double> read_all(Reader& r) {
-  std::vector<double> all, block(static_cast<std::size_t>(r.info().channels) * 1000);
-  for (std::size_t n; (n = r.read(block)) > 0;)
-    all.insert(all.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(n * r.info().channels));
-  return all;
-}
-
-std::string error_of(const std::filesystem::path& f, const ReaderOptions& o = {}) {
-  try {
-    auto r = open_recording(f, o);
-    read_all(*r);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 void write_vars(const std::filesystem::path& file, mat_ft version,
                 const std::vector<std::tuple<std::string, std::size_t, std::size_t, std::vector<double>>>& vars) {
@@ -63,12 +49,12 @@ TEST_P(MatVersion, VectorsAreChannelsInTheirOrderAndTheRateComesFromFs) {
   EXPECT_EQ(r->info().channel_names, s.names);
   EXPECT_EQ(r->info().rate_variable, "fs");
   EXPECT_DOUBLE_EQ(r->info().sample_rate_hz, 10000.0);
-  const auto all = read_all(*r);
+  const auto all = read_all(*r, 1000);
   ASSERT_EQ(all.size(), testing::kFrames * 4);
   for (std::size_t i : {std::size_t{0}, std::size_t{123}, testing::kFrames - 1})
     for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(all[i * 4 + c], s.columns[c][i]) << i << " " << c;
   r->rewind();
-  EXPECT_EQ(read_all(*r), all);
+  EXPECT_EQ(read_all(*r, 1000), all);
 }
 
 TEST_P(MatVersion, MatrixColumnsWithATimeVariable) {
@@ -86,13 +72,13 @@ TEST_P(MatVersion, MatrixColumnsWithATimeVariable) {
   EXPECT_DOUBLE_EQ(r->info().start_time_s, 2.0);
   ASSERT_EQ(r->info().notes.size(), 1u);
   EXPECT_NE(r->info().notes[0].find("'gain'"), std::string::npos) << "another length: named, not a channel";
-  const auto all = read_all(*r);
+  const auto all = read_all(*r, 1000);
   EXPECT_EQ(all[5 * 3 + 2], 25.0);
   // Channels along the rows of a 3×N matrix (the longer dimension is time).
   write_vars(dir.path() / "rows.mat", GetParam(), {{"data", 3, n, data_t}});
   auto rows = open_recording(dir.path() / "rows.mat", {500.0, {}, {}});
   EXPECT_EQ(rows->info().channel_names[2], "data(3,:)");
-  EXPECT_EQ(read_all(*rows), all);
+  EXPECT_EQ(read_all(*rows, 1000), all);
 }
 
 INSTANTIATE_TEST_SUITE_P(V5AndV73, MatVersion, ::testing::Values(MAT_FT_MAT5, MAT_FT_MAT73),
@@ -111,26 +97,26 @@ TEST(MatReader, ErrorsNameTheVariableAndListWhatTheFileHolds) {
   const auto s = testing::inspection_signals();
   const auto f = dir.path() / "r.mat";
   testing::write_mat(f, MAT_FT_MAT5, s, "");  // no rate variable at all
-  std::string e = error_of(f);
+  std::string e = read_error_of(f);
   EXPECT_NE(e.find(f.string() + ": no sample rate"), std::string::npos) << e;
   EXPECT_NE(e.find("coupler_t 20000x1"), std::string::npos) << e;
   EXPECT_NE(e.find("rate_variable"), std::string::npos) << e;
-  e = error_of(f, {{}, {}, "fs"});  // the manifest names a variable the file lacks
+  e = read_error_of(f, {{}, {}, "fs"});  // the manifest names a variable the file lacks
   EXPECT_NE(e.find("rate_variable 'fs' is not a numeric variable in this file"), std::string::npos) << e;
   EXPECT_NE(e.find("variables found: coupler_t 20000x1, pulse 1x20000, rocker_t 20000x1, spare 20000x1)"), std::string::npos) << e;
-  e = error_of(f, {{}, {}, "coupler_t"});
+  e = read_error_of(f, {{}, {}, "coupler_t"});
   EXPECT_NE(e.find("rate_variable 'coupler_t' is 20000x1, not a scalar"), std::string::npos) << e;
 
   write_vars(f, MAT_FT_MAT5, {{"a", 4, 1, {1, 2, NAN, 4}}, {"fs", 1, 1, {100}}});
-  e = error_of(f);
+  e = read_error_of(f);
   EXPECT_NE(e.find("variable 'a' element 3 is not a finite number"), std::string::npos) << e;
 
   write_vars(f, MAT_FT_MAT5, {{"t", 5, 1, {0, 0.1, 0.2, 0.3, 1.0}}, {"a", 5, 1, {1, 2, 3, 4, 5}}});  // a gap
-  e = error_of(f);
+  e = read_error_of(f);
   EXPECT_NE(e.find("time variable 't' element 2"), std::string::npos) << e;
 
   write_vars(f, MAT_FT_MAT5, {{"fs", 1, 1, {100}}});
-  e = error_of(f);
+  e = read_error_of(f);
   EXPECT_NE(e.find("no numeric variable with more than one value"), std::string::npos) << e;
 
   // A copy cut short: libmatio alone would drop the variables after the cut.
@@ -140,17 +126,17 @@ TEST(MatReader, ErrorsNameTheVariableAndListWhatTheFileHolds) {
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     for (std::size_t keep : {bytes.size() - 1, bytes.size() - 20, bytes.size() / 2}) {
       const auto cut = dir.write("cut.mat", bytes.substr(0, keep));
-      e = error_of(cut);
+      e = read_error_of(cut);
       EXPECT_NE(e.find(cut.string() + ": truncated"), std::string::npos) << keep << ": " << e;
     }
   }
   // v4: refused by name (libmatio spends seconds and gigabytes on a damaged one).
   testing::write_mat(f, MAT_FT_MAT4, s);
-  e = error_of(f);
+  e = read_error_of(f);
   EXPECT_NE(e.find("a MATLAB v4 file"), std::string::npos) << e;
 
   const auto junk = dir.write("junk.mat", "MATLAB 5.0 MAT-file, but then nothing sensible at all\n");
-  e = error_of(junk);
+  e = read_error_of(junk);
   EXPECT_EQ(e.rfind(junk.string() + ": ", 0), 0u) << e;
 }
 
@@ -168,14 +154,14 @@ TEST(MatReader, HeaderPartsClaimingGigabytesAreRefusedBeforeLibmatio) {
   TempDir dir;
   const auto f = dir.path() / "r.mat";
   write_vars(f, MAT_FT_MAT5, {{"fs", 1, 1, {100}}, {"a", 4, 1, {1, 2, 3, 4}}});
-  ASSERT_EQ(error_of(f), "");
+  ASSERT_EQ(read_error_of(f), "");
   std::ifstream in(f, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_EQ(bytes.substr(128, 4), u32_bytes({14}));  // little-endian machine, miMATRIX first
   ASSERT_EQ(bytes.substr(152, 4), u32_bytes({5}));   // its dimensions part after the array flags
   std::string plain = bytes;
   plain.replace(156, 4, u32_bytes({0x7fff0000u}));
-  std::string e = error_of(dir.write("plain.mat", plain));
+  std::string e = read_error_of(dir.write("plain.mat", plain));
   EXPECT_NE(e.find("damaged: a part of a variable at byte 152 claims 2147418112 bytes"), std::string::npos) << e;
 
   // A compressed variable whose name claims 2 GB (array flags, dimensions 1x1, name tag).
@@ -185,7 +171,7 @@ TEST(MatReader, HeaderPartsClaimingGigabytesAreRefusedBeforeLibmatio) {
   ASSERT_EQ(compress(reinterpret_cast<Bytef*>(z.data()), &z_size, reinterpret_cast<const Bytef*>(header.data()),
                      header.size()), Z_OK);
   z.resize(z_size);
-  e = error_of(dir.write("z.mat", bytes.substr(0, 128) + u32_bytes({15, static_cast<std::uint32_t>(z.size())}) + z));
+  e = read_error_of(dir.write("z.mat", bytes.substr(0, 128) + u32_bytes({15, static_cast<std::uint32_t>(z.size())}) + z));
   EXPECT_NE(e.find("damaged: the compressed variable at byte 128 has a header part claiming 2147483648 bytes"),
             std::string::npos) << e;
   // The same variable compressed by libmatio reads.
@@ -198,7 +184,7 @@ TEST(MatReader, HeaderPartsClaimingGigabytesAreRefusedBeforeLibmatio) {
     Mat_VarFree(v);
   }
   Mat_Close(mat);
-  EXPECT_EQ(error_of(dir.path() / "ok.mat"), "");
+  EXPECT_EQ(read_error_of(dir.path() / "ok.mat"), "");
 }
 
 TEST(MatReader, ManifestColumnsNameVariablesAndAMismatchListsThem) {

@@ -14,31 +14,22 @@
 #include "acquire/pulse_thresholds.hpp"
 #include "acquire/pulse_train.hpp"
 #include "tacho_signal.hpp"
+#include "pulse_manifest.hpp"
 
 namespace fourbar {
 namespace {
 
+using testing::pulse_manifest;
 using testing::PickupFaults;
 
 constexpr double kFs = 25600;
-
-Manifest pulse_manifest() {
-  Manifest m;
-  m.file = "synthetic.toml";
-  ChannelSpec pulse;
-  pulse.name = "crank_pulse";
-  pulse.role = ChannelRole::crank_pulse;
-  pulse.index = 0;
-  m.channels = {pulse};
-  return m;
-}
 
 struct Read {
   ThresholdChoice choice;
   std::vector<double> edges;
 };
 
-Read read_automatic(const std::vector<double>& x, const Manifest& m = pulse_manifest()) {
+Read read_automatic(const std::vector<double>& x, const Manifest& m = pulse_manifest(0)) {
   LevelHistogram global;
   LocalLevels local(kFs);
   for (double v : x) global.add(v), local.add(v);
@@ -111,7 +102,7 @@ TEST(PulseLevels, ManifestThresholdsWin) {
   const auto tacho = clean_tacho();
   PickupFaults drift;
   drift.drift_of_swing = 0.5;
-  Manifest m = pulse_manifest();
+  Manifest m = pulse_manifest(0);
   m.channels[0].threshold_low_V = 2.0;
   m.channels[0].threshold_high_V = 3.0;
   const Read r = read_automatic(testing::with_faults(tacho.volts, kFs, drift), m);

@@ -12,10 +12,12 @@
 #include "acquire/acquisition.hpp"
 #include "acquire/pulse_thresholds.hpp"
 #include "virtual_recording.hpp"
+#include "pulse_manifest.hpp"
 
 namespace fourbar {
 namespace {
 
+using testing::pulse_manifest;
 constexpr double kSwing_V = 5.0;
 
 /// The scan pass's histogram of a pulse signal: 0 V idle, 5 V pulses for 6 %
@@ -28,17 +30,6 @@ LevelHistogram noisy_pulses(double noise_of_swing) {
   return h;
 }
 
-Manifest pulse_manifest() {
-  Manifest m;
-  m.file = "synthetic.toml";
-  ChannelSpec pulse;
-  pulse.name = "crank_pulse";
-  pulse.role = ChannelRole::crank_pulse;
-  pulse.index = 3;
-  m.channels = {pulse};
-  return m;
-}
-
 bool warns_widened(const std::vector<std::string>& warnings) {
   return std::any_of(warnings.begin(), warnings.end(),
                      [](const std::string& w) { return w.find("hysteresis widened") != std::string::npos; });
@@ -49,7 +40,7 @@ bool band_wider_than_clean(const PulseThresholds& t) {
   return 0.5 * (t.high - t.low) > kHysteresisHalfBandOfSwing * (t.top_level - t.bottom_level) * (1 + 1e-9);
 }
 
-ThresholdChoice thresholds_for(const LevelHistogram& h, const Manifest& m = pulse_manifest()) {
+ThresholdChoice thresholds_for(const LevelHistogram& h, const Manifest& m = pulse_manifest(3)) {
   return pulse_thresholds(h, ChannelStats{}, m, "synthetic.wav");
 }
 
@@ -84,7 +75,7 @@ TEST(PulseThresholds, NoiseBetweenTheOldLimitsIsWidenedAndWarned) {
 // The manifest's thresholds are used as given: nothing is widened, so even a
 // very noisy channel gives no "hysteresis widened" warning.
 TEST(PulseThresholds, ManifestThresholdsAreNeverWidened) {
-  Manifest m = pulse_manifest();
+  Manifest m = pulse_manifest(3);
   m.channels[0].threshold_low_V = 1.5;
   m.channels[0].threshold_high_V = 3.5;
   const ThresholdChoice c = thresholds_for(noisy_pulses(0.12), m);

@@ -23,7 +23,7 @@ using testing::SpeedLaw;
 using testing::TachoSignal;
 using testing::tacho_signal;
 
-constexpr double kFs = 1000;
+constexpr double kTrackFs = 1000;
 constexpr double kMarkTurns = 0.1;  // a 36° mark: 2 samples wide at 3000 rpm
 
 struct Tracked {
@@ -35,7 +35,7 @@ struct Tracked {
 /// pulse-train cleaning (times in the full record's clock).
 Tracked track(const TachoSignal& s, std::size_t first = 0) {
   const PulseThresholds th{0, 1, 0.35, 0.65, 0, true};
-  EdgeDetector d(th, PulsePolarity::rising, kFs, static_cast<double>(first) / kFs, 0);
+  EdgeDetector d(th, PulsePolarity::rising, kTrackFs, static_cast<double>(first) / kTrackFs, 0);
   d.push(s.volts.data() + first, s.volts.size() - first, 1);
   Tracked t{d.edges(), d.widths(), {}};
   t.train = clean_pulse_train(t.edges, {}, t.widths);
@@ -53,7 +53,7 @@ std::vector<double> kept(const PulseTrain& p) {
 /// at it if that sample is still low) is kept, each within ½ sample, nothing else.
 void expect_every_pulse_kept(const Tracked& t, const TachoSignal& s, double from_s, const char* what) {
   const std::vector<double>& truth = s.pulse_times;
-  const bool starts_high = s.volts[static_cast<std::size_t>(std::lround(from_s * kFs))] > 0.5;
+  const bool starts_high = s.volts[static_cast<std::size_t>(std::lround(from_s * kTrackFs))] > 0.5;
   std::vector<double> want;
   for (double x : truth)
     if (x > from_s + (starts_high ? 1e-6 : -1e-6)) want.push_back(x);
@@ -62,7 +62,7 @@ void expect_every_pulse_kept(const Tracked& t, const TachoSignal& s, double from
   EXPECT_TRUE(t.train.inserted_s.empty()) << what;
   EXPECT_TRUE(t.train.orphan_s.empty()) << what;
   ASSERT_EQ(got.size(), want.size()) << what;
-  for (std::size_t k = 0; k < want.size(); ++k) ASSERT_LE(std::abs(got[k] - want[k]), 0.5 / kFs + 1e-9) << what << " " << k;
+  for (std::size_t k = 0; k < want.size(); ++k) ASSERT_LE(std::abs(got[k] - want[k]), 0.5 / kTrackFs + 1e-9) << what << " " << k;
 }
 
 /// Per-turn speed against the truth, within the sample-grid bound.
@@ -75,7 +75,7 @@ void expect_speed_within_grid_bound(const PulseTrain& p, const std::vector<doubl
                                     return std::abs(a - t) < std::abs(b - t); }); };
       const double true_period = near(t1) - near(t0);
       const double err = std::abs(true_period / (t1 - t0) - 1);
-      const double bound = (1 / kFs) / (true_period - 1 / kFs);
+      const double bound = (1 / kTrackFs) / (true_period - 1 / kTrackFs);
       worst_ratio = std::max(worst_ratio, err / bound);
     }
   EXPECT_LE(worst_ratio, 1.0 + 1e-9) << what;
@@ -86,10 +86,10 @@ SpeedLaw ramp(double rpm0, double rpm1, double seconds) { return {{0, seconds}, 
 
 // The run-up of the report that halved the speed: 600 → 3000 rpm in 10 s, 300 turns.
 TEST(PulseTracking, RunUpKeepsEveryPulse) {
-  const TachoSignal s = tacho_signal(ramp(600, 3000, 10), kFs, kMarkTurns);
+  const TachoSignal s = tacho_signal(ramp(600, 3000, 10), kTrackFs, kMarkTurns);
   ASSERT_GE(s.pulse_times.size(), 299u);
   for (double start_s : {0.0, 0.75, 1.0, 1.25, 4.3, 8.9}) {
-    const auto first = static_cast<std::size_t>(std::lround(start_s * kFs));
+    const auto first = static_cast<std::size_t>(std::lround(start_s * kTrackFs));
     const Tracked t = track(s, first);
     expect_every_pulse_kept(t, s, start_s, "run-up 600-3000");
     EXPECT_EQ(t.train.segments.size(), 1u) << start_s;
@@ -103,9 +103,9 @@ TEST(PulseTracking, RunUpKeepsEveryPulse) {
 TEST(PulseTracking, RunUpAndCoastDownFromNearStandstill) {
   for (bool up : {true, false})
     for (double phase : {0.0, 0.37, 0.93}) {
-      const TachoSignal s = tacho_signal(up ? ramp(30, 3000, 10) : ramp(3000, 30, 10), kFs, kMarkTurns, phase);
+      const TachoSignal s = tacho_signal(up ? ramp(30, 3000, 10) : ramp(3000, 30, 10), kTrackFs, kMarkTurns, phase);
       for (double start_s : {0.0, 0.6, 2.2, 5.0, 7.5}) {
-        const Tracked t = track(s, static_cast<std::size_t>(std::lround(start_s * kFs)));
+        const Tracked t = track(s, static_cast<std::size_t>(std::lround(start_s * kTrackFs)));
         const char* what = up ? "run-up 30-3000" : "coast-down 3000-30";
         SCOPED_TRACE(std::string(what) + " phase " + std::to_string(phase) + " start " + std::to_string(start_s));
         expect_every_pulse_kept(t, s, start_s, what);
@@ -122,7 +122,7 @@ TEST(PulseTracking, RunUpAndCoastDownFromNearStandstill) {
 TEST(PulseTracking, StallCutsTheTrainAndKeepsEveryPulse) {
   const SpeedLaw law{{0, 2, 3, 4.5, 5.5, 8}, {10, 10, 0, 0, 10, 10}};
   for (double phase : {0.0, 0.5, 0.8}) {
-    const TachoSignal s = tacho_signal(law, kFs, kMarkTurns, phase);
+    const TachoSignal s = tacho_signal(law, kTrackFs, kMarkTurns, phase);
     const Tracked t = track(s);
     SCOPED_TRACE(phase);
     EXPECT_TRUE(t.train.removed_s.empty());
@@ -144,22 +144,22 @@ TEST(PulseTracking, StallCutsTheTrainAndKeepsEveryPulse) {
 // half a period after each pulse: ambiguous, never silently accepted.
 TEST(PulseTracking, SpeedStepsAreKeptOrFlagged) {
   const SpeedLaw half{{0, 3, 3.02, 6}, {10, 10, 15, 15}};
-  const TachoSignal a = tacho_signal(half, kFs, kMarkTurns, 0.3);
+  const TachoSignal a = tacho_signal(half, kTrackFs, kMarkTurns, 0.3);
   const Tracked ta = track(a);
   expect_every_pulse_kept(ta, a, 0, "600-900 step");
   EXPECT_TRUE(ta.train.steps.empty());
 
   const SpeedLaw twice{{0, 3, 3.02, 6}, {10, 10, 20, 20}};
   for (double start_s : {0.0, 1.7}) {
-    const TachoSignal b = tacho_signal(twice, kFs, 0.25, 0.3);
-    const Tracked tb = track(b, static_cast<std::size_t>(std::lround(start_s * kFs)));
+    const TachoSignal b = tacho_signal(twice, kTrackFs, 0.25, 0.3);
+    const Tracked tb = track(b, static_cast<std::size_t>(std::lround(start_s * kTrackFs)));
     expect_every_pulse_kept(tb, b, start_s, "600-1200 step");
     ASSERT_EQ(tb.train.steps.size(), 1u);
     EXPECT_TRUE(tb.train.steps[0].resolved);
     EXPECT_NEAR(tb.train.steps[0].time_s, 3.0, 0.11);
     EXPECT_TRUE(tb.train.ambiguous().empty());
   }
-  const TachoSignal c = tacho_signal(twice, kFs, 0, 0.3, 0.012);  // 12 ms monostable pulses
+  const TachoSignal c = tacho_signal(twice, kTrackFs, 0, 0.3, 0.012);  // 12 ms monostable pulses
   const Tracked tc = track(c);
   ASSERT_EQ(tc.train.ambiguous().size(), 1u);
   EXPECT_NEAR(tc.train.ambiguous()[0].period_before_s, 0.1, 0.002);

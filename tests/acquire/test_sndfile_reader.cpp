@@ -10,10 +10,12 @@
 #include "common/error.hpp"
 #include "virtual_rig/recording_writer.hpp"
 #include "support/temp_dir.hpp"
+#include "read_recording.hpp"
 
 namespace fourbar {
 namespace {
 
+using testing::read_all;
 using testing::TempDir;
 
 /// Frames of a 3-channel test signal on the grid of `bits` (exact in any format).
@@ -31,12 +33,6 @@ void write_file(const std::filesystem::path& f, const std::string& subtype, cons
   w->write(std::span<const double>(data).subspan(0, 9000));
   w->write(std::span<const double>(data).subspan(9000));
   w->commit();
-}
-
-std::vector<double> read_all(Reader& r, std::size_t block_frames = 1000) {
-  std::vector<double> all, block(3 * block_frames);
-  for (std::size_t n; (n = r.read(block)) > 0;) all.insert(all.begin() + static_cast<std::ptrdiff_t>(all.size()), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(3 * n));
-  return all;
 }
 
 TEST(SndfileReader, EveryContainerAndSampleFormatRoundTrips) {
@@ -85,7 +81,7 @@ TEST(SndfileReader, TruncatedFilesAreErrors) {
     std::filesystem::resize_file(f, std::filesystem::file_size(f) / 2);
     try {
       auto r = open_recording(f);
-      read_all(*r);
+      read_all(*r, 1000);
       std::vector<double> block(30);
       ADD_FAILURE() << ext << ": truncation not noticed";
     } catch (const InputError& e) {

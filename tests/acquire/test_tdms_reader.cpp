@@ -14,10 +14,13 @@
 #include "common/error.hpp"
 #include "support/temp_dir.hpp"
 #include "tdms_writer.hpp"
+#include "read_recording.hpp"
 
 namespace fourbar {
 namespace {
 
+using testing::read_all;
+using testing::open_error_of;
 using testing::append_tdms_segment;
 using testing::TdmsBytes;
 using testing::TdmsTestObject;
@@ -66,13 +69,6 @@ void put_value(TdmsBytes& b, std::uint32_t code, double v) {
 }
 
 std::string channel_path(const char* name) { return std::string("/'Rig ''A'''/'") + name + "'"; }
-
-std::vector<double> read_all(Reader& r, std::size_t block_frames) {
-  const auto c = static_cast<std::size_t>(r.info().channels);
-  std::vector<double> all, block(c * block_frames);
-  for (std::size_t n; (n = r.read(block)) > 0;) all.insert(all.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(c * n));
-  return all;
-}
 
 /// Contiguous values of every type channel for values [first, first + count), appended to `b`.
 void contiguous(TdmsBytes& b, std::uint64_t first, std::uint64_t count) {
@@ -193,15 +189,6 @@ TEST(TdmsReader, ChannelsOfAnotherLengthOrRateAreNotesAndDuplicateNamesGetTheirG
   EXPECT_EQ(got, (std::vector<double>{0, 4, 1, 5, 2, 6, 3, 7}));
 }
 
-std::string error_of(const std::filesystem::path& f, const ReaderOptions& o = {}) {
-  try {
-    open_recording(f, o);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(TdmsReader, UnsupportedAndDamagedPartsAreNamedErrors) {
   TempDir dir;
   const auto f = dir.path() / "bad.tdms";
@@ -220,10 +207,10 @@ TEST(TdmsReader, UnsupportedAndDamagedPartsAreNamedErrors) {
     return file;
   };
   testing::write_bytes(f, one(0x69120000));
-  EXPECT_NE(error_of(f).find("bad.tdms: TDMS segment 1 at byte 0: object /'g'/'daq' holds DAQmx raw data (raw data index 0x69120000)"),
-            std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("bad.tdms: TDMS segment 1 at byte 0: object /'g'/'daq' holds DAQmx raw data (raw data index 0x69120000)"),
+            std::string::npos) << open_error_of(f);
   testing::write_bytes(f, one(0));
-  EXPECT_NE(error_of(f).find("'same as previous' but no earlier segment gave one"), std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("'same as previous' but no earlier segment gave one"), std::string::npos) << open_error_of(f);
 
   // A later segment whose tag is not "TDSm": the byte offset is named.
   std::vector<unsigned char> file;
@@ -235,15 +222,15 @@ TEST(TdmsReader, UnsupportedAndDamagedPartsAreNamedErrors) {
   append_tdms_segment(file, toc::kRawData, {}, raw.bytes);
   file[first] = 'X';
   testing::write_bytes(f, file);
-  EXPECT_NE(error_of(f).find("TDMS segment 2 at byte " + std::to_string(first) + ": no segment tag 'TDSm'"), std::string::npos)
-      << error_of(f);
+  EXPECT_NE(open_error_of(f).find("TDMS segment 2 at byte " + std::to_string(first) + ": no segment tag 'TDSm'"), std::string::npos)
+      << open_error_of(f);
 
   // No wf_increment: the manifest's rate is needed, and then used; a contradicting one is refused.
   file.clear();
   append_tdms_segment(file, toc::kMetaData | toc::kNewObjList | toc::kRawData,
                       {{"/'g'/'c'", TdmsTestObject::kNew, 10, 1, 0, {}}}, raw.bytes);
   testing::write_bytes(f, file);
-  EXPECT_NE(error_of(f).find("has no wf_increment property"), std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("has no wf_increment property"), std::string::npos) << open_error_of(f);
   EXPECT_EQ(open_recording(f, {.sample_rate_hz = 500.0})->info().sample_rate_hz, 500.0);
 }
 

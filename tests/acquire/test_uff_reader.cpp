@@ -17,18 +17,14 @@
 #include "common/error.hpp"
 #include "support/realdata.hpp"
 #include "support/temp_dir.hpp"
+#include "read_recording.hpp"
 
 namespace fourbar {
 namespace {
 
+using testing::read_all;
+using testing::open_error_of;
 using testing::TempDir;
-
-std::vector<double> read_all(Reader& r, std::size_t block_frames) {
-  const auto c = static_cast<std::size_t>(r.info().channels);
-  std::vector<double> all, block(c * block_frames);
-  for (std::size_t n; (n = r.read(block)) > 0;) all.insert(all.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(c * n));
-  return all;
-}
 
 TEST(UffReader, PyuffAsciiAndBinaryOfOneRecordReadTheSameValues) {
   FOURBAR_REALDATA_FILE(ascii_file, "uff58/Sample_UFF58_ascii.uff");
@@ -120,15 +116,6 @@ std::string record(const std::string& name, const std::vector<double>& v, double
 
 void write(const std::filesystem::path& f, const std::string& s) { std::ofstream(f, std::ios::binary) << s; }
 
-std::string error_of(const std::filesystem::path& f) {
-  try {
-    open_recording(f);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(UffReader, RecordsAreChannelsInEveryFormAndByteOrder) {
   TempDir dir;
   std::vector<double> a;  // quarters: exact in float and in E13.5
@@ -169,16 +156,16 @@ TEST(UffReader, WhatIsNotReadIsANamedError) {
   const auto f = dir.path() / "bad.uff";
   const std::vector<double> v{1, 2, 3};
   write(f, record("a", v, 0.001, "g", 2, 0) + record("b", {1, 2}, 0.001, "g", 2, 0));
-  EXPECT_NE(error_of(f).find("bad.uff: dataset 58 record 2 (line 17) has length 2, record 1 3"), std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("bad.uff: dataset 58 record 2 (line 17) has length 2, record 1 3"), std::string::npos) << open_error_of(f);
   write(f, record("a", v, 0.001, "g", 2, 0) + record("b", v, 0.002, "g", 2, 0));
-  EXPECT_NE(error_of(f).find("has abscissa increment 0.002, record 1 0.001"), std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("has abscissa increment 0.002, record 1 0.001"), std::string::npos) << open_error_of(f);
   write(f, record("a", v, 0.001, "g", 5, 0));
-  EXPECT_NE(error_of(f).find("bad.uff: dataset 58 record 1 (line 2): complex ordinate data (type 5)"), std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("bad.uff: dataset 58 record 1 (line 2): complex ordinate data (type 5)"), std::string::npos) << open_error_of(f);
   std::string cut = record("a", v, 0.001, "g", 2, 1);
   write(f, cut.substr(0, cut.size() - 12));
-  EXPECT_NE(error_of(f).find("the file ends first (cut short)"), std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("the file ends first (cut short)"), std::string::npos) << open_error_of(f);
   write(f, "    -1\n   151\nmodel\n    -1\n");
-  EXPECT_NE(error_of(f).find("no dataset 58 (time history)"), std::string::npos) << error_of(f);
+  EXPECT_NE(open_error_of(f).find("no dataset 58 (time history)"), std::string::npos) << open_error_of(f);
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ using testing::rel_rms_error;
 using testing::row_mean;
 using testing::VirtualSetup;
 
-struct Errors {
+struct DaqErrors {
   double alpha3 = 0, omega3 = 0, alpha4 = 0, omega4 = 0;
   double phase3_order4_deg = 0, phase3_order8_deg = 0;  // arg(estimate/truth) of α3's crank order
 };
@@ -42,7 +42,7 @@ double order_phase_deg(const std::vector<double>& est, const std::vector<double>
   return std::arg(e / t) * 180 / std::numbers::pi;
 }
 
-Errors run(const VirtualSetup& v, const VirtualRigResult& written, const std::filesystem::path& manifest) {
+DaqErrors run(const VirtualSetup& v, const VirtualRigResult& written, const std::filesystem::path& manifest) {
   AnalyzeOptions o;
   o.keep_revolutions = true;
   o.progress = false;
@@ -80,7 +80,7 @@ std::filesystem::path without_keys(const std::filesystem::path& manifest, std::i
   return p;
 }
 
-void print(const char* what, const Errors& e) {
+void print(const char* what, const DaqErrors& e) {
   std::printf("  %-44s %8.4f%% %8.4f%% %8.4f%% %8.4f%% %8.3f %8.3f\n", what, 100 * e.alpha3, 100 * e.omega3,
               100 * e.alpha4, 100 * e.omega4, e.phase3_order4_deg, e.phase3_order8_deg);
 }
@@ -95,7 +95,7 @@ VirtualSetup lab_setup() {
 }
 
 struct Effect {
-  Errors known, unknown;
+  DaqErrors known, unknown;
 };
 
 /// One DAQ effect recorded by the virtual rig, analysed with the manifest it
@@ -119,7 +119,7 @@ void print(const char* what, const Effect& e) {
 // The stated skew is removed; without it the error grows.
 TEST(DaqChain, MultiplexedSkewIsRemovedWhenTheManifestStatesIt) {
   VirtualSetup v = lab_setup();
-  const Errors ref = run(v, v.write("simultaneous.wav", false), {});
+  const DaqErrors ref = run(v, v.write("simultaneous.wav", false), {});
   v.spec.multiplexed = true;  // skew 1/(fs·4 channels) = 19.53 µs
   const VirtualRigResult w = v.write("probe.wav", false);
   EXPECT_NEAR(load_manifest(w.manifest).channel_skew_s, 1.0 / (12800.0 * 4), 1e-12);
@@ -151,7 +151,7 @@ TEST(DaqChain, MultiplexedSkewIsRemovedWhenTheManifestStatesIt) {
 // band removes that.
 TEST(DaqChain, ButterworthFilterPhaseIsRemovedWhenTheManifestStatesIt) {
   VirtualSetup v = lab_setup();
-  const Errors ref = run(v, v.write("plain.wav", false), {});
+  const DaqErrors ref = run(v, v.write("plain.wav", false), {});
   v.spec.daq_filter = {"butterworth", 6, 2000.0, 0.0};
   const Effect e = measure(v, "butterworth", {"daq_filter", "daq_filter_order", "daq_filter_cutoff_Hz"});
   print("no filter", ref);
@@ -168,7 +168,7 @@ TEST(DaqChain, ButterworthFilterPhaseIsRemovedWhenTheManifestStatesIt) {
 // channels against the crank pulse, removed when stated.
 TEST(DaqChain, LinearPhaseFilterDelayIsRemovedWhenTheManifestStatesIt) {
   VirtualSetup v = lab_setup();
-  const Errors ref = run(v, v.write("plain.wav", false), {});
+  const DaqErrors ref = run(v, v.write("plain.wav", false), {});
   v.spec.daq_filter = {"linear_phase", 0, 0.0, 500e-6};
   const Effect e = measure(v, "fir", {"daq_filter", "daq_filter_delay_us"});
   print("linear-phase FIR, 500 us delay", e);
@@ -184,7 +184,7 @@ TEST(DaqChain, LinearPhaseFilterDelayIsRemovedWhenTheManifestStatesIt) {
 // dividing it out removes them.
 TEST(DaqChain, SensorResonanceIsRemovedWhenTheManifestStatesIt) {
   VirtualSetup v = lab_setup();
-  const Errors ref = run(v, v.write("plain.wav", false), {});
+  const DaqErrors ref = run(v, v.write("plain.wav", false), {});
   for (ChannelSpec& c : v.spec.sensors) c.sensor_resonance_hz = 1000, c.sensor_resonance_q = 10;
   const Effect e = measure(v, "resonance", {"sensor_resonance_Hz", "sensor_resonance_Q"});
   print("sensor resonance 1 kHz, Q 10", e);

@@ -23,13 +23,13 @@ using testing::row_mean;
 using testing::VirtualSetup;
 using testing::WheelKind;
 
-struct Errors {
+struct WheelErrors {
   double alpha3 = 0, omega3 = 0, alpha4 = 0, omega4 = 0;
   std::size_t revolutions = 0;
   std::size_t turns_cut = 0, segments = 0, turns_in_train = 0;  ///< the crank-angle source's turns
 };
 
-Errors analyse(const VirtualSetup& v, const std::string& name, VirtualRigResult* out = nullptr) {
+WheelErrors analyse(const VirtualSetup& v, const std::string& name, VirtualRigResult* out = nullptr) {
   const VirtualRigResult written = v.write(name, false);
   if (out) *out = written;
   AnalyzeOptions o;
@@ -56,7 +56,7 @@ VirtualSetup lab(double revolutions) {
   return v;
 }
 
-void print(const char* name, const Errors& e) {
+void print(const char* name, const WheelErrors& e) {
   std::printf("  %-24s %4zu revs  a3 %7.4f %%  w3 %7.4f %%  a4 %7.4f %%  w4 %7.4f %%\n", name, e.revolutions,
               100 * e.alpha3, 100 * e.omega3, 100 * e.alpha4, 100 * e.omega4);
 }
@@ -64,12 +64,12 @@ void print(const char* name, const Errors& e) {
 TEST(AnalyzeWheel, InTurnSpeedChangeAgainstVirtualRigTruth) {
   std::printf("\n  averaged RMS error / RMS of truth, speed 1 %% slow + 0.5 %% once + 0.3 %% twice per turn, 30 dB\n");
   // One pulse per turn: the baseline that cannot see the change within the turn.
-  const Errors once = analyse(lab(40), "once.wav");
+  const WheelErrors once = analyse(lab(40), "once.wav");
   print("one pulse per turn", once);
   for (WheelKind kind : {WheelKind::teeth_with_index, WheelKind::missing_teeth, WheelKind::encoder}) {
     VirtualSetup v = lab(kind == WheelKind::encoder ? 8 : 40);
     testing::fit_wheel(v, kind);
-    const Errors e = analyse(v, "wheel.wav");
+    const WheelErrors e = analyse(v, "wheel.wav");
     print(testing::wheel_name(kind), e);
     EXPECT_LE(e.alpha3, 0.005) << testing::wheel_name(kind);
     EXPECT_LE(e.omega3, 0.001) << testing::wheel_name(kind);
@@ -114,7 +114,7 @@ TEST(AnalyzeWheel, IndexOnAnEdgeAgainstVirtualRigTruth) {
       w.tooth_error_rad = units::deg_to_rad(c.tooth_error_deg);
       w.correct_tooth_spacing = c.tooth_error_deg > 0;
     }
-    const Errors e = analyse(v, "index.wav");
+    const WheelErrors e = analyse(v, "index.wav");
     print(c.name, e);
     EXPECT_EQ(e.turns_cut, 0u) << c.name;
     EXPECT_EQ(e.segments, 1u) << c.name;
@@ -133,7 +133,7 @@ TEST(AnalyzeWheel, IndexOnAnEdgeAgainstVirtualRigTruth) {
 TEST(AnalyzeWheel, OnePulseErrorMatchesTheForwardModel) {
   VirtualSetup v = lab(40);
   VirtualRigResult written;
-  const Errors measured = analyse(v, "once.wav", &written);
+  const WheelErrors measured = analyse(v, "once.wav", &written);
   const Manifest manifest = load_manifest(written.manifest);
   const AnalysisChannels channels = analysis_channels(manifest);
   const AccelerometerMount& coupler = channels.links.at(0).tangential->mount;

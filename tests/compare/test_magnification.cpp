@@ -10,19 +10,19 @@
 namespace fourbar {
 namespace {
 
-constexpr std::size_t kN = 360;
+constexpr std::size_t kPointsPerTurn = 360;
 
-double angle(std::size_t k) { return units::kTwoPi * static_cast<double>(k) / kN; }
+double angle(std::size_t k) { return units::kTwoPi * static_cast<double>(k) / kPointsPerTurn; }
 
 TEST(OrderAmplitudes, ReadsCrankOrdersExactlyAndKeepsNonSynchronousContentOut) {
   const std::size_t rows = 8;
-  std::vector<double> x(rows * kN);
+  std::vector<double> x(rows * kPointsPerTurn);
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const double th = units::kTwoPi * static_cast<double>(i) / kN;  // continuous crank angle
+    const double th = units::kTwoPi * static_cast<double>(i) / kPointsPerTurn;  // continuous crank angle
     x[i] = 2.0 * std::sin(3 * th + 0.3) + 0.5 * std::cos(7 * th) + 1.0 * std::sin(5.5 * th);  // 5.5: not an order
   }
   std::vector<double> floor;
-  const auto a = order_amplitudes(x, kN, 10, &floor);
+  const auto a = order_amplitudes(x, kPointsPerTurn, 10, &floor);
   EXPECT_NEAR(a[3], 2.0, 1e-12);
   EXPECT_NEAR(a[7], 0.5, 1e-12);
   // Half an order away from a line of amplitude 1, Hann over 8 turns leaks < 1e-3 into orders 5 and 6
@@ -34,8 +34,8 @@ TEST(OrderAmplitudes, ReadsCrankOrdersExactlyAndKeepsNonSynchronousContentOut) {
 
 TEST(Magnification, TimeAndSpectralFactorsOfAScaledDeviation) {
   // Nominal response, a measured deviation d (orders 4 and 9), simulation = nominal + 30·d (thesis: a ≈ 30).
-  std::vector<double> nominal(kN), meas(kN), sim(kN);
-  for (std::size_t k = 0; k < kN; ++k) {
+  std::vector<double> nominal(kPointsPerTurn), meas(kPointsPerTurn), sim(kPointsPerTurn);
+  for (std::size_t k = 0; k < kPointsPerTurn; ++k) {
     nominal[k] = 100 * std::sin(angle(k)) + 40 * std::cos(2 * angle(k));
     const double d = 3 * std::sin(4 * angle(k) + 1) + std::cos(9 * angle(k));
     meas[k] = nominal[k] + d;
@@ -45,12 +45,12 @@ TEST(Magnification, TimeAndSpectralFactorsOfAScaledDeviation) {
   const std::size_t rows = 16;
   std::mt19937_64 rng(42);
   std::normal_distribution<double> noise(0.0, 0.2);
-  std::vector<double> meas_rows(rows * kN), sim_rows(rows * kN);
-  for (std::size_t i = 0; i < rows * kN; ++i) meas_rows[i] = meas[i % kN] + noise(rng), sim_rows[i] = sim[i % kN];
+  std::vector<double> meas_rows(rows * kPointsPerTurn), sim_rows(rows * kPointsPerTurn);
+  for (std::size_t i = 0; i < rows * kPointsPerTurn; ++i) meas_rows[i] = meas[i % kPointsPerTurn] + noise(rng), sim_rows[i] = sim[i % kPointsPerTurn];
   const Magnification m = magnification_factor({nominal, meas, sim, meas_rows, sim_rows}, 20);
   ASSERT_TRUE(m.time_domain);
   EXPECT_NEAR(*m.time_domain, 30.0, 1e-12);
-  for (std::size_t k = 0; k < kN; ++k) EXPECT_NEAR(m.modified[k], meas[k], 1e-12);  // nominal + d_sim/a = measured
+  for (std::size_t k = 0; k < kPointsPerTurn; ++k) EXPECT_NEAR(m.modified[k], meas[k], 1e-12);  // nominal + d_sim/a = measured
   ASSERT_EQ(m.orders.size(), 20u);
   for (const OrderRatio& o : m.orders) {
     if (o.order == 4 || o.order == 9) {
@@ -67,8 +67,8 @@ TEST(Magnification, TimeAndSpectralFactorsOfAScaledDeviation) {
 }
 
 TEST(Magnification, AbsentWhenTheMeasurementEqualsTheNominal) {
-  std::vector<double> nominal(kN), sim(kN);
-  for (std::size_t k = 0; k < kN; ++k) nominal[k] = std::sin(angle(k)), sim[k] = nominal[k] + 0.1 * std::sin(5 * angle(k));
+  std::vector<double> nominal(kPointsPerTurn), sim(kPointsPerTurn);
+  for (std::size_t k = 0; k < kPointsPerTurn; ++k) nominal[k] = std::sin(angle(k)), sim[k] = nominal[k] + 0.1 * std::sin(5 * angle(k));
   const Magnification m = magnification_factor({nominal, nominal, sim, {}, {}}, 10);
   EXPECT_FALSE(m.time_domain);
   EXPECT_TRUE(m.modified.empty());
@@ -101,11 +101,11 @@ TEST(MainsOrders, HumHarmonicsNearAnOrderLine) {
 }
 
 TEST(Magnification, NominalBandIsTheOrdersHoldingTheNominalResponse) {
-  std::vector<double> nominal(kN);
-  for (std::size_t k = 0; k < kN; ++k) nominal[k] = 100 * std::sin(angle(k)) + 30 * std::cos(2 * angle(k)) + 0.5 * std::sin(3 * angle(k));
+  std::vector<double> nominal(kPointsPerTurn);
+  for (std::size_t k = 0; k < kPointsPerTurn; ++k) nominal[k] = 100 * std::sin(angle(k)) + 30 * std::cos(2 * angle(k)) + 0.5 * std::sin(3 * angle(k));
   // Order 3 holds 0.25/(10000 + 900 + 0.25) = 2.3e-5 of the energy: below 1e-4, so K = 2.
   EXPECT_EQ(nominal_band_orders(nominal), 2);
-  for (std::size_t k = 0; k < kN; ++k) nominal[k] += 5 * std::sin(3 * angle(k));
+  for (std::size_t k = 0; k < kPointsPerTurn; ++k) nominal[k] += 5 * std::sin(3 * angle(k));
   EXPECT_EQ(nominal_band_orders(nominal), 3);
 }
 
@@ -115,9 +115,9 @@ TEST(Magnification, NominalBandIsTheOrdersHoldingTheNominalResponse) {
 // deviation (the crank speed's) that no clearance model has.
 TEST(Magnification, SpectralFactorLeavesOutMainsAndNominalBandOrders) {
   const std::size_t rows = 16;
-  std::vector<double> nominal(kN), meas(kN), sim(kN);
-  std::vector<double> meas_rows(rows * kN), sim_rows(rows * kN);
-  for (std::size_t k = 0; k < kN; ++k) {
+  std::vector<double> nominal(kPointsPerTurn), meas(kPointsPerTurn), sim(kPointsPerTurn);
+  std::vector<double> meas_rows(rows * kPointsPerTurn), sim_rows(rows * kPointsPerTurn);
+  for (std::size_t k = 0; k < kPointsPerTurn; ++k) {
     const double th = angle(k);
     nominal[k] = 100 * std::sin(th) + 40 * std::cos(2 * th);
     const double clearance = 1.0 * std::sin(6 * th + 0.4) + 0.5 * std::cos(9 * th);
@@ -126,7 +126,7 @@ TEST(Magnification, SpectralFactorLeavesOutMainsAndNominalBandOrders) {
   }
   std::mt19937_64 rng(7);
   std::normal_distribution<double> noise(0.0, 0.05);
-  for (std::size_t i = 0; i < rows * kN; ++i) meas_rows[i] = meas[i % kN] + noise(rng), sim_rows[i] = sim[i % kN];
+  for (std::size_t i = 0; i < rows * kPointsPerTurn; ++i) meas_rows[i] = meas[i % kPointsPerTurn] + noise(rng), sim_rows[i] = sim[i % kPointsPerTurn];
 
   const MagnificationInput in{nominal, meas, sim, meas_rows, sim_rows};
   const Magnification plain = magnification_factor(in, 20);  // no mains given: the hum counts
@@ -155,13 +155,13 @@ TEST(Magnification, SpectralFactorLeavesOutMainsAndNominalBandOrders) {
 TEST(Magnification, NoiseAloneStandsAboutOnceTheFloor) {
   // Deviation = white noise only: the order lines are noise like the bins between them.
   const std::size_t rows = 32;
-  std::vector<double> nominal(kN), meas_rows(rows * kN);
-  for (std::size_t k = 0; k < kN; ++k) nominal[k] = 100 * std::sin(angle(k));
+  std::vector<double> nominal(kPointsPerTurn), meas_rows(rows * kPointsPerTurn);
+  for (std::size_t k = 0; k < kPointsPerTurn; ++k) nominal[k] = 100 * std::sin(angle(k));
   std::mt19937_64 rng(11);
   std::normal_distribution<double> noise(0.0, 1.0);
-  for (std::size_t i = 0; i < rows * kN; ++i) meas_rows[i] = nominal[i % kN] + noise(rng);
-  std::vector<double> mean(kN, 0.0);
-  for (std::size_t i = 0; i < rows * kN; ++i) mean[i % kN] += meas_rows[i] / rows;
+  for (std::size_t i = 0; i < rows * kPointsPerTurn; ++i) meas_rows[i] = nominal[i % kPointsPerTurn] + noise(rng);
+  std::vector<double> mean(kPointsPerTurn, 0.0);
+  for (std::size_t i = 0; i < rows * kPointsPerTurn; ++i) mean[i % kPointsPerTurn] += meas_rows[i] / rows;
   const Magnification m = magnification_factor({nominal, mean, nominal, meas_rows, {}}, 50);
   ASSERT_TRUE(m.effect_to_floor);
   // Rayleigh amplitudes: RMS over median = √2/√(2 ln 2) = 1.20; 49 orders scatter it by ~10 %.

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "common/units.hpp"
 #include "compare/model_family.hpp"
 #include "support/impact_turns.hpp"
 
@@ -16,9 +17,9 @@ namespace {
 
 using test::kCrankHz;
 using test::kN;
-using test::kPi;
 using test::nominal;
 using test::turns;
+using units::kPi;
 
 TEST(ModelFamily, RigidMeasurementOfAnotherRestitutionNamesNothing) {
   // A model 1.6x more violent than the measurement, noise in the measurement only.

@@ -9,12 +9,13 @@
 #include <random>
 #include <vector>
 
+#include "common/units.hpp"
 #include "fit/matched_magnification.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using units::kPi;
 constexpr std::size_t kN = 128;
 
 /// `turns` turns of nominal 0 + scale·(d + scatter): d = 0.15·sin 7θ (RMS

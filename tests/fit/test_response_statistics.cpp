@@ -6,12 +6,13 @@
 #include <random>
 #include <vector>
 
+#include "common/units.hpp"
 #include "fit/response_statistics.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using units::kPi;
 
 TEST(ResponseStatistics, ClosedFormsOfDeterministicTurns) {
   // Turn r: nominal + c_r·sin(θ) with c_r alternating a ± b: per angle the

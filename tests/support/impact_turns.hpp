@@ -12,12 +12,15 @@
 #include <random>
 #include <vector>
 
+#include "common/units.hpp"
+
 namespace fourbar::test {
+
+using units::kPi;
 
 inline constexpr std::size_t kN = 720;
 inline constexpr double kCrankHz = 250.0 / 60.0;
 inline constexpr double kGridHz = kN * kCrankHz;  // 3000 samples per second on the grid
-inline constexpr double kPi = 3.14159265358979323846;
 
 inline std::vector<double> nominal() {
   std::vector<double> x(kN);

@@ -6,12 +6,13 @@
 #include <cmath>
 #include <vector>
 
+#include "common/units.hpp"
 #include "virtual_rig/link_ringing.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using units::kPi;
 
 LinkMode coupler_mode() {
   LinkMode m;

@@ -69,7 +69,7 @@ TEST(SecondOrderLinearSolver, MatchesTheDenseLuWithAndWithoutTheStructure) {
 
 /// x'' + 2ζω x' + ω² x = 0 scaled as the linkage's state: y = (x, v/ω, loss)
 /// with x' = ω·y1, y1' = −ω x − 2ζω y1, loss' = 2ζω·y1² (the damping's power / ω²).
-class Oscillator : public LinkageOde {
+class OscillatorOde : public LinkageOde {
  public:
   static constexpr double w = 2000.0, zeta = 0.02;
   void rhs(double, const double* y, double* dy) override {
@@ -81,11 +81,11 @@ class Oscillator : public LinkageOde {
 };
 
 TEST(LinkageIntegrator, EveryMethodFollowsADampedOscillatorAndItsLosses) {
-  const double t_end = 0.01, wd = Oscillator::w * std::sqrt(1 - Oscillator::zeta * Oscillator::zeta);
-  const double decay = std::exp(-Oscillator::zeta * Oscillator::w * t_end);
-  const double x = decay * (std::cos(wd * t_end) + Oscillator::zeta * Oscillator::w / wd * std::sin(wd * t_end));
+  const double t_end = 0.01, wd = OscillatorOde::w * std::sqrt(1 - OscillatorOde::zeta * OscillatorOde::zeta);
+  const double decay = std::exp(-OscillatorOde::zeta * OscillatorOde::w * t_end);
+  const double x = decay * (std::cos(wd * t_end) + OscillatorOde::zeta * OscillatorOde::w / wd * std::sin(wd * t_end));
   for (LinkageMethod m : {LinkageMethod::bdf, LinkageMethod::esdirk4, LinkageMethod::esdirk5, LinkageMethod::erk}) {
-    Oscillator ode;
+    OscillatorOde ode;
     LinkageIntegrator integ(1e-11, 3, 2, 0, m);
     integ.reset(ode, 0.0, {1.0, 0.0, 0.0});
     double t = 0;

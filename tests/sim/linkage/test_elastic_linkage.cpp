@@ -10,11 +10,12 @@
 #include "common/units.hpp"
 #include "sim/drive/crank_motion.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
+#include "support/thesis_values.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr double kXi = 0.254e-3;
+using testing::kXi;
 
 Rig elastic_rig(double stiffness_factor) {
   Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
@@ -57,14 +58,7 @@ ElasticRun simulate(const Rig& rig, const LinkageSpec& s, double turns) {
   return r;
 }
 
-double relative_rms(const std::vector<double>& a, const std::vector<double>& b, std::size_t from = 0) {
-  double num = 0, den = 0;
-  for (std::size_t i = from; i < a.size(); ++i) {
-    num += (a[i] - b[i]) * (a[i] - b[i]);
-    den += b[i] * b[i];
-  }
-  return std::sqrt(num / den);
-}
+using testing::relative_rms;
 
 TEST(ElasticLinkage, StiffModesApproachTheRigidLinkage) {
   // Clearance at B only, elastic coupler with 2 modes, E × 1, 1e2, 1e4, 1e6:

@@ -20,13 +20,13 @@
 namespace fourbar {
 namespace {
 
-struct Case {
+struct VibrationCase {
   int body = 1;  ///< coupler 1, rocker 2
   int mode = 0;  ///< 0-based
   int modes = 1;
 };
 
-void check_free_vibration(const Case& k) {
+void check_free_vibration(const VibrationCase& k) {
   Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
   rig.gravity_m_s2 = 0;
   // The closed form is the uniform bar's: give the link the bar's own mass,

@@ -14,11 +14,12 @@
 #include "sim/compliant/compliant_simulator.hpp"
 #include "sim/drive/measured_crank.hpp"
 #include "sim/linkage/linkage_simulator.hpp"
+#include "support/thesis_values.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr double kXi = 0.254e-3;
+using testing::kXi;
 
 LinkageSpec spec_b(double e, double K, double mu, double tol) {
   LinkageSpec s;
@@ -39,14 +40,7 @@ ClearanceSettings compliant(double e, double K, double mu, double tol) {
   return s;
 }
 
-double relative_rms(const std::vector<double>& a, const std::vector<double>& b) {
-  double num = 0, den = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    num += (a[i] - b[i]) * (a[i] - b[i]);
-    den += b[i] * b[i];
-  }
-  return std::sqrt(num / den);
-}
+using testing::relative_rms;
 
 TEST(Linkage, RigidLinksWithClearanceAtBAgreeWithTheCompliantModel) {
   // Thesis rig, 350 rpm, e = 0.5, K = 1e10 N/m^1.5, μ = 0 and 0.2; both start

@@ -12,17 +12,17 @@
 namespace fourbar {
 namespace {
 
-struct Case {
+struct ContactCase {
   CrankState crank;
   LinkMotion links;
   double eta;
 };
 
 /// A random configuration on the contact circle with random rates, pin approaching the wall.
-Case random_contact(std::mt19937& rng, const ClearanceModel& model) {
+ContactCase random_contact(std::mt19937& rng, const ClearanceModel& model) {
   std::uniform_real_distribution<double> angle(-M_PI, M_PI), speed(-40, 40), rate(-5, 5);
   for (;;) {
-    Case c;
+    ContactCase c;
     c.crank = {angle(rng), speed(rng), 0.0};
     c.eta = angle(rng);
     c.links = model.following_links(c.crank, c.eta, 0.0);
@@ -42,7 +42,7 @@ TEST(Impact, AgreesWithThesisExplicitForms) {
   std::uniform_real_distribution<double> unit01(0, 1);
   int n_slip = 0, n_stick = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Case c = random_contact(rng, model);
+    const ContactCase c = random_contact(rng, model);
     const double e = unit01(rng);
     const ContactLaw law = i % 3 == 0 ? ContactLaw::smooth : i % 3 == 1 ? ContactLaw::rough : ContactLaw::stick_slip;
     const double mu = law == ContactLaw::stick_slip ? 0.5 * unit01(rng) : 0.0;
@@ -75,7 +75,7 @@ TEST(Impact, NewtonRestitutionAndTangentialLaws) {
   std::mt19937 rng(22);
   std::uniform_real_distribution<double> unit01(0, 1);
   for (int i = 0; i < 1000; ++i) {
-    const Case c = random_contact(rng, model);
+    const ContactCase c = random_contact(rng, model);
     const double e = unit01(rng), mu = unit01(rng);
     const ImpactResult s = resolve_impact(model, c.crank, c.links, {e, ContactLaw::smooth, 0});
     const double vn = s.normal_speed_before_m_s, vt = s.tangential_speed_before_m_s;
@@ -107,7 +107,7 @@ TEST(Impact, EnergyIdentityWithMotorImpulse) {
   std::uniform_real_distribution<double> unit01(0, 1);
   double max_dT = 0;
   for (int i = 0; i < 1000; ++i) {
-    const Case c = random_contact(rng, model);
+    const ContactCase c = random_contact(rng, model);
     const double e = i % 2 ? 1.0 : unit01(rng);
     const ContactLaw law = i % 4 < 2 ? ContactLaw::smooth : i % 4 == 2 ? ContactLaw::rough : ContactLaw::stick_slip;
     const ImpactResult r = resolve_impact(model, c.crank, c.links, {e, law, 0.3});

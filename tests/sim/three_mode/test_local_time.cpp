@@ -10,11 +10,12 @@
 #include "common/units.hpp"
 #include "sim/drive/measured_crank.hpp"
 #include "sim/three_mode/simulator.hpp"
+#include "support/thesis_values.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr double kXi = 0.254e-3;
+using testing::kXi;
 
 /// a − b modulo 2π, in (−π, π].
 double angle_difference(double a, double b) { return std::remainder(a - b, units::kTwoPi); }

@@ -13,11 +13,12 @@
 #include "sim/run/run.hpp"
 #include "sim/three_mode/simulator.hpp"
 #include "sim/three_mode/run_turns.hpp"
+#include "support/thesis_values.hpp"
 
 namespace fourbar {
 namespace {
 
-constexpr double kXi = 0.254e-3;
+using testing::kXi;
 
 ClearanceSettings settings(double e, IntegratorKind k = IntegratorKind::cvode, double tol = 1e-10) {
   ClearanceSettings s;
