@@ -21,23 +21,13 @@ namespace {
 
 using nlohmann::json;
 
-const std::string kElasticLinks = R"(
-[coupler.elastic]
-modes = 2
-E_GPa = 210
-density_kg_m3 = 7850
-width_mm = 25.0
-thickness_mm = 4.0
-damping_ratios = [0.02, 0.015]
+/// A `[LINK.elastic]` table: the 25 × 4 mm steel bar of data/rigs/thesis_elastic.toml, two modes.
+std::string elastic_table(const std::string& link) {
+  return "\n[" + link + ".elastic]\nmodes = 2\nE_GPa = 210\ndensity_kg_m3 = 7850\nwidth_mm = 25.0\nthickness_mm = 4.0\n"
+         "damping_ratios = [0.02, 0.015]\n";
+}
 
-[rocker.elastic]
-modes = 2
-E_GPa = 210
-density_kg_m3 = 7850
-width_mm = 25.0
-thickness_mm = 4.0
-damping_ratios = [0.02, 0.015]
-)";
+const std::string kElasticLinks = elastic_table("coupler") + elastic_table("rocker");
 
 const std::string kRigidLinkScene = R"(rig = "rig.toml"
 model = "clearance"
