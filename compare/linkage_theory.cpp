@@ -15,6 +15,19 @@
 
 namespace fourbar {
 
+LinkageSpec bearing_clearance_spec(const Rig& rig, double clearance_m, double stiffness_N_per_m_n, double restitution,
+                                   double friction_coefficient, double tolerance) {
+  const CompliantSettings k;  // exponent 1.5, calibrated damping, the friction ramp's speeds
+  LinkageSpec spec;
+  spec.clearance_m = {0.0, clearance_m, 0.0};
+  spec.law = {stiffness_N_per_m_n, k.exponent, k.damping, restitution};
+  spec.friction = {friction_coefficient, k.friction_stick_speed_m_s, k.friction_slip_speed_m_s};
+  spec.damping_floor_speed_m_s = k.damping_floor_speed_m_s;
+  spec.elastic = {false, rig.coupler_elastic.has_value(), rig.rocker_elastic.has_value()};
+  spec.tolerance = tolerance;
+  return spec;
+}
+
 MatchedTheory simulate_linkage_theory(const LinkageModel& linkage, const LinkageTheoryRun& run) {
   const Rig& rig = linkage.rig();
   const CrankGrid& grid = run.grid;

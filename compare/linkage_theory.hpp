@@ -43,6 +43,14 @@ struct LinkageTheoryRun {
   int sub_samples = 1;
 };
 
+/// The linkage model's spec with the rig's elastic links (those it has
+/// modal data for), a compliant contact at the coupler–rocker joint of
+/// radial clearance `clearance_m`, stiffness K, restitution e and Coulomb μ,
+/// the compliant law's other keys at their defaults (CompliantSettings).
+/// Used by the fit's elastic model and the report's elastic-link reference.
+LinkageSpec bearing_clearance_spec(const Rig& rig, double clearance_m, double stiffness_N_per_m_n, double restitution,
+                                   double friction_coefficient, double tolerance);
+
 /// Series of α3, α4, ω3, ω4 (nominal: N; clearance_revolutions: turns × N)
 /// and the impact severity over the kept turns. RunError when the model fails.
 MatchedTheory simulate_linkage_theory(const LinkageModel& linkage, const LinkageTheoryRun& run);

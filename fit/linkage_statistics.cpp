@@ -32,19 +32,12 @@ namespace {
 
 std::string rig_name(const Rig& rig) { return rig.source.empty() ? std::string("the rig") : rig.source.string(); }
 
-/// The linkage model's spec for a fit point (the compliant law's other keys at their defaults).
+/// The linkage model's spec for a fit point.
 LinkageSpec elastic_spec(const Rig& rig, const FitModel& model, double clearance_m, const ContactParameters& p,
                          double tolerance) {
-  const CompliantSettings k;  // exponent 1.5, calibrated damping, the friction ramp's speeds
-  LinkageSpec spec;
-  spec.clearance_m = {0.0, clearance_m, 0.0};
-  spec.law = {elastic_fit_stiffness(rig, model, clearance_m), k.exponent, k.damping, p.restitution};
-  spec.friction = {p.contact == ContactLaw::stick_slip ? p.friction_coefficient : 0.0, k.friction_stick_speed_m_s,
-                   k.friction_slip_speed_m_s};
-  spec.damping_floor_speed_m_s = k.damping_floor_speed_m_s;
-  spec.elastic = {false, rig.coupler_elastic.has_value(), rig.rocker_elastic.has_value()};
+  LinkageSpec spec = bearing_clearance_spec(rig, clearance_m, elastic_fit_stiffness(rig, model, clearance_m), p.restitution,
+                                            p.contact == ContactLaw::stick_slip ? p.friction_coefficient : 0.0, tolerance);
   spec.elastic_modes = model.elastic_modes;
-  spec.tolerance = tolerance;
   return spec;
 }
 

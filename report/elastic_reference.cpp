@@ -52,16 +52,10 @@ ElasticReference elastic_reference(const RecordingAnalysis& a, const CrankGrid& 
       return out;
     }
   }
-  const CompliantSettings k;  // exponent 1.5, calibrated damping, the friction ramp's speeds
-  LinkageSpec spec;
-  spec.clearance_m = {0.0, a.clearance_m, 0.0};
   const double restitution = std::min(settings.restitution, kReferenceMaxRestitution);
-  spec.law = {stiffness, k.exponent, k.damping, restitution};
   const bool friction = settings.model == ClearanceKind::compliant || settings.contact == ContactLaw::stick_slip;
-  spec.friction = {friction ? settings.friction_coefficient : 0.0, k.friction_stick_speed_m_s, k.friction_slip_speed_m_s};
-  spec.damping_floor_speed_m_s = k.damping_floor_speed_m_s;
-  spec.elastic = {false, rig.coupler_elastic.has_value(), rig.rocker_elastic.has_value()};
-  spec.tolerance = kReferenceTolerance;
+  LinkageSpec spec = bearing_clearance_spec(rig, a.clearance_m, stiffness, restitution,
+                                            friction ? settings.friction_coefficient : 0.0, kReferenceTolerance);
   try {
     // The modes the check can see: below kReferenceModeShare × its top.
     int modes = 1;
@@ -78,11 +72,10 @@ ElasticReference elastic_reference(const RecordingAnalysis& a, const CrankGrid& 
     run.grid = grid;
     run.crank_speed_rad_s = a.mean_crank_speed_rad_s;
     run.clearance_m = a.clearance_m;
-    run.warmup_turns = settings.warmup_revolutions;
+    run.warmup_turns = std::max(settings.warmup_revolutions, 1);  // cell means need one
     run.turns = settings.averaged_revolutions;
     run.name = a.recording.filename().string() + ": the elastic-link reference";
     run.sub_samples = kCellMeanSubSamples;  // α as cell means, as the three-mode theory's
-    run.warmup_turns = std::max(run.warmup_turns, 1);
     const AnalysisChannels channels = analysis_channels(load_manifest(a.manifest_file));
     for (const LinkChannels& l : channels.links)
       if (l.tangential) run.sensor[l.link == SensedLink::coupler ? 0 : 1] = resolve_mount(rig, l.tangential->mount);
