@@ -96,6 +96,10 @@ std::optional<VerdictFamily> verdict_family(const json& r) {
   f.cannot_judge = j.value("cannot_judge", "");
   for (const json& u : j.value("moves_with_speed", json::array())) f.moves_with_speed.push_back(unmodelled_of(u));
   f.moves_with_speed_text = j.value("moves_with_speed_text", "");
+  // A reference that ran writes its band energies; one that did not, only why.
+  if (j.contains("link_vibration") && j["link_vibration"].is_object() && !j["link_vibration"].value("checked", false) &&
+      !j["link_vibration"].contains("elastic_band_ms"))
+    f.link_vibration_not_run = j["link_vibration"].value("not_checked", "");
   return f;
 }
 
@@ -108,7 +112,9 @@ VerdictPart family_part(const VerdictInputs& in) {
   if (!in.family) return {VerdictLevel::not_judged, "not checked", "The model family was not checked (a record from an older fourbar)."};
   const VerdictFamily& f = *in.family;
   if (!f.checked) return {VerdictLevel::not_judged, "not checked", "The model family was not checked: " + f.not_checked + "."};
-  const std::string set_aside = f.moves_with_speed_text.empty() ? std::string() : " " + f.moves_with_speed_text;
+  std::string set_aside = f.moves_with_speed_text.empty() ? std::string() : " " + f.moves_with_speed_text;
+  if (!f.link_vibration_not_run.empty())
+    set_aside += " The links' vibration was not checked against the rig file's modal data: " + f.link_vibration_not_run + ".";
   if (f.unmodelled.empty())
     return {VerdictLevel::good, "holds",
             "No energy the model lacks: up to " + hz(f.checked_up_to_hz) +

@@ -33,6 +33,9 @@ struct VerdictFamily {
   /// (report/family_across_speeds.hpp), and the sentence that says so.
   std::vector<UnmodelledEnergy> moves_with_speed;
   std::string moves_with_speed_text;
+  /// The rig file has the links' modal data but the elastic-link reference
+  /// did not run (e.g. no contact stiffness): why, said in the verdict.
+  std::string link_vibration_not_run;
 };
 
 /// The record's "model_family" object.

@@ -83,6 +83,11 @@ TEST_F(LinkVibrationReport, WithoutAStiffnessTheCheckSaysWhatToGive) {
   EXPECT_FALSE(f["link_vibration"]["checked"].get<bool>());
   const std::string why = f["link_vibration"]["not_checked"];
   EXPECT_NE(why.find("[model_family] contact_stiffness_N_per_m_n"), std::string::npos) << why;
+  // … and the verdict says so, not only summary.json's record.
+  std::ifstream in(dir_->path() / "out_no_stiffness" / "summary.json");
+  const json s = json::parse(in);
+  const std::string verdict = s["recordings"][0].dump();
+  EXPECT_NE(verdict.find("The links' vibration was not checked against the rig file's modal data"), std::string::npos);
 }
 
 TEST_F(LinkVibrationReport, RigidLinkRecordingIsNotCalledVibrating) {
