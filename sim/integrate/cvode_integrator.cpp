@@ -11,6 +11,7 @@
 
 #include "common/error.hpp"
 #include "sim/integrate/sundials_flags.hpp"
+#include "sim/integrate/sundials_kernels.hpp"
 #include "sim/integrate/integrator.hpp"
 
 namespace fourbar {
@@ -27,6 +28,8 @@ class CvodeIntegrator final : public DenseIntegrator {
     check_cvode(SUNContext_Create(nullptr, &ctx_), "context");
     y_ = N_VNew_Serial(kOdeSize, ctx_);
     dky_ = N_VNew_Serial(kOdeSize, ctx_);
+    install_serial_vector_ops(y_);  // CVODE's internal vectors are clones of y
+    install_serial_vector_ops(dky_);
     N_VConst(0.0, y_);
     mem_ = CVodeCreate(CV_ADAMS, ctx_);
     if (!mem_) throw RunError("CVODE: cannot create the integrator");

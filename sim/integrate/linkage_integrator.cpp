@@ -14,6 +14,7 @@
 
 #include "common/error.hpp"
 #include "sim/integrate/sundials_flags.hpp"
+#include "sim/integrate/sundials_kernels.hpp"
 #include "sim/integrate/second_order_linear_solver.hpp"
 
 namespace fourbar {
@@ -101,12 +102,15 @@ LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::si
   const auto n = static_cast<sunindextype>(size);
   c.y = N_VNew_Serial(n, c.ctx);
   c.dky = N_VNew_Serial(n, c.ctx);
+  install_serial_vector_ops(c.y);  // CVODE's internal vectors are clones of y
+  install_serial_vector_ops(c.dky);
   N_VConst(0.0, c.y);
   if (!c.ark()) {
     c.mem = CVodeCreate(CV_BDF, c.ctx);
     if (!c.mem) throw RunError("CVODE (BDF, linkage): cannot create the integrator");
   }
   c.jac = SUNDenseMatrix(n, n, c.ctx);
+  install_dense_matrix_ops(c.jac);
   c.ls = second_order_linear_solver(c.ctx, size, coupled / 2);
   if (!c.ls) throw RunError("SUNDIALS (linkage): cannot create the linear solver");
 }

@@ -14,6 +14,7 @@
 
 #include "common/error.hpp"
 #include "sim/integrate/sundials_flags.hpp"
+#include "sim/integrate/sundials_kernels.hpp"
 #include "sim/integrate/radau_integrator.hpp"
 
 namespace fourbar {
@@ -104,6 +105,8 @@ StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::siz
   const auto n = static_cast<sunindextype>(size);
   c.y = N_VNew_Serial(n, c.ctx);
   c.dky = N_VNew_Serial(n, c.ctx);
+  install_serial_vector_ops(c.y);  // CVODE's internal vectors are clones of y
+  install_serial_vector_ops(c.dky);
   N_VConst(0.0, c.y);
   c.mem = CVodeCreate(method == StiffMethod::bdf ? CV_BDF : CV_ADAMS, c.ctx);
   if (!c.mem) throw RunError("CVODE (BDF): cannot create the integrator");
@@ -111,6 +114,7 @@ StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::siz
     c.fixed_point = SUNNonlinSol_FixedPoint(c.y, 0, c.ctx);
   } else {
     c.jac = SUNDenseMatrix(n, n, c.ctx);
+    install_dense_matrix_ops(c.jac);
     c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
   }
 }

@@ -41,6 +41,51 @@ BodyFrame ground_frame(int size) {
 }
 
 
+/// Solves A·x = b for the symmetric positive definite leading `n` × `n` block
+/// of `a` (Cholesky, written out: Eigen's blocked LLT spent ~6000
+/// instructions on the 12 × 12 mass matrix, a fifth of a right-hand side);
+/// false when a pivot is not positive (or not a number). `a` is overwritten.
+bool cholesky_solve(ZMat& a, int n, ZVec& x) {
+  for (int j = 0; j < n; ++j) {
+    double d = a(j, j);
+    for (int k = 0; k < j; ++k) d -= a(j, k) * a(j, k);
+    if (!(d > 0)) return false;
+    const double l = std::sqrt(d);
+    a(j, j) = l;
+    for (int i = j + 1; i < n; ++i) {
+      double v = a(i, j);
+      for (int k = 0; k < j; ++k) v -= a(i, k) * a(j, k);
+      a(i, j) = v / l;
+    }
+  }
+  for (int i = 0; i < n; ++i) {  // L·y = b
+    double v = x(i);
+    for (int k = 0; k < i; ++k) v -= a(i, k) * x(k);
+    x(i) = v / a(i, i);
+  }
+  for (int i = n - 1; i >= 0; --i) {  // Lᵀ·x = y
+    double v = x(i);
+    for (int k = i + 1; k < n; ++k) v -= a(k, i) * x(k);
+    x(i) = v / a(i, i);
+  }
+  return true;
+}
+
+/// The coordinates a body frame moves with: the columns where Jp or Jw is
+/// not zero (an exact zero: the Jacobians are built from unit entries and
+/// products with them).
+struct Support {
+  std::array<int, kMaxFull> index_{};
+  int size = 0;
+  int index(int a) const { return index_[static_cast<std::size_t>(a)]; }
+};
+Support support(const BodyFrame& b, int nz) {
+  Support s;
+  for (int c = 0; c < nz; ++c)
+    if (b.Jp(0, c) != 0 || b.Jp(1, c) != 0 || b.Jw(c) != 0) s.index_[static_cast<std::size_t>(s.size++)] = c;
+  return s;
+}
+
 /// M += Tᵀ·M_b·T and Q += Tᵀ·(Q_v − K·η − D·η̇ + gravity − M_b·bias) from
 /// sim/flex's body terms, T = ∂(R, θ, η)/∂ż: its first three rows G are the
 /// frame's Jp and Jw, the rest select the modal coordinates (from i0), so
@@ -55,9 +100,15 @@ void add_elastic_body(const LinkageModel& m, const LinkageCoordinates& c, const 
   const ModalState modal = modal_state(m, c, w, body, false);
   ElasticBodyData data(link);
   body_terms(link, data, frame, modal);
-  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxFull> G(3, nz);
-  G.topRows<2>() = b.Jp;
-  G.row(2) = b.Jw;
+  // G's non-zero columns: a frame moves with few coordinates (its own angle,
+  // the crank's, a joint's offsets), so M and Q are assembled over those only.
+  const Support cols = support(b, nz);
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxFull> G(3, cols.size);
+  for (int a = 0; a < cols.size; ++a) {
+    G(0, a) = b.Jp(0, cols.index(a));
+    G(1, a) = b.Jp(1, cols.index(a));
+    G(2, a) = b.Jw(cols.index(a));
+  }
   const Eigen::Vector3d bias_r(b.a_bias.x, b.a_bias.y, b.alpha_bias);
   const auto& mb = data.mass;
   // Gravity's generalised force: ∫μ g·δr ds = gᵀ·(rows R of M_b)·δz; the
@@ -67,15 +118,19 @@ void add_elastic_body(const LinkageModel& m, const LinkageCoordinates& c, const 
       data.quadratic_force + data.stiffness_force + data.damping_force;
   for (int i = 0; i < 3 + modes; ++i) qb(i) += -g * mb(1, i) - mb.row(i).head<3>().dot(bias_r);
   const Eigen::Matrix3d mrr = mb.topLeftCorner<3, 3>();
-  // M_rr·G first (a nested lazy product would redo it for every entry of M).
-  const Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxFull> mg = mrr.lazyProduct(G);
-  w.M.noalias() += G.transpose().lazyProduct(mg);
-  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, kMaxFull> fr =
-      mb.bottomLeftCorner(modes, 3).lazyProduct(G);
-  w.M.middleRows(i0, modes) += fr;
-  w.M.middleCols(i0, modes) += fr.transpose();
+  const Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxFull> mg = mrr * G;
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, kMaxFull> fr = mb.bottomLeftCorner(modes, 3) * G;
+  const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxFull, 1> gq = G.transpose() * qb.head<3>();
+  for (int a = 0; a < cols.size; ++a) {
+    const int ia = cols.index(a);
+    for (int c2 = 0; c2 < cols.size; ++c2) w.M(ia, cols.index(c2)) += G.col(a).dot(mg.col(c2));
+    for (int k = 0; k < modes; ++k) {
+      w.M(i0 + k, ia) += fr(k, a);
+      w.M(ia, i0 + k) += fr(k, a);
+    }
+    w.Q(ia) += gq(a);
+  }
   w.M.block(i0, i0, modes, modes) += mb.bottomRightCorner(modes, modes);
-  w.Q.noalias() += G.transpose() * qb.head<3>();
   w.Q.segment(i0, modes) += qb.tail(modes);
   w.strain_energy_J += strain_energy(link, modal);
   w.modal_damping_power_W += -modal.eta_dot_m_s.dot(data.damping_force.tail(modes));
@@ -237,11 +292,17 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
     const Vec2 rc = rotate(b.u, bd.centre_m);
     const ZJac Jc = point_jacobian(b, rc);
     const Vec2 ac = point_bias(b, rc);
-    w.M.noalias() += (bd.mass_kg * Jc.transpose()).lazyProduct(Jc);
-    w.M.noalias() += (bd.inertia_cg_kg_m2 * b.Jw.transpose()).lazyProduct(b.Jw);
+    const Support cols = support(b, nz);  // Jc's columns are among the frame's
     const Eigen::Vector2d f{-bd.mass_kg * ac.x, bd.mass_kg * (-g - ac.y)};
-    w.Q.noalias() += Jc.transpose() * f;
-    w.Q.noalias() -= bd.inertia_cg_kg_m2 * b.alpha_bias * b.Jw.transpose();
+    for (int a = 0; a < cols.size; ++a) {
+      const int ia = cols.index(a);
+      for (int c2 = 0; c2 < cols.size; ++c2) {
+        const int ib = cols.index(c2);
+        w.M(ia, ib) += bd.mass_kg * (Jc(0, ia) * Jc(0, ib) + Jc(1, ia) * Jc(1, ib)) +
+                       bd.inertia_cg_kg_m2 * b.Jw(ia) * b.Jw(ib);
+      }
+      w.Q(ia) += Jc(0, ia) * f(0) + Jc(1, ia) * f(1) - bd.inertia_cg_kg_m2 * b.alpha_bias * b.Jw(ia);
+    }
   }
   for (int j : m.clearance_joints()) {
     const PairState& ps = w.pair[static_cast<std::size_t>(j)];
@@ -256,17 +317,19 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
     w.z_accel(1) = c.prescribed.alpha4_rad_s2;
     const int f = n - 2;
     const ZVec rhs = w.Q.segment(2, f) - w.M.block(2, 0, f, 2) * w.z_accel.head(2) - w.M.block(2, n, f, 1) * w.z_accel(n);
-    const Eigen::LLT<ZMat> llt(w.M.block(2, 2, f, f));
-    if (llt.info() != Eigen::Success) throw_indefinite_mass_matrix(c);
-    w.z_accel.segment(2, f) = llt.solve(rhs);
+    ZMat mff = w.M.block(2, 2, f, f);
+    ZVec x = rhs;
+    if (!cholesky_solve(mff, f, x)) throw_indefinite_mass_matrix(c);
+    w.z_accel.segment(2, f) = x;
     const ZVec residual = w.M * w.z_accel - w.Q;
     w.crank_torque_Nm = residual(n) + residual(0) * c.prescribed.ratio3 + residual(1) * c.prescribed.ratio4;
     return;
   }
   const ZVec rhs = w.Q.head(n) - w.M.block(0, n, n, 1) * c.crank.accel_rad_s2;
-  const Eigen::LLT<ZMat> llt(w.M.topLeftCorner(n, n));
-  if (llt.info() != Eigen::Success) throw_indefinite_mass_matrix(c);
-  w.z_accel.head(n) = llt.solve(rhs);
+  ZMat mqq = w.M.topLeftCorner(n, n);
+  ZVec x = rhs;
+  if (!cholesky_solve(mqq, n, x)) throw_indefinite_mass_matrix(c);
+  w.z_accel.head(n) = x;
   w.crank_torque_Nm = w.M.row(n).dot(w.z_accel) - w.Q(n);
 }
 

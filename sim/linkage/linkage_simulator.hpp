@@ -17,6 +17,7 @@
 
 #include "sim/drive/crank_motion.hpp"
 #include "sim/linkage/linkage_model.hpp"
+#include "sim/linkage/linkage_sample.hpp"
 #include "sim/linkage/linkage_sensor.hpp"
 
 namespace fourbar {
@@ -32,28 +33,6 @@ struct LinkageStart {
   double omega3_rad_s = 0, omega4_rad_s = 0;
   std::array<Vec2, kJoints> eccentricity_m{}, eccentricity_rate_m_s{};
   std::array<std::array<double, 4>, 2> modal_m{}, modal_rate_m_s{};
-};
-
-/// One clearance joint's state in a sample.
-struct JointSample {
-  double gap_m = 0, penetration_m = 0, normal_force_N = 0, eta_rad = 0;
-  Vec2 pin_force_N;
-};
-
-struct LinkageSample {
-  double time_s = 0;
-  CrankState crank;
-  double theta3_rad = 0, theta4_rad = 0, omega3_rad_s = 0, omega4_rad_s = 0;
-  double alpha3_rad_s2 = 0, alpha4_rad_s2 = 0, crank_torque_Nm = 0;
-  double kinetic_energy_J = 0, potential_energy_J = 0;
-  double strain_energy_J = 0;  ///< elastic links' ½ηᵀKη
-  /// Modal coordinates η (m) of the coupler [0] and rocker [1], zero on a rigid link.
-  std::array<std::array<double, 4>, 2> modal_m{};
-  std::array<std::array<double, 4>, 2> modal_accel_m_s2{};  ///< η̈ of the coupler [0] and rocker [1]
-  std::array<double, 2> midspan_deflection_m{};  ///< coupler, rocker (0 when rigid)
-  std::vector<double> sensor_m_s2;               ///< tangential readings, set_sensors' order
-  bool in_contact = false;  ///< any joint
-  std::array<JointSample, kJoints> joint{};
 };
 
 /// One contact of one joint, onset to release.

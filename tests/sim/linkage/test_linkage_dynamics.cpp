@@ -2,7 +2,9 @@
 // thesis model's accelerations and motor torque (ClearanceModel, closed form,
 // thesis eqs. 4.1-20, 4.2-1, 3.3-1) with clearance at B and a pin force; and
 // free fall of coupler and rocker when every joint has clearance and no pin
-// touches its bushing.
+// touches its bushing; and, with elastic coupler and rocker, the mass matrix
+// (assembled over each body's non-zero columns) against the bodies' own
+// kinetic energies (sim/flex) and the accelerations against M·z̈ = Q.
 
 #include <gtest/gtest.h>
 
@@ -11,7 +13,9 @@
 
 #include "mechanism/kinematics.hpp"
 #include "sim/three_mode/model.hpp"
+#include "sim/flex/elastic_body.hpp"
 #include "sim/linkage/linkage_dynamics.hpp"
+#include "support/linkage_state.hpp"
 
 namespace fourbar {
 namespace {
@@ -104,6 +108,42 @@ TEST(LinkageDynamics, CouplerAndRockerFallFreelyWithEveryPinInsideItsBushing) {
   const double tau = rig.crank.inertia_about_joint() * c.accel_rad_s2 +
                      rig.crank.mass_kg * rig.gravity_m_s2 * rig.crank.mass_centre_m * std::cos(c.angle_rad);
   EXPECT_NEAR(w.crank_torque_Nm, tau, 1e-12 * (1 + std::abs(tau)));
+}
+
+TEST(LinkageDynamics, ElasticMassMatrixHoldsTheBodiesKineticEnergiesAndSolvesTheAccelerations) {
+  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
+  const double xi = 0.254e-3;
+  LinkageSpec spec = spec_with({xi, xi, xi});
+  spec.elastic = {false, true, true};
+  spec.elastic_modes = 4;
+  const LinkageModel lm = build_linkage(rig, spec);
+  const int n = lm.coordinates();
+  ASSERT_EQ(n, 6 + 8);
+  std::mt19937 gen(11);
+  for (int k = 0; k < 20; ++k) {
+    LinkageCoordinates q;
+    random_linkage_state(rig, lm, gen, q);
+    const CrankState c = q.crank;
+    LinkageWorkspace w;
+    forward_kinematics(lm, q, w);
+    std::array<double, kJoints> chi{};
+    pair_forces(lm, chi, w);
+    solve_accelerations(lm, q, w);
+    // ½·żᵀ·M·ż against the crank's ½·I_O2·ω2² plus each elastic body's
+    // kinetic energy from its frame and modes (sim/flex, no assembly).
+    double bodies = 0.5 * rig.crank.inertia_about_joint() * c.speed_rad_s * c.speed_rad_s;
+    for (int b : {1, 2}) {
+      ElasticBodyData data(*lm.elastic(b));
+      bodies += kinetic_energy(*lm.elastic(b), data, frame_state(w, b, false), modal_state(lm, q, w, b, false));
+    }
+    EXPECT_NEAR(kinetic_energy_J(w, q), bodies, 1e-12 * bodies) << k;
+    EXPECT_LT((w.M - w.M.transpose()).cwiseAbs().maxCoeff(), 1e-14 * w.M.cwiseAbs().maxCoeff()) << k;
+    // The written-out Cholesky solve against Eigen's LU of the same rows.
+    const ZVec rhs = w.Q.head(n) - w.M.block(0, n, n, 1) * c.accel_rad_s2;
+    const Eigen::VectorXd lu = Eigen::MatrixXd(w.M.topLeftCorner(n, n)).partialPivLu().solve(Eigen::VectorXd(rhs));
+    for (int i = 0; i < n; ++i)
+      EXPECT_NEAR(w.z_accel(i), lu(i), 1e-9 * (1 + lu.cwiseAbs().maxCoeff())) << k << " coordinate " << i;
+  }
 }
 
 }  // namespace

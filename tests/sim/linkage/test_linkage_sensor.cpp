@@ -10,6 +10,7 @@
 
 #include "mechanism/kinematics.hpp"
 #include "sim/linkage/linkage_sensor.hpp"
+#include "support/linkage_state.hpp"
 
 namespace fourbar {
 namespace {
@@ -28,33 +29,13 @@ double closed_form(Vec2 aJ, Vec2 u, double om, double al, double r, double h, do
   return dot(aJ, u.perp()) + r * al - h * om * om + g * u.x;
 }
 
-void random_state(const Rig& rig, const LinkageModel& lm, std::mt19937& gen, LinkageCoordinates& q) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  const CrankState c{3.2 * u(gen), 40 * u(gen), 300 * u(gen)};
-  const NominalMotion nm = solve_motion(rig, c);
-  const int n = lm.coordinates();
-  q.crank = c;
-  q.u2 = unit(c.angle_rad);
-  q.u = {unit(std::atan2(nm.pose.u3.y, nm.pose.u3.x) + 1e-3 * u(gen)),
-         unit(std::atan2(nm.pose.u4.y, nm.pose.u4.x) + 1e-3 * u(gen))};
-  q.q_offsets = ZVec::Zero(n);
-  q.z_rate = ZVec::Zero(n + 1);
-  q.z_rate(0) = nm.omega3_rad_s + u(gen);
-  q.z_rate(1) = nm.omega4_rad_s + u(gen);
-  for (int i = 2; i < n; ++i) {
-    q.q_offsets(i) = 1e-5 * u(gen);
-    q.z_rate(i) = 1e-2 * u(gen);
-  }
-  q.z_rate(n) = c.speed_rad_s;
-}
-
 TEST(LinkageSensor, RigidLinksReadTheClosedForm) {
   const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
   const LinkageModel lm = build_linkage(rig, spec_at_b(false));
   std::mt19937 gen(11);
   for (int k = 0; k < 20; ++k) {
     LinkageCoordinates q;
-    random_state(rig, lm, gen, q);
+    random_linkage_state(rig, lm, gen, q);
     LinkageWorkspace w;
     forward_kinematics(lm, q, w);
     solve_accelerations(lm, q, w);
@@ -81,7 +62,7 @@ TEST(LinkageSensor, ElasticCouplerAddsTheModalPart) {
   double largest = 0;
   for (int k = 0; k < 20; ++k) {
     LinkageCoordinates q;
-    random_state(rig, lm, gen, q);
+    random_linkage_state(rig, lm, gen, q);
     LinkageWorkspace w;
     forward_kinematics(lm, q, w);
     solve_accelerations(lm, q, w);
