@@ -36,11 +36,11 @@ namespace {
 constexpr const char* kSweepDetails = R"(Runs the clearance model over a grid and writes one CSV row per grid point.
 
 Sweep file keys:
-  scene                 base scene (model = "clearance"), relative to the sweep file
+  scene                 base scene (model = "clearance": three-mode or compliant), relative to the sweep file
   radial_mm             array of radial clearances in mm (default: the scene's)
   crank_speed_rpm       array of crank speeds in rpm (default: the scene's)
   restitution           array of coefficients of restitution (default: the scene's)
-  friction_coefficient  array of Coulomb mu (base scene must be stick-slip)
+  friction_coefficient  array of Coulomb mu (base scene stick-slip or compliant)
   revolutions           turns counted per grid point (default 20, as the report's model)
   skip_revolutions      start-up turns run first and not counted (default 20, the
                         report's warm-up); fewer: a note says the counts hold the

@@ -6,10 +6,9 @@
 #include "analyze/fft_filter.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
-#include "sim/compliant/compliant_simulator.hpp"
 #include "sim/compliant/contact_stiffness.hpp"
 #include "sim/drive/crank_motion.hpp"
-#include "sim/three_mode/simulator.hpp"
+#include "sim/run/clearance_simulation.hpp"
 #include "mechanism/kinematics.hpp"
 
 namespace fourbar {
@@ -50,9 +49,8 @@ ClearanceSettings clearance_settings(const Rig& rig, double clearance_m, const T
   return cs;
 }
 
-/// The averaged turns of either clearance simulator (same interface).
-template <class Simulator>
-void run_model(Simulator& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
+/// The averaged turns of either clearance simulator.
+void run_model(ClearanceSimulation& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
                MatchedTheory& out);
 
 }  // namespace
@@ -94,20 +92,13 @@ MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double
   out.settings.compliant = cs.compliant;  // with the stiffness it used
   const ClearanceModel model(rig, clearance_m);
   const ConstantSpeedCrank crank(grid.start_rad, crank_speed_rad_s);
-  if (cs.model == ClearanceKind::compliant) {
-    CompliantSimulator sim(model, crank, cs);
-    run_model(sim, grid, crank, settings, out);
-  } else {
-    ClearanceSimulator sim(model, crank, cs);
-    run_model(sim, grid, crank, settings, out);
-  }
+  run_model(*make_clearance_simulation(model, crank, cs), grid, crank, settings, out);
   return out;
 }
 
 namespace {
 
-template <class Simulator>
-void run_model(Simulator& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
+void run_model(ClearanceSimulation& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
                MatchedTheory& out) {
   const std::size_t n = grid.grid_points_per_rev, turns = static_cast<std::size_t>(settings.averaged_revolutions);
   const int warm = settings.warmup_revolutions;

@@ -6,7 +6,7 @@
 #include "common/error.hpp"
 #include "common/angle_unwrap.hpp"
 #include "common/units.hpp"
-#include "sim/compliant/compliant_simulator.hpp"
+#include "sim/run/clearance_simulation.hpp"
 #include "virtual_rig/drive_crank.hpp"
 
 namespace fourbar {
@@ -25,32 +25,25 @@ ClearanceMotionSource::ClearanceMotionSource(std::shared_ptr<const Rig> rig, Cra
 
   const ClearanceModel model(*rig, clearance_m);
   const DriveCrank crank(drive_);
-  // Either clearance model ([clearance] model): the same interface.
-  auto run = [&](auto& sim) {
-    sim.set_revolution_origin(drive_.at(first_s_).angle_rad);
-    sim.start_nominal(first_s_);
-    sim.set_sample_times(times);
-    sim.advance_to(times.back());
-    if (sim.samples().size() != times.size())
-      throw RunError("virtual rig: the clearance model gave " + std::to_string(sim.samples().size()) + " of " +
-                     std::to_string(times.size()) + " samples");
-    nodes_.reserve(times.size());
-    double th3 = 0, th4 = 0;
-    for (const ClearanceSample& s : sim.samples()) {
-      const double a3 = std::atan2(s.links.u3.y, s.links.u3.x), a4 = std::atan2(s.links.u4.y, s.links.u4.x);
-      th3 = nodes_.empty() ? a3 : units::unwrap_rad(a3, th3);
-      th4 = nodes_.empty() ? a4 : units::unwrap_rad(a4, th4);
-      nodes_.push_back({th3, s.links.omega3_rad_s, th4, s.links.omega4_rad_s});
-    }
-    impacts_ = sim.impacts();
-  };
-  if (settings.model == ClearanceKind::compliant) {
-    CompliantSimulator sim(model, crank, settings);
-    run(sim);
-  } else {
-    ClearanceSimulator sim(model, crank, settings);
-    run(sim);
+  // Either clearance model ([clearance] model).
+  const std::unique_ptr<ClearanceSimulation> simulation = make_clearance_simulation(model, crank, settings);
+  ClearanceSimulation& sim = *simulation;
+  sim.set_revolution_origin(drive_.at(first_s_).angle_rad);
+  sim.start_nominal(first_s_);
+  sim.set_sample_times(times);
+  sim.advance_to(times.back());
+  if (sim.samples().size() != times.size())
+    throw RunError("virtual rig: the clearance model gave " + std::to_string(sim.samples().size()) + " of " +
+                   std::to_string(times.size()) + " samples");
+  nodes_.reserve(times.size());
+  double th3 = 0, th4 = 0;
+  for (const ClearanceSample& s : sim.samples()) {
+    const double a3 = std::atan2(s.links.u3.y, s.links.u3.x), a4 = std::atan2(s.links.u4.y, s.links.u4.x);
+    th3 = nodes_.empty() ? a3 : units::unwrap_rad(a3, th3);
+    th4 = nodes_.empty() ? a4 : units::unwrap_rad(a4, th4);
+    nodes_.push_back({th3, s.links.omega3_rad_s, th4, s.links.omega4_rad_s});
   }
+  impacts_ = sim.impacts();
 }
 
 ClearanceMotionSource::Node ClearanceMotionSource::node_at(double t) const {

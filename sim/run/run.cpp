@@ -6,7 +6,7 @@
 #include "common/progress.hpp"
 #include "common/angle_unwrap.hpp"
 #include "common/units.hpp"
-#include "sim/compliant/compliant_simulator.hpp"
+#include "sim/run/clearance_simulation.hpp"
 #include "sim/outputs.hpp"
 
 namespace fourbar {
@@ -72,9 +72,8 @@ ClearanceRun run_clearance(const Scene& scene, bool progress, int warmup_revolut
 
 namespace {
 
-/// The run on either simulator (ClearanceSimulator or CompliantSimulator: same interface).
-template <class Simulator>
-ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& sim, bool progress, int warmup) {
+/// The run on either clearance simulator.
+ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, ClearanceSimulation& sim, bool progress, int warmup) {
   using Criterion = ClearanceSettings::SteadyCriterion;
   const ClearanceSettings& cs = scene.clearance;
   ClearanceRun out;
@@ -177,12 +176,8 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, Simulator& s
 
 ClearanceRun run_clearance(const Scene& scene, const CrankMotion& crank, bool progress, int warmup_revolutions) {
   const ClearanceModel model(*scene.rig, scene.clearance_m());
-  if (scene.clearance.model == ClearanceKind::compliant) {
-    CompliantSimulator sim(model, crank, scene.clearance);
-    return run_with(scene, crank, sim, progress, warmup_revolutions);
-  }
-  ClearanceSimulator sim(model, crank, scene.clearance);
-  return run_with(scene, crank, sim, progress, warmup_revolutions);
+  const std::unique_ptr<ClearanceSimulation> sim = make_clearance_simulation(model, crank, scene.clearance);
+  return run_with(scene, crank, *sim, progress, warmup_revolutions);
 }
 
 }  // namespace fourbar

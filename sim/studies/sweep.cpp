@@ -4,13 +4,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
+#include <string>
 
 #include "common/error.hpp"
 #include "common/csv_writer.hpp"
 #include "common/mean_standard_error.hpp"
 #include "common/toml_section.hpp"
 #include "common/units.hpp"
-#include "sim/three_mode/simulator.hpp"
+#include "sim/compliant/contact_stiffness.hpp"
+#include "sim/run/clearance_simulation.hpp"
 
 namespace fourbar {
 
@@ -58,8 +61,9 @@ SweepGrid load_sweep(const std::filesystem::path& file, Scene& base) {
     if (w == 0) full.fail("crank_speed_rpm", "holds 0: the crank must turn");
   g.restitution = array("restitution", 0, 1, base.clearance.restitution, 1.0);
   g.friction_coefficient = array("friction_coefficient", 0, 100, base.clearance.friction_coefficient, 1.0);
-  if (doc.contains("friction_coefficient") && base.clearance.contact != ContactLaw::stick_slip)
-    full.fail("friction_coefficient", "needs a base scene with contact = \"stick-slip\"");
+  if (doc.contains("friction_coefficient") && base.clearance.contact != ContactLaw::stick_slip &&
+      base.clearance.model != ClearanceKind::compliant)
+    full.fail("friction_coefficient", "needs a base scene with contact = \"stick-slip\" or model = \"compliant\"");
   g.revolutions = static_cast<int>(root.integer("revolutions", 1, 100000, SweepGrid{}.revolutions));
   g.skip_revolutions = static_cast<int>(root.integer("skip_revolutions", 0, 100000, SweepGrid{}.skip_revolutions));
   root.optional_string("notes");
@@ -88,9 +92,16 @@ void compute_sweep_point(const Scene& base, const SweepGrid& g, SweepPoint& p) {
     ClearanceSettings s = base.clearance;
     s.restitution = p.restitution;
     s.friction_coefficient = p.friction_coefficient;
+    // The scene's model: the compliant one's stiffness (when the rig's
+    // bearing gives it) and film depend on the clearance, so per point.
+    if (s.model == ClearanceKind::compliant)
+      resolve_contact_stiffness(*base.rig, p.radial_clearance_m, s, [&](const char* key, const std::string& what) {
+        throw RunError(std::string("[clearance] ") + key + " " + what);
+      });
     const ClearanceModel model(*base.rig, p.radial_clearance_m);
     const ConstantSpeedCrank crank(base.start_angle_rad, p.crank_speed_rad_s);
-    ClearanceSimulator sim(model, crank, s);
+    const std::unique_ptr<ClearanceSimulation> simulation = make_clearance_simulation(model, crank, s);
+    ClearanceSimulation& sim = *simulation;
     sim.set_revolution_origin(base.start_angle_rad);
     sim.start_nominal(0.0);
     const int total = g.skip_revolutions + g.revolutions;

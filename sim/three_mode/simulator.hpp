@@ -35,48 +35,39 @@
 #include "sim/three_mode/impact.hpp"
 #include "sim/integrate/integrator.hpp"
 #include "sim/three_mode/model.hpp"
+#include "sim/record/clearance_simulation.hpp"
 #include "sim/record/run_records.hpp"
 #include "sim/three_mode/settings.hpp"
 
 namespace fourbar {
 
-class ClearanceSimulator {
+class ClearanceSimulator final : public ClearanceSimulation {
  public:
   ClearanceSimulator(const ClearanceModel& model, const CrankMotion& crank, const ClearanceSettings& settings);
-  ~ClearanceSimulator();
+  ~ClearanceSimulator() override;
 
   /// Starts at t0 in the following mode with the clearance link along the
   /// nominal bearing force (thesis sec. 3.4, 6.1), or in free flight when that
   /// force would be tensile.
-  void start_nominal(double t0);
+  void start_nominal(double t0) override;
   /// Starts in the following mode with a given clearance-link angle and rate.
   void start_following(double t0, double eta_rad, double eta_rate_rad_s);
   /// Starts in free flight from a given link motion (must be inside the bushing).
-  void start_free(double t0, const LinkMotion& links);
+  void start_free(double t0, const LinkMotion& links) override;
 
-  /// Times at which samples are wanted (ascending, ≥ the start time); the
-  /// samples appear in samples() as the run passes them.
-  void set_sample_times(std::vector<double> times);
-  /// Revolution boundaries: crank angle where turn 0 starts (turns follow every 2π).
-  void set_revolution_origin(double crank_angle_rad);
+  void set_sample_times(std::vector<double> times) override;
+  void set_revolution_origin(double crank_angle_rad) override;
+  void set_revolution_statistics(int samples_per_turn) override;
+  void advance_to(double t_end) override;
 
-  /// Per-turn RMS of α3 − α3,nominal from `samples_per_turn` samples per
-  /// turn, uniform in crank angle (needs set_revolution_origin; 0 = off).
-  void set_revolution_statistics(int samples_per_turn);
+  double time() const override;
+  ContactMode mode() const override;
+  LinkMotion current_links() override;
 
-  /// Runs until t_end (may be called again with a later time).
-  void advance_to(double t_end);
-
-  double time() const;
-  ContactMode mode() const;
-  /// Link motion at the current time.
-  LinkMotion current_links();
-
-  const std::vector<ClearanceSample>& samples() const;
-  const std::vector<ImpactRecord>& impacts() const;
-  const std::vector<RevolutionRecord>& revolutions() const;
-  /// Diagnostics up to now (energy terms evaluated at the current time).
-  ClearanceDiagnostics diagnostics();
+  const std::vector<ClearanceSample>& samples() const override;
+  const std::vector<ImpactRecord>& impacts() const override;
+  const std::vector<RevolutionRecord>& revolutions() const override;
+  ClearanceDiagnostics diagnostics() override;
 
  private:
   struct Impl;
