@@ -225,8 +225,9 @@ int run_sweep(const Invocation& inv) {
   if (failed > kFailuresNamed)
     std::cerr << "fourbar: sweep: and " << failed - kFailuresNamed << " more failed points (status \"failed\" in "
               << out_path.string() << ")\n";
-  std::cout << "wrote " << out_path.string() << " (" << points.size() << " grid points, " << grid.revolutions
-            << " counted turns each";
+  std::cout << "wrote " << out_path.string() << " (" << points.size() << " grid points of the "
+            << (base.clearance.model == ClearanceKind::compliant ? "compliant" : "three-mode") << " model, "
+            << grid.revolutions << " counted turns each";
   if (resumed > 0) std::cout << "; " << resumed << " from the journal of an interrupted run";
   std::cout << "; " << todo.size() << " computed on ";
   if (stats.ranks > 1) std::cout << mpi.describe();

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <sstream>
@@ -303,6 +304,24 @@ TEST(SweepCommand, KeysLeftOutTakeTheScenesValues) {
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_NEAR(rows[0][0], 0.254, 1e-12);
   EXPECT_NEAR(rows[0][1], 350.0, 1e-9);
+}
+
+TEST(SweepCommand, CompliantSceneIsSweptWithItsOwnModel) {
+  // Before, every sweep ran the three-mode model whatever the scene said.
+  TempDir dir;
+  dir.write("g.toml", "scene = \"" FOURBAR_SOURCE_DIR "/data/scenes/thesis_compliant_350rpm_e05.toml\"\n"
+                      "friction_coefficient = [0.0, 0.1]\nrevolutions = 1\nskip_revolutions = 1\n");
+  const auto out = dir.path() / "t.csv";
+  const auto r = run_fourbar("sweep " + (dir.path() / "g.toml").string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("of the compliant model"), std::string::npos) << r.out;
+  std::vector<std::string> header;
+  const auto rows = rows_of(testing::read_file(out), header);
+  ASSERT_EQ(rows.size(), 2u);
+  const auto column = static_cast<std::size_t>(
+      std::find(header.begin(), header.end(), "max_penetration_rel") - header.begin());
+  ASSERT_LT(column, header.size());
+  for (const auto& row : rows) EXPECT_GT(row[column], 1e-4);  // a compliant contact penetrates (µm of 0.254 mm)
 }
 
 TEST(SweepCommand, BadSweepFileExitTwo) {
