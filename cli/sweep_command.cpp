@@ -20,6 +20,7 @@
 #include "common/atomic_output.hpp"
 #include "common/csv_writer.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/progress.hpp"
 #include "common/provenance.hpp"
 #include "common/units.hpp"
@@ -217,9 +218,9 @@ int run_sweep(const Invocation& inv) {
   std::size_t failed = 0;
   for (std::size_t i = 0; i < points.size(); ++i)
     if (points[i].failed() && ++failed <= kFailuresNamed) {
-      std::cerr << "fourbar: sweep: point " << i + 1 << " (radial " << format_double(units::m_to_mm(points[i].radial_clearance_m))
-                << " mm, " << format_double(units::rad_s_to_rpm(points[i].crank_speed_rad_s)) << " rpm, e "
-                << format_double(points[i].restitution) << ", mu " << format_double(points[i].friction_coefficient)
+      std::cerr << "fourbar: sweep: point " << i + 1 << " (radial " << format_number(units::m_to_mm(points[i].radial_clearance_m))
+                << " mm, " << format_number(units::rad_s_to_rpm(points[i].crank_speed_rad_s)) << " rpm, e "
+                << format_number(points[i].restitution) << ", mu " << format_number(points[i].friction_coefficient)
                 << ") failed: " << points[i].error << "\n";
     }
   if (failed > kFailuresNamed)
