@@ -26,10 +26,8 @@ class CvodeIntegrator final : public DenseIntegrator {
  public:
   explicit CvodeIntegrator(double tol) {
     check_cvode(SUNContext_Create(nullptr, &ctx_), "context");
-    y_ = N_VNew_Serial(kOdeSize, ctx_);
-    dky_ = N_VNew_Serial(kOdeSize, ctx_);
-    install_serial_vector_ops(y_);  // CVODE's internal vectors are clones of y
-    install_serial_vector_ops(dky_);
+    y_ = new_serial_vector(kOdeSize, ctx_);
+    dky_ = new_serial_vector(kOdeSize, ctx_);
     N_VConst(0.0, y_);
     mem_ = CVodeCreate(CV_ADAMS, ctx_);
     if (!mem_) throw RunError("CVODE: cannot create the integrator");

@@ -100,17 +100,14 @@ LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::si
   c.tol = tolerance;
   check_linkage(SUNContext_Create(nullptr, &c.ctx), "context");
   const auto n = static_cast<sunindextype>(size);
-  c.y = N_VNew_Serial(n, c.ctx);
-  c.dky = N_VNew_Serial(n, c.ctx);
-  install_serial_vector_ops(c.y);  // CVODE's internal vectors are clones of y
-  install_serial_vector_ops(c.dky);
+  c.y = new_serial_vector(n, c.ctx);
+  c.dky = new_serial_vector(n, c.ctx);
   N_VConst(0.0, c.y);
   if (!c.ark()) {
     c.mem = CVodeCreate(CV_BDF, c.ctx);
     if (!c.mem) throw RunError("CVODE (BDF, linkage): cannot create the integrator");
   }
-  c.jac = SUNDenseMatrix(n, n, c.ctx);
-  install_dense_matrix_ops(c.jac);
+  c.jac = new_dense_matrix(n, n, c.ctx);
   c.ls = second_order_linear_solver(c.ctx, size, coupled / 2);
   if (!c.ls) throw RunError("SUNDIALS (linkage): cannot create the linear solver");
 }

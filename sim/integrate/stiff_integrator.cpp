@@ -103,18 +103,15 @@ StiffIntegrator::StiffIntegrator(double tolerance, std::size_t coupled, std::siz
   c.tol = tolerance;
   check_bdf(SUNContext_Create(nullptr, &c.ctx), "context");
   const auto n = static_cast<sunindextype>(size);
-  c.y = N_VNew_Serial(n, c.ctx);
-  c.dky = N_VNew_Serial(n, c.ctx);
-  install_serial_vector_ops(c.y);  // CVODE's internal vectors are clones of y
-  install_serial_vector_ops(c.dky);
+  c.y = new_serial_vector(n, c.ctx);
+  c.dky = new_serial_vector(n, c.ctx);
   N_VConst(0.0, c.y);
   c.mem = CVodeCreate(method == StiffMethod::bdf ? CV_BDF : CV_ADAMS, c.ctx);
   if (!c.mem) throw RunError("CVODE (BDF): cannot create the integrator");
   if (method == StiffMethod::adams_fixed_point) {
     c.fixed_point = SUNNonlinSol_FixedPoint(c.y, 0, c.ctx);
   } else {
-    c.jac = SUNDenseMatrix(n, n, c.ctx);
-    install_dense_matrix_ops(c.jac);
+    c.jac = new_dense_matrix(n, n, c.ctx);
     c.ls = SUNLinSol_Dense(c.y, c.jac, c.ctx);
   }
 }

@@ -210,11 +210,7 @@ int dense_scale_add_identity(realtype c, SUNMatrix a) {
   return SUNMAT_SUCCESS;
 }
 
-SUNMatrix dense_clone(SUNMatrix a) {
-  SUNMatrix b = SUNDenseMatrix(SM_ROWS_D(a), SM_COLUMNS_D(a), a->sunctx);
-  if (b) install_dense_matrix_ops(b);
-  return b;
-}
+SUNMatrix dense_clone(SUNMatrix a) { return new_dense_matrix(SM_ROWS_D(a), SM_COLUMNS_D(a), a->sunctx); }
 
 }  // namespace
 
@@ -256,6 +252,18 @@ void install_serial_vector_ops(N_Vector v) {
   o->nvinvtestlocal = nv_inv_test;
   o->nvwsqrsumlocal = nv_weighted_square_sum;
   o->nvwsqrsummasklocal = nv_weighted_square_sum_mask;
+}
+
+N_Vector new_serial_vector(sunindextype length, SUNContext ctx) {
+  N_Vector v = N_VNew_Serial(length, ctx);
+  if (v) install_serial_vector_ops(v);
+  return v;
+}
+
+SUNMatrix new_dense_matrix(sunindextype rows, sunindextype columns, SUNContext ctx) {
+  SUNMatrix a = SUNDenseMatrix(rows, columns, ctx);
+  if (a) install_dense_matrix_ops(a);
+  return a;
 }
 
 }  // namespace fourbar

@@ -30,4 +30,10 @@ void install_serial_vector_ops(N_Vector v);
 /// Newton matrix at every step.
 void install_dense_matrix_ops(SUNMatrix a);
 
+/// N_VNew_Serial / SUNDenseMatrix with the kernels above installed: how the
+/// integrators make their vectors and Jacobian (null when SUNDIALS cannot
+/// allocate them).
+N_Vector new_serial_vector(sunindextype length, SUNContext ctx);
+SUNMatrix new_dense_matrix(sunindextype rows, sunindextype columns, SUNContext ctx);
+
 }  // namespace fourbar
