@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "common/error.hpp"
 
@@ -176,9 +177,48 @@ Vec2 site_position(const LinkageWorkspace& w, const Site& s) {
   return b.p + rotate(b.u, s.local_m);
 }
 
+BodyPoses body_poses(const LinkageModel& m, const LinkageCoordinates& c) {
+  BodyPoses poses;
+  poses.u[0] = c.u2;  // the crank: origin O2, angle z[n]
+  auto parent_pose = [&](int b) { return b == kGround ? std::pair{Vec2{1, 0}, Vec2{}} : std::pair{poses.u[static_cast<std::size_t>(b)], poses.p[static_cast<std::size_t>(b)]}; };
+  for (const Placement& pl : m.placements()) {  // parents first
+    const auto [parent_u, parent_p] = parent_pose(pl.parent.body);
+    Vec2 q_pos = parent_p + rotate(parent_u, pl.parent.local_m);
+    if (pl.offset_index >= 0) q_pos += Vec2{c.q_offsets(pl.offset_index), c.q_offsets(pl.offset_index + 1)};
+    const auto b = static_cast<std::size_t>(pl.body);
+    poses.u[b] = c.u[b - 1];
+    poses.p[b] = q_pos - rotate(poses.u[b], pl.child.local_m);
+  }
+  return poses;
+}
+
+Vec2 pair_eccentricity(const LinkageModel& m, const LinkageCoordinates& c, const BodyPoses& poses, int joint) {
+  for (const Placement& pl : m.placements())
+    if (pl.joint == joint) return pl.offset_sign * Vec2{c.q_offsets(pl.offset_index), c.q_offsets(pl.offset_index + 1)};
+  const JointData& jd = m.joint(joint);
+  auto world = [&](const Site& s) {
+    if (s.body == kGround) return s.local_m;
+    const auto b = static_cast<std::size_t>(s.body);
+    return poses.p[b] + rotate(poses.u[b], s.local_m);
+  };
+  const Vec2 pin_pos = world(jd.pin), bush_pos = world(jd.bushing);
+  return {pin_pos.x - bush_pos.x, pin_pos.y - bush_pos.y};
+}
+
+std::array<double, kJoints> pair_penetrations(const LinkageModel& m, const LinkageCoordinates& c) {
+  const BodyPoses poses = body_poses(m, c);
+  std::array<double, kJoints> pen{};
+  for (int j : m.clearance_joints()) {
+    const Vec2 e = pair_eccentricity(m, c, poses, j);
+    pen[static_cast<std::size_t>(j)] = -(m.joint(j).clearance_m - std::sqrt(dot(e, e)));
+  }
+  return pen;
+}
+
 void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w) {
   const int n = m.coordinates(), nz = n + 1;
   w.z_rate_cache = c.z_rate;
+  const BodyPoses poses = body_poses(m, c);
   const BodyFrame ground = ground_frame(nz);
   auto frame = [&](int b) -> const BodyFrame& { return b == kGround ? ground : w.body[static_cast<std::size_t>(b)]; };
   // The crank: origin O2, angle z[n].
@@ -187,27 +227,25 @@ void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, Link
   cr.u = c.u2;
   cr.omega = c.crank.speed_rad_s;
   cr.Jw(n) = 1.0;
-  // Placed bodies, parents first.
+  // Placed bodies, parents first: positions from body_poses, Jacobians and biases here.
   for (const Placement& pl : m.placements()) {
     const BodyFrame& parent = frame(pl.parent.body);
     const Vec2 rp = rotate(parent.u, pl.parent.local_m);
-    Vec2 q_pos = parent.p + rp;
     ZJac Jq = point_jacobian(parent, rp);
     const Vec2 aq = point_bias(parent, rp);
     if (pl.offset_index >= 0) {
       const auto k = pl.offset_index;
-      q_pos += Vec2{c.q_offsets(k), c.q_offsets(k + 1)};
       Jq(0, k) += 1.0;
       Jq(1, k + 1) += 1.0;
     }
     BodyFrame& b = w.body[static_cast<std::size_t>(pl.body)];
-    b.u = c.u[static_cast<std::size_t>(pl.body - 1)];
+    b.u = poses.u[static_cast<std::size_t>(pl.body)];
+    b.p = poses.p[static_cast<std::size_t>(pl.body)];
     b.Jw = ZRow::Zero(nz);
     b.Jw(pl.angle_index) = 1.0;
     b.omega = c.z_rate(pl.angle_index);
     b.alpha_bias = 0;
     const Vec2 rc = rotate(b.u, pl.child.local_m);
-    b.p = q_pos - rc;
     b.Jp = Jq;
     b.Jp.row(0) -= -rc.y * b.Jw;
     b.Jp.row(1) -= rc.x * b.Jw;
@@ -220,17 +258,7 @@ void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, Link
     ps.joint = j;
     const BodyFrame &pin = frame(jd.pin.body), &bush = frame(jd.bushing.body);
     const Vec2 r_pin = rotate(pin.u, jd.pin.local_m);
-    Vec2 e;
-    const Placement* placed = nullptr;
-    for (const Placement& pl : m.placements())
-      if (pl.joint == j) placed = &pl;
-    if (placed) {
-      e = placed->offset_sign * Vec2{c.q_offsets(placed->offset_index), c.q_offsets(placed->offset_index + 1)};
-    } else {
-      const Vec2 pin_pos = pin.p + r_pin;
-      const Vec2 bush_pos = bush.p + rotate(bush.u, jd.bushing.local_m);
-      e = {pin_pos.x - bush_pos.x, pin_pos.y - bush_pos.y};
-    }
+    const Vec2 e = pair_eccentricity(m, c, poses, j);
     ps.eccentricity_m = e;
     const double r = std::sqrt(dot(e, e));
     ps.gap_m = jd.clearance_m - r;

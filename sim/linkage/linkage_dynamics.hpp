@@ -84,6 +84,22 @@ struct LinkageWorkspace {
   double strain_energy_J = 0, modal_damping_power_W = 0;
 };
 
+/// The bodies' orientations u and frame origins p (crank, coupler, rocker):
+/// the position part of forward_kinematics, which uses it.
+struct BodyPoses {
+  std::array<Vec2, kBodies> u, p;
+};
+BodyPoses body_poses(const LinkageModel& m, const LinkageCoordinates& c);
+
+/// A clearance joint's eccentricity e = pin − bushing centre (from its
+/// offsets when it places a body, else from the poses).
+Vec2 pair_eccentricity(const LinkageModel& m, const LinkageCoordinates& c, const BodyPoses& poses, int joint);
+
+/// |e| − ξ of each clearance joint (m, by joint; 0 elsewhere) from positions
+/// alone: the bits forward_kinematics gives as penetration_m, without its
+/// Jacobians and velocities (the witnesses, evaluated after every step).
+std::array<double, kJoints> pair_penetrations(const LinkageModel& m, const LinkageCoordinates& c);
+
 /// Frames of all bodies, the pairs' geometry and relative velocities.
 void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w);
 

@@ -169,16 +169,15 @@ struct LinkageSimulator::Impl final : LinkageOde {
     if (model.any_elastic()) dy[modal_loss_index()] = ws.modal_damping_power_W / energy;
   }
 
+  /// The penetration over the clearance, (|e| − ξ)/ξ, per clearance joint,
+  /// from the bodies' positions only (CVODE calls this after every step).
   void witnesses(double time, const double* y, double* g) override {
     LinkageCoordinates c;
-    LinkageWorkspace ws;
     coordinates(time, y, c);
-    forward_kinematics(model, c, ws);
+    const std::array<double, kJoints> pen = pair_penetrations(model, c);
     const auto& joints = model.clearance_joints();
-    for (std::size_t k = 0; k < joints.size(); ++k) {
-      const auto ju = static_cast<std::size_t>(joints[k]);
-      g[k] = ws.pair[ju].penetration_m / model.joint(joints[k]).clearance_m;
-    }
+    for (std::size_t k = 0; k < joints.size(); ++k)
+      g[k] = pen[static_cast<std::size_t>(joints[k])] / model.joint(joints[k]).clearance_m;
   }
 
   std::vector<double> state_at(double time) {
@@ -315,32 +314,45 @@ struct LinkageSimulator::Impl final : LinkageOde {
     e.active = false;
   }
 
-  /// Peak force, penetration and the end of the first compression–restitution cycle of each open contact.
+  /// The clearance pairs (geometry, relative velocity, forces) at `time`.
+  const std::array<PairState, kJoints>& pairs_at(double time, LinkageWorkspace& ws) {
+    LinkageCoordinates c;
+    integ.interpolate(time, track_state);
+    coordinates(time, track_state.data(), c);
+    forward_kinematics(model, c, ws);
+    pair_forces(model, chis(ws), ws);
+    return ws.pair;
+  }
+  std::vector<double> track_state;
+
+  /// Peak force, penetration and the end of the first compression–restitution
+  /// cycle of each open contact, from the pairs at mid-step and at the step's
+  /// end (each evaluated once for every open contact).
   void track(double ta, double tb) {
-    auto pair_at = [&](int j, double time) {
-      LinkageCoordinates c;
-      LinkageWorkspace ws;
-      const std::vector<double> y = state_at(time);
-      coordinates(time, y.data(), c);
-      forward_kinematics(model, c, ws);
-      pair_forces(model, chis(ws), ws);
-      return ws.pair[static_cast<std::size_t>(j)];
-    };
+    bool any = false;
+    for (int j : model.clearance_joints()) any = any || ep[static_cast<std::size_t>(j)].active;
+    if (!any || !(tb > ta)) return;
+    LinkageWorkspace mid_ws, end_ws;
+    const std::array<PairState, kJoints>& mid = pairs_at(0.5 * (ta + tb), mid_ws);
+    const std::array<PairState, kJoints>& end = pairs_at(tb, end_ws);
     for (int j : model.clearance_joints()) {
-      Episode& e = ep[static_cast<std::size_t>(j)];
-      if (!e.active || !(tb > ta)) continue;
-      LinkageJointBooks& b = diag.joint[static_cast<std::size_t>(j)];
-      for (double time : {0.5 * (ta + tb), tb}) {
-        const PairState ps = pair_at(j, time);
-        e.rec.peak_force_N = std::max(e.rec.peak_force_N, ps.normal_force_N);
-        e.rec.max_penetration_m = std::max(e.rec.max_penetration_m, ps.penetration_m);
-        b.max_penetration_m = std::max(b.max_penetration_m, ps.penetration_m);
+      const auto ju = static_cast<std::size_t>(j);
+      Episode& e = ep[ju];
+      if (!e.active) continue;
+      LinkageJointBooks& b = diag.joint[ju];
+      for (const PairState* ps : {&mid[ju], &end[ju]}) {
+        e.rec.peak_force_N = std::max(e.rec.peak_force_N, ps->normal_force_N);
+        e.rec.max_penetration_m = std::max(e.rec.max_penetration_m, ps->penetration_m);
+        b.max_penetration_m = std::max(b.max_penetration_m, ps->penetration_m);
       }
       if (e.phase < 2) {
-        const double rate_b = pair_at(j, tb).normal_speed_m_s;
+        const double rate_b = end[ju].normal_speed_m_s;
         if (e.phase == 0 && rate_b < 0) e.phase = 1;
         if (e.phase == 1 && rate_b > 0) {
-          auto rate = [&](double x) { return pair_at(j, x).normal_speed_m_s; };
+          auto rate = [&](double x) {
+            LinkageWorkspace ws;
+            return pairs_at(x, ws)[ju].normal_speed_m_s;
+          };
           const double rate_a = rate(ta);
           const double tc = rate_a < 0 ? locate_root(rate, ta, tb, rate_a, rate_b) : ta;
           e.rec.impact_impulse_Ns = state_at(tc)[quad(slot(j)) + 2] * force / w;

@@ -146,5 +146,39 @@ TEST(LinkageDynamics, ElasticMassMatrixHoldsTheBodiesKineticEnergiesAndSolvesThe
   }
 }
 
+// The witnesses' positions-only pass (pair_penetrations, every step) gives
+// the bits of the full kinematics' penetration, for a joint placed by its
+// offsets (A, O4) and for the loop-closing one (whose pin the random links'
+// 1 mrad can push through the wall), and |e| − ξ of the pin's and the
+// bushing's world sites.
+TEST(LinkageDynamics, PairPenetrationsAreTheKinematicsOwn) {
+  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
+  const double xi = 0.254e-3;
+  for (const std::array<double, 3>& clearances :
+       {std::array<double, 3>{0, xi, 0}, std::array<double, 3>{xi, xi, xi}, std::array<double, 3>{xi, 0, 0},
+        std::array<double, 3>{0, 0, 2 * xi}}) {
+    LinkageSpec spec = spec_with(clearances);
+    spec.elastic = {false, true, true};
+    spec.elastic_modes = 2;
+    const LinkageModel lm = build_linkage(rig, spec);
+    std::mt19937 gen(29);
+    for (int k = 0; k < 20; ++k) {
+      LinkageCoordinates q;
+      random_linkage_state(rig, lm, gen, q);
+      LinkageWorkspace w;
+      forward_kinematics(lm, q, w);
+      const std::array<double, kJoints> pen = pair_penetrations(lm, q);
+      for (int j : lm.clearance_joints()) {
+        const PairState& ps = w.pair[static_cast<std::size_t>(j)];
+        EXPECT_EQ(pen[static_cast<std::size_t>(j)], ps.penetration_m) << "joint " << j << ", state " << k;
+        const JointData& jd = lm.joint(j);
+        const Vec2 e = site_position(w, jd.pin) - site_position(w, jd.bushing);
+        EXPECT_NEAR(pen[static_cast<std::size_t>(j)], std::sqrt(dot(e, e)) - jd.clearance_m, 1e-15)
+            << "joint " << j << ", state " << k;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fourbar
