@@ -10,7 +10,7 @@
 // this single-threaded process, median of `repeats`) and wall time.
 // Lines for 2 and 4 modes per link.
 //
-//   bench/elastic_linkage_work_precision [--method bdf|esdirk4|esdirk5|erk] [repeats] [modes...]
+//   bench/elastic_linkage_work_precision [--method bdf|esdirk4|esdirk5|erk|adams] [repeats] [modes...]
 //   bench/elastic_linkage_work_precision [--method M] --one MODES TOL [CSV]   (one run, for a
 //     profiler; CSV gets the coupler and rocker sensor columns and α3)
 //   bench/elastic_linkage_work_precision --share MODES SAMPLES [CSV]   (the
@@ -67,7 +67,7 @@ double cpu_seconds() {
 }  // namespace
 
 int main(int argc_in, char** argv_in) {
-  // --method bdf|esdirk4|esdirk5|erk (first), then the modes below.
+  // --method bdf|esdirk4|esdirk5|erk|adams (first), then the modes below.
   std::vector<char*> args(argv_in, argv_in + argc_in);
   LinkageMethod method = LinkageMethod::bdf;
   std::string method_name = "bdf";
@@ -76,8 +76,9 @@ int main(int argc_in, char** argv_in) {
     if (method_name == "esdirk4") method = LinkageMethod::esdirk4;
     else if (method_name == "esdirk5") method = LinkageMethod::esdirk5;
     else if (method_name == "erk") method = LinkageMethod::erk;
+    else if (method_name == "adams") method = LinkageMethod::adams;
     else if (method_name != "bdf") {
-      std::fprintf(stderr, "fourbar: --method %s: use bdf, esdirk4, esdirk5 or erk\n", method_name.c_str());
+      std::fprintf(stderr, "fourbar: --method %s: use bdf, esdirk4, esdirk5, erk or adams\n", method_name.c_str());
       return 2;
     }
     args.erase(args.begin() + 1, args.begin() + 3);

@@ -10,7 +10,7 @@
 // 4 + 4 modes, clearance in all three joints, 10 turns (the energy
 // check over 10 turns).
 //
-//   stress_linkage [--quick] [--modes N] [--joints B|AB|ABO4] [--csv FILE]
+//   stress_linkage [--quick] [--modes N] [--joints B|AB|ABO4] [--csv FILE] [--method bdf|adams]
 //   stress_linkage --long   (the 10-turn case only)
 //   (--joints: only that clearance set)
 
@@ -31,6 +31,7 @@ using linkage_stress::Case;
 int main(int argc, char** argv) {
   bool quick = false, long_only = false;
   int modes = 2;
+  LinkageMethod method = LinkageMethod::bdf;
   std::string csv, only_joints;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
@@ -38,8 +39,10 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--modes") && i + 1 < argc) modes = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
     else if (!std::strcmp(argv[i], "--joints") && i + 1 < argc) only_joints = argv[++i];
+    else if (!std::strcmp(argv[i], "--method") && i + 1 < argc && !std::strcmp(argv[i + 1], "adams")) method = LinkageMethod::adams, ++i;
+    else if (!std::strcmp(argv[i], "--method") && i + 1 < argc && !std::strcmp(argv[i + 1], "bdf")) method = LinkageMethod::bdf, ++i;
     else {
-      std::fprintf(stderr, "usage: stress_linkage [--quick | --long] [--modes N] [--joints B|AB|ABO4] [--csv FILE]\n");
+      std::fprintf(stderr, "usage: stress_linkage [--quick | --long] [--modes N] [--joints B|AB|ABO4] [--csv FILE] [--method bdf|adams]\n");
       return 2;
     }
   }
@@ -76,6 +79,7 @@ int main(int argc, char** argv) {
                 c.friction = mu;
                 c.rpm = rpm;
                 c.modes = m;
+                c.method = method;
                 const linkage_stress::Result r = linkage_stress::run_case(rig, c);
                 ++total;
                 failed += r.ok ? 0 : 1;
@@ -108,6 +112,7 @@ int main(int argc, char** argv) {
     longrun.modes = 4;
     longrun.turns = 10;
     longrun.friction = 0.1;
+    longrun.method = method;
     const linkage_stress::Result r = linkage_stress::run_case(rig, longrun);
     std::printf("10 turns, %s: %s, energy residual %.2e of the scale, %zu contacts, %.1f s wall\n",
                 longrun.label().c_str(), r.ok ? "ok" : r.failure.c_str(), r.energy_residual, r.contacts,

@@ -81,7 +81,7 @@ int linkage_jacobian(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user,
 
 struct LinkageIntegrator::Cvode {
   LinkageMethod method = LinkageMethod::bdf;
-  bool ark() const { return method != LinkageMethod::bdf; }
+  bool ark() const { return method != LinkageMethod::bdf && method != LinkageMethod::adams; }
   SUNContext ctx = nullptr;
   N_Vector y = nullptr, dky = nullptr;
   SUNMatrix jac = nullptr;
@@ -104,8 +104,8 @@ LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::si
   c.dky = new_serial_vector(n, c.ctx);
   N_VConst(0.0, c.y);
   if (!c.ark()) {
-    c.mem = CVodeCreate(CV_BDF, c.ctx);
-    if (!c.mem) throw RunError("CVODE (BDF, linkage): cannot create the integrator");
+    c.mem = CVodeCreate(method == LinkageMethod::adams ? CV_ADAMS : CV_BDF, c.ctx);
+    if (!c.mem) throw RunError("CVODE (linkage): cannot create the integrator");
   }
   c.jac = new_dense_matrix(n, n, c.ctx);
   c.ls = second_order_linear_solver(c.ctx, size, coupled / 2);
@@ -204,7 +204,7 @@ LinkageIntegrator::Step LinkageIntegrator::step(double t_stop) {
   }
   if (pending) std::rethrow_exception(std::exchange(pending, nullptr));
   if (flag < 0)
-    throw RunError(std::string(c.ark() ? "ARKODE" : "CVODE (BDF)") + " could not advance the linkage model past t = " + std::to_string(t_) + " s (flag " +
+    throw RunError(std::string(c.ark() ? "ARKODE" : "CVODE") + " could not advance the linkage model past t = " + std::to_string(t_) + " s (flag " +
                    std::to_string(flag) + "); try a looser [linkage] tolerance or a lower contact stiffness");
   Step s;
   s.start = t_;

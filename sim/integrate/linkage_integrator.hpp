@@ -25,8 +25,9 @@ class LinkageOde {
 /// The stepping method: CVODE's variable-order BDF (1–5), or ARKODE's ARKStep
 /// with an L-stable ESDIRK table (order 4: ESDIRK436L2SA_6_3_4, order 5:
 /// ESDIRK547L2SA2_7_4_5; Newton with the same dense Jacobian) or an explicit
-/// Verner 8-5-6 (order 6, no Jacobian).
-enum class LinkageMethod { bdf, esdirk4, esdirk5, erk };
+/// Verner 8-5-6 (order 6, no Jacobian), or CVODE's variable-order Adams–Moulton
+/// (1–12) with the same Newton iteration and linear solver as BDF.
+enum class LinkageMethod { bdf, esdirk4, esdirk5, erk, adams };
 
 class LinkageIntegrator {
  public:

@@ -84,7 +84,8 @@ TEST(LinkageIntegrator, EveryMethodFollowsADampedOscillatorAndItsLosses) {
   const double t_end = 0.01, wd = OscillatorOde::w * std::sqrt(1 - OscillatorOde::zeta * OscillatorOde::zeta);
   const double decay = std::exp(-OscillatorOde::zeta * OscillatorOde::w * t_end);
   const double x = decay * (std::cos(wd * t_end) + OscillatorOde::zeta * OscillatorOde::w / wd * std::sin(wd * t_end));
-  for (LinkageMethod m : {LinkageMethod::bdf, LinkageMethod::esdirk4, LinkageMethod::esdirk5, LinkageMethod::erk}) {
+  for (LinkageMethod m : {LinkageMethod::bdf, LinkageMethod::esdirk4, LinkageMethod::esdirk5, LinkageMethod::erk,
+                          LinkageMethod::adams}) {
     OscillatorOde ode;
     LinkageIntegrator integ(1e-11, 3, 2, 0, m);
     integ.reset(ode, 0.0, {1.0, 0.0, 0.0});

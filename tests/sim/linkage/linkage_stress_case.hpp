@@ -46,6 +46,7 @@ struct Case {
   int modes = 2;  ///< per elastic link; 0 = rigid links
   int turns = 1;
   double tolerance = 1e-10;
+  LinkageMethod method = LinkageMethod::bdf;
 
   std::string label() const {
     char buf[256];
@@ -79,6 +80,7 @@ inline Result run_case(const Rig& rig, const Case& c) {
     s.law = {1e10, 1.5, DampingLaw::calibrated, c.restitution};
     s.friction = {c.friction, 1e-4, 1e-3};
     s.tolerance = c.tolerance;
+    s.method = c.method;
     s.elastic = {false, c.modes > 0, c.modes > 0};
     s.elastic_modes = c.modes;
     const LinkageModel model = build_linkage(rig, s);
