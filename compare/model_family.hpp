@@ -55,6 +55,10 @@ inline constexpr double kMinProminence = 6.0;
 /// frequency (or its band, whichever is lower): of a mode rung by impulses
 /// at ζ = 0.02, 3.4 % of its energy up to 1.6 f lies below 0.75 f.
 inline constexpr double kCutShareOfPeak = 0.75;
+/// Windows also kWindowBands × 2, 4, … up to × this (their gap to the
+/// neighbours and the neighbours' reach scaled alike): a lower-Q resonance
+/// spans more bands than the narrowest window.
+inline constexpr std::size_t kWindowScales = 4;
 /// The neighbours: this many bands on each side beyond the window's direct neighbours.
 inline constexpr std::size_t kReferenceBands = 4;
 /// The check starts at this crank order: below it lies the rigid mechanism's
