@@ -5,6 +5,7 @@
 
 #include "common/units.hpp"
 #include "compare/matched_theory.hpp"
+#include "fit/linkage_statistics.hpp"
 #include "fit/session_fit.hpp"
 
 namespace fourbar {
@@ -28,6 +29,16 @@ void widen_for_model_error(ParameterEstimate& p, double delta, double scale, dou
   p.high = std::min(box_high, std::max({high, p.value, p.high}));
 }
 
+ModelFamilyCheck family_check_of(const RecordingTarget& t, const std::vector<double>& measured_turns, MatchedTheory theory,
+                                 const ModelFamilySettings& settings) {
+  apply_pass_band(theory, t.filter);
+  const LinkQuantity q = t.measured[static_cast<std::size_t>(FitLink::coupler)] ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
+  const TheorySeries& s = theory.series[index_of(q)];
+  const bool has_top = t.filter.band == BandType::lowpass || t.filter.band == BandType::bandpass;
+  return check_model_family(measured_turns, s.clearance_revolutions, s.nominal, std::abs(t.crank_speed_rad_s) / units::kTwoPi,
+                            has_top ? t.filter.high_hz : 0.0, settings);
+}
+
 ModelFamilyCheck family_check_at(const RecordingTarget& t, const std::vector<double>& measured_turns,
                                  const ContactParameters& p, int warmup, int turns, const ModelFamilySettings& settings) {
   TheorySettings ts;
@@ -36,13 +47,14 @@ ModelFamilyCheck family_check_at(const RecordingTarget& t, const std::vector<dou
   ts.friction_coefficient = p.friction_coefficient;
   ts.warmup_revolutions = warmup;
   ts.averaged_revolutions = turns;
-  MatchedTheory theory = simulate_matched_theory(*t.rig, t.clearance_m, t.crank_speed_rad_s, t.grid, ts);
-  apply_pass_band(theory, t.filter);
-  const LinkQuantity q = t.measured[static_cast<std::size_t>(FitLink::coupler)] ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
-  const TheorySeries& s = theory.series[index_of(q)];
-  const bool has_top = t.filter.band == BandType::lowpass || t.filter.band == BandType::bandpass;
-  return check_model_family(measured_turns, s.clearance_revolutions, s.nominal, std::abs(t.crank_speed_rad_s) / units::kTwoPi,
-                            has_top ? t.filter.high_hz : 0.0, settings);
+  return family_check_of(t, measured_turns, simulate_matched_theory(*t.rig, t.clearance_m, t.crank_speed_rad_s, t.grid, ts),
+                         settings);
+}
+
+ModelFamilyCheck elastic_family_check_at(const RecordingTarget& t, const std::vector<double>& measured_turns,
+                                         const ContactParameters& p, int warmup, int turns, double tolerance,
+                                         const FitModel& model, const ModelFamilySettings& settings) {
+  return family_check_of(t, measured_turns, simulate_linkage_turns(t, p, warmup, turns, tolerance, model, t.grid), settings);
 }
 
 }  // namespace fourbar

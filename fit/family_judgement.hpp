@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "compare/model_family.hpp"
+#include "fit/fit_model.hpp"
 #include "fit/recording_target.hpp"
 
 namespace fourbar {
@@ -28,6 +29,10 @@ struct FamilyJudgement {
   bool rejected = false;
   std::vector<std::string> reasons;
   double error_scale = 1;  ///< √max(1, χ²/ν): the statistics' misfit in standard errors (RMS)
+  /// The spectral check (energy the model lacks): the model it compared with
+  /// ("three-mode" or "elastic", empty: not run) and the recordings it checked.
+  std::string spectral_model;
+  int spectral_recordings = 0;
 };
 
 /// Widens `p`'s interval from its raw profile (profile_at, profile_chi2)
@@ -35,11 +40,25 @@ struct FamilyJudgement {
 /// grid point on each side (within [box_low, box_high]); not identifiable.
 void widen_for_model_error(ParameterEstimate& p, double delta, double scale, double box_low, double box_high);
 
+/// The model-family check of one recording against `theory` (the model's α
+/// turns on the target's grid, before the pass band): the target's pass
+/// band, then check_model_family on α3 (else α4) against `measured_turns`.
+ModelFamilyCheck family_check_of(const RecordingTarget& target, const std::vector<double>& measured_turns,
+                                 MatchedTheory theory, const ModelFamilySettings& settings);
+
 /// The model-family check of one recording at contact parameters `p`: the
 /// matched theory (compare/matched_theory.hpp, `warmup` + `turns` turns) at
 /// the target's operating point through its pass band, against
 /// `measured_turns` (α3, else α4: turns × N on the target's grid).
 ModelFamilyCheck family_check_at(const RecordingTarget& target, const std::vector<double>& measured_turns,
                                  const ContactParameters& p, int warmup, int turns, const ModelFamilySettings& settings);
+
+/// The same check against the elastic-link model the fit used (`--model
+/// elastic`: fit/linkage_statistics.hpp, its modes, contact stiffness and
+/// integrator `tolerance`): energy the measurement holds that even the
+/// ringing links do not give rejects the family.
+ModelFamilyCheck elastic_family_check_at(const RecordingTarget& target, const std::vector<double>& measured_turns,
+                                         const ContactParameters& p, int warmup, int turns, double tolerance,
+                                         const FitModel& model, const ModelFamilySettings& settings);
 
 }  // namespace fourbar

@@ -156,6 +156,9 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
   j["model_family"] = {{"verdict", f.model_family.rejected ? "rejected" : "not rejected"},
                        {"reasons", f.model_family.reasons},
                        {"error_scale", f.model_family.error_scale}};
+  if (!f.model_family.spectral_model.empty())
+    j["model_family"]["spectral_check"] = {{"model", f.model_family.spectral_model},
+                                           {"recordings", f.model_family.spectral_recordings}};
   return j;
 }
 

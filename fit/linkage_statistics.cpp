@@ -96,14 +96,12 @@ void attach_sensors(RecordingTarget& t, const std::filesystem::path& manifest_fi
   }
 }
 
-SimulatedStatistics simulate_linkage_statistics(const RecordingTarget& t, const ContactParameters& p, int warmup,
-                                                int turns, double tolerance, const FitModel& model) {
+MatchedTheory simulate_linkage_turns(const RecordingTarget& t, const ContactParameters& p, int warmup, int turns,
+                                    double tolerance, const FitModel& model, const CrankGrid& grid) {
   const Rig& rig = *t.rig;
   const LinkageModel linkage = build_linkage(rig, elastic_spec(rig, model, t.clearance_m, p, tolerance));
-  // The fine grid (the band's, else the analysis grid) over the kept turns.
   LinkageTheoryRun run;
-  run.grid = t.grid;
-  if (t.band_filter) run.grid.grid_points_per_rev = t.band_grid_points_per_rev;
+  run.grid = grid;
   run.crank_speed_rad_s = t.crank_speed_rad_s;
   run.clearance_m = t.clearance_m;
   // α as cell means, as the three-mode model's statistics: point values
@@ -118,7 +116,15 @@ SimulatedStatistics simulate_linkage_statistics(const RecordingTarget& t, const 
       if (!t.sensor[i]) throw RunError("fit: " + t.name + ": no sensor attached for the elastic model (internal error)");
       run.sensor[i] = t.sensor[i];
     }
-  return statistics_of_theory(t, simulate_linkage_theory(linkage, run), turns);
+  return simulate_linkage_theory(linkage, run);
+}
+
+SimulatedStatistics simulate_linkage_statistics(const RecordingTarget& t, const ContactParameters& p, int warmup,
+                                                int turns, double tolerance, const FitModel& model) {
+  // The fine grid (the band's, else the analysis grid) over the kept turns.
+  CrankGrid grid = t.grid;
+  if (t.band_filter) grid.grid_points_per_rev = t.band_grid_points_per_rev;
+  return statistics_of_theory(t, simulate_linkage_turns(t, p, warmup, turns, tolerance, model, grid), turns);
 }
 
 }  // namespace fourbar

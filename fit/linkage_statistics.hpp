@@ -33,6 +33,13 @@ void check_elastic_fit_rig(const Rig& rig, const FitModel& model, double clearan
 /// tangential accelerometer (the channel analyze used), resolved on the rig.
 void attach_sensors(RecordingTarget& target, const std::filesystem::path& manifest_file);
 
+/// The elastic model's α over `turns` kept turns after `warmup` at `p`, on
+/// `grid` (the target's analysis grid or its band's finer one), before any
+/// pass band: what simulate_linkage_statistics and the model-family check
+/// (family_judgement.hpp) start from.
+MatchedTheory simulate_linkage_turns(const RecordingTarget& target, const ContactParameters& p, int warmup, int turns,
+                                    double tolerance, const FitModel& model, const CrankGrid& grid);
+
 /// The elastic model's statistics at `p` (see above).
 SimulatedStatistics simulate_linkage_statistics(const RecordingTarget& target, const ContactParameters& p, int warmup,
                                                 int turns, double tolerance, const FitModel& model);

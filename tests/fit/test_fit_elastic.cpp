@@ -124,9 +124,25 @@ TEST(FitElastic, RunsAndWritesTheModelItFitted) {
   EXPECT_GT(j["chi2"].get<double>(), 0.0);
   EXPECT_LT(j["chi2"].get<double>(), 1e11) << "a simulation failed: " << j.dump(1);
   EXPECT_GT(j["simulations"].get<int>(), 20);
+  // The spectral model-family check ran against the elastic model itself
+  // (fit/family_judgement.hpp elastic_family_check_at), not the three-mode one.
+  ASSERT_TRUE(j["model_family"].contains("spectral_check")) << j["model_family"].dump(1);
+  EXPECT_EQ(j["model_family"]["spectral_check"]["model"], "elastic");
+  EXPECT_EQ(j["model_family"]["spectral_check"]["recordings"], 1);
+  for (const auto& n : j["notes"]) EXPECT_FALSE(has(n.get<std::string>(), "not run with --model elastic")) << n;
+
+  // The three-mode fit of the same session checks against the three-mode
+  // model and says that its check does not see the rig's links ringing.
+  const auto out3 = dir.path() / "fit3";
+  const auto r3 = testing::run_fourbar("fit " + (dir.path() / "session").string() + " --smooth --turns 8 --warmup 2 -q --out " +
+                                       out3.string());
+  ASSERT_EQ(r3.status, 0) << r3.out << r3.err;
+  std::ifstream in3(out3 / "fit.json");
+  const nlohmann::json j3 = nlohmann::json::parse(in3);
+  EXPECT_EQ(j3["model_family"]["spectral_check"]["model"], "three-mode") << j3["model_family"].dump(1);
   bool noted = false;
-  for (const auto& n : j["notes"]) noted = noted || has(n.get<std::string>(), "not run with --model elastic");
-  EXPECT_TRUE(noted) << j.dump(1);
+  for (const auto& n : j3["notes"]) noted = noted || has(n.get<std::string>(), "not an elastic link's broad ringing");
+  EXPECT_TRUE(noted) << j3["notes"].dump(1);
 }
 
 }  // namespace
