@@ -52,4 +52,11 @@ AnalysisChannels analysis_channels(const Manifest& manifest) {
   return out;
 }
 
+std::array<std::optional<ResolvedMount>, 2> tangential_mounts(const Rig& rig, const std::filesystem::path& manifest_file) {
+  std::array<std::optional<ResolvedMount>, 2> out;
+  for (const LinkChannels& l : analysis_channels(load_manifest(manifest_file)).links)
+    if (l.tangential) out[l.link == SensedLink::coupler ? 0 : 1] = resolve_mount(rig, l.tangential->mount);
+  return out;
+}
+
 }  // namespace fourbar

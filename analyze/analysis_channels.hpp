@@ -2,6 +2,8 @@
 // Which of the manifest's accelerometer channels analyze uses, and how each
 // is mounted: the first channel of each role, coupler first, then rocker.
 
+#include <array>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,5 +31,10 @@ struct AnalysisChannels {
 /// has no coupler_tangential channel). Mounts in SI, axis sign +1 (acquire
 /// applies the manifest's sign).
 AnalysisChannels analysis_channels(const Manifest& manifest);
+
+/// The tangential accelerometers analyze uses, resolved on `rig`: the
+/// coupler's [0] and the rocker's [1] (absent: no such channel), from the
+/// manifest file (the report's and the fit's linkage references read them there).
+std::array<std::optional<ResolvedMount>, 2> tangential_mounts(const Rig& rig, const std::filesystem::path& manifest_file);
 
 }  // namespace fourbar

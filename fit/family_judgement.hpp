@@ -40,6 +40,9 @@ struct FamilyJudgement {
 /// grid point on each side (within [box_low, box_high]); not identifiable.
 void widen_for_model_error(ParameterEstimate& p, double delta, double scale, double box_low, double box_high);
 
+/// The elastic-link reference's restitution in the fit: the fitted e, at least this.
+inline constexpr double kFitReferenceMinRestitution = 0.5;
+
 /// The model-family check of one recording against `theory` (the model's α
 /// turns on the target's grid, before the pass band): the target's pass
 /// band, then check_model_family on α3 (else α4) against `measured_turns`.
@@ -50,8 +53,14 @@ ModelFamilyCheck family_check_of(const RecordingTarget& target, const std::vecto
 /// matched theory (compare/matched_theory.hpp, `warmup` + `turns` turns) at
 /// the target's operating point through its pass band, against
 /// `measured_turns` (α3, else α4: turns × N on the target's grid).
+/// When the rig gives the links' modes, also the link-vibration check
+/// (compare/link_vibration.hpp) against the elastic-link reference
+/// (compare/elastic_reference.hpp, the target's sensors: attach_sensors) at
+/// the same e; when that reference cannot run, why goes to
+/// `vibration_not_checked`.
 ModelFamilyCheck family_check_at(const RecordingTarget& target, const std::vector<double>& measured_turns,
-                                 const ContactParameters& p, int warmup, int turns, const ModelFamilySettings& settings);
+                                 const ContactParameters& p, int warmup, int turns, const ModelFamilySettings& settings,
+                                 std::string* vibration_not_checked = nullptr);
 
 /// The same check against the elastic-link model the fit used (`--model
 /// elastic`: fit/linkage_statistics.hpp, its modes, contact stiffness and

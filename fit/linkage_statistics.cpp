@@ -88,12 +88,9 @@ void check_elastic_fit_rig(const Rig& rig, const FitModel& model, double clearan
 }
 
 void attach_sensors(RecordingTarget& t, const std::filesystem::path& manifest_file) {
-  const AnalysisChannels channels = analysis_channels(load_manifest(manifest_file));
-  for (const LinkChannels& l : channels.links) {
-    if (!l.tangential) continue;
-    const std::size_t i = l.link == SensedLink::coupler ? 0 : 1;
-    if (t.measured[i]) t.sensor[i] = resolve_mount(*t.rig, l.tangential->mount);
-  }
+  const auto mounts = tangential_mounts(*t.rig, manifest_file);
+  for (std::size_t i = 0; i < 2; ++i)
+    if (t.measured[i]) t.sensor[i] = mounts[i];
 }
 
 MatchedTheory simulate_linkage_turns(const RecordingTarget& t, const ContactParameters& p, int warmup, int turns,

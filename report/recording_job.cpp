@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analyze/analysis_channels.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "compare/elastic_reference.hpp"
 #include "compare/link_vibration.hpp"
 #include "fit/response_statistics.hpp"
 #include "report/comparison_record.hpp"
-#include "report/elastic_reference.hpp"
 #include "report/verdict_family.hpp"
 #include "report/setup_check_record.hpp"
 #include "report/theory_omega.hpp"
@@ -196,7 +197,15 @@ json process_recording(const std::filesystem::path& recording, const AnalyzeOpti
       // links' vibration lies (compare/link_vibration.hpp).
       json vibration;
       if (check.checked && (a.rig->coupler_elastic || a.rig->rocker_elastic)) {
-        const ElasticReference ref = elastic_reference(a, measured.grid, settings, family, check.checked_up_to_hz);
+        ElasticReferenceRun where;
+        where.rig = a.rig.get();
+        where.clearance_m = a.clearance_m;
+        where.crank_speed_rad_s = a.mean_crank_speed_rad_s;
+        where.grid = measured.grid;
+        where.filter = a.filter;
+        where.name = a.recording.filename().string();
+        where.sensor = tangential_mounts(*a.rig, a.manifest_file);
+        const ElasticReference ref = elastic_reference(where, settings, family, check.checked_up_to_hz);
         if (ref.theory) {
           const LinkVibrationCheck lv = check_link_vibration(
               check, link.alpha_grid, ts.clearance_revolutions, ref.rigid_links->series[index_of(q)].clearance_revolutions,

@@ -10,12 +10,15 @@
 // per link those below kReferenceModeShare × the checked range's top (at
 // least one).
 
+#include <array>
 #include <optional>
 #include <string>
 
-#include "analyze/pipeline.hpp"
+#include "analyze/filter_design.hpp"
+#include "analyze/sensor_mount.hpp"
 #include "compare/matched_theory.hpp"
 #include "compare/model_family.hpp"
+#include "mechanism/rig.hpp"
 
 namespace fourbar {
 
@@ -40,8 +43,20 @@ struct ElasticReference {
   std::string description;              ///< links, modes (Hz), contact stiffness
 };
 
-/// `grid`: the measurement's; `top_hz`: the family check's checked range.
-ElasticReference elastic_reference(const RecordingAnalysis& a, const CrankGrid& grid, const TheorySettings& settings,
+/// Where the reference runs: the recording's operating point, grid, pass
+/// band and tangential accelerometers (as the report and the fit know them).
+struct ElasticReferenceRun {
+  const Rig* rig = nullptr;
+  double clearance_m = 0;
+  double crank_speed_rad_s = 0;
+  CrankGrid grid;                                        ///< the measurement's
+  FilterSpec filter;                                     ///< the α pass band as analysed
+  std::array<std::optional<ResolvedMount>, 2> sensor;  ///< coupler [0], rocker [1] tangential
+  std::string name;                                      ///< the recording's file name, for messages
+};
+
+/// `top_hz`: the family check's checked range.
+ElasticReference elastic_reference(const ElasticReferenceRun& run, const TheorySettings& settings,
                                    const ModelFamilySettings& family, double top_hz);
 
 }  // namespace fourbar

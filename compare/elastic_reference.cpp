@@ -1,10 +1,8 @@
-#include "report/elastic_reference.hpp"
+#include "compare/elastic_reference.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "acquire/manifest.hpp"
-#include "analyze/analysis_channels.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/units.hpp"
@@ -25,7 +23,7 @@ std::string modes_text(const ElasticLink& link) {
 
 }  // namespace
 
-ElasticReference elastic_reference(const RecordingAnalysis& a, const CrankGrid& grid, const TheorySettings& settings,
+ElasticReference elastic_reference(const ElasticReferenceRun& a, const TheorySettings& settings,
                                    const ModelFamilySettings& family, double top_hz) {
   ElasticReference out;
   const Rig& rig = *a.rig;
@@ -69,16 +67,14 @@ ElasticReference elastic_reference(const RecordingAnalysis& a, const CrankGrid& 
     spec.elastic_modes = modes;
     const LinkageModel linkage = build_linkage(rig, spec);
     LinkageTheoryRun run;
-    run.grid = grid;
-    run.crank_speed_rad_s = a.mean_crank_speed_rad_s;
+    run.grid = a.grid;
+    run.crank_speed_rad_s = a.crank_speed_rad_s;
     run.clearance_m = a.clearance_m;
     run.warmup_turns = std::max(settings.warmup_revolutions, 1);  // cell means need one
     run.turns = settings.averaged_revolutions;
-    run.name = a.recording.filename().string() + ": the elastic-link reference";
+    run.name = a.name + ": the elastic-link reference";
     run.sub_samples = kCellMeanSubSamples;  // α as cell means, as the three-mode theory's
-    const AnalysisChannels channels = analysis_channels(load_manifest(a.manifest_file));
-    for (const LinkChannels& l : channels.links)
-      if (l.tangential) run.sensor[l.link == SensedLink::coupler ? 0 : 1] = resolve_mount(rig, l.tangential->mount);
+    run.sensor = a.sensor;
     out.theory = simulate_linkage_theory(linkage, run);
     out.theory->settings = settings;
     apply_pass_band(*out.theory, a.filter);
