@@ -21,12 +21,12 @@
 namespace fourbar {
 namespace {
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 /// 12 turns at 350 rpm, 0.254 mm, 12.8 kHz, 30 dB, mid-span tangential
 /// sensors on data/rigs/thesis_elastic.toml: MOTION is the scene's model
 /// line and its clearance table.
-void write_session(testing::TempDir& dir, const std::string& motion, const std::string& session_toml) {
+void write_vibration_session(testing::TempDir& dir, const std::string& motion, const std::string& session_toml) {
   dir.write("make/rec.toml", std::string("rig = \"" FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml\"\n") +
                                  R"(crank_speed_rpm = 350
 outputs = ["alpha3_rad_s2"]
@@ -61,7 +61,7 @@ contact = "smooth"
 const std::string kPrior = "[theory]\nrestitution = 0.9\ncontact = \"smooth\"\n";
 const std::string kStiffness = "[model_family]\ncontact_stiffness_N_per_m_n = 1e10\n";
 
-nlohmann::json fit(const testing::TempDir& dir) {
+nlohmann::json fit_json_of(const testing::TempDir& dir) {
   const auto out = dir.path() / "fit";
   const auto r = testing::run_fourbar("fit " + (dir.path() / "session").string() + " --smooth --jobs 1 -q --out " + out.string());
   EXPECT_EQ(r.status, 0) << r.out << r.err;
@@ -73,29 +73,29 @@ std::string reasons(const nlohmann::json& j) { return j["model_family"]["reasons
 
 TEST(FitLinkVibration, RingingLinksRejectTheThreeModeFamily) {
   testing::TempDir dir;
-  write_session(dir, kRinging, kPrior + kStiffness);
-  const nlohmann::json j = fit(dir);
+  write_vibration_session(dir, kRinging, kPrior + kStiffness);
+  const nlohmann::json j = fit_json_of(dir);
   EXPECT_EQ(j["model_family"]["verdict"], "rejected") << j["model_family"].dump(1);
-  EXPECT_TRUE(has(reasons(j), "link vibration")) << reasons(j);
+  EXPECT_TRUE(mentions(reasons(j), "link vibration")) << reasons(j);
   EXPECT_FALSE(j["parameters"]["restitution"]["identifiable"].get<bool>());
 }
 
 TEST(FitLinkVibration, RigidLinksOnTheSameRigAreNotCalledVibrating) {
   testing::TempDir dir;
-  write_session(dir, kRigid, kPrior + kStiffness);
-  const nlohmann::json j = fit(dir);
-  EXPECT_FALSE(has(reasons(j), "link vibration")) << reasons(j);
-  for (const auto& n : j["notes"]) EXPECT_FALSE(has(n.get<std::string>(), "vibration was not checked")) << n;
+  write_vibration_session(dir, kRigid, kPrior + kStiffness);
+  const nlohmann::json j = fit_json_of(dir);
+  EXPECT_FALSE(mentions(reasons(j), "link vibration")) << reasons(j);
+  for (const auto& n : j["notes"]) EXPECT_FALSE(mentions(n.get<std::string>(), "vibration was not checked")) << n;
 }
 
 TEST(FitLinkVibration, WithoutAStiffnessTheFitSaysTheVibrationWasNotChecked) {
   testing::TempDir dir;
-  write_session(dir, kRinging, kPrior);
-  const nlohmann::json j = fit(dir);
+  write_vibration_session(dir, kRinging, kPrior);
+  const nlohmann::json j = fit_json_of(dir);
   bool noted = false;
   for (const auto& n : j["notes"])
-    noted = noted || (has(n.get<std::string>(), "vibration was not checked") &&
-                      has(n.get<std::string>(), "[model_family] contact_stiffness_N_per_m_n"));
+    noted = noted || (mentions(n.get<std::string>(), "vibration was not checked") &&
+                      mentions(n.get<std::string>(), "[model_family] contact_stiffness_N_per_m_n"));
   EXPECT_TRUE(noted) << j["notes"].dump(1);
 }
 

@@ -31,7 +31,7 @@ DEFAULT_RIG = os.path.normpath(os.path.join(HERE, "..", "..", "data", "rigs", "t
 def default_sensors(args):
     """Where this generator's lab put its sensors (not the sample session's)."""
     common = dict(sensitivity_mV_per_m_s2=args.sensitivity, gain=args.gain,
-                  resonance_hz=args.sensor_resonance_hz)
+                  resonance_hz=args.sensor_resonance_hz, resonance_q=args.sensor_resonance_q)
     return [
         Sensor("cpl_t", "coupler_tangential", 0.280, 0.015, 1, highpass_hz=1.0, **common),
         Sensor("cpl_n", "coupler_normal", 0.280, 0.015, -1, highpass_hz=1.0, **common),
@@ -182,7 +182,9 @@ def parse_args(argv):
     p.add_argument("--hum-mV", type=float, default=1.5)
     p.add_argument("--sensitivity", type=float, default=1.0, help="mV per m/s² (B&K 4371 + 2635 at 1 mV/pC)")
     p.add_argument("--gain", type=float, default=1.0)
-    p.add_argument("--sensor-resonance-hz", type=float, default=0.0)
+    p.add_argument("--sensor-resonance-hz", type=float, default=0.0,
+                   help="every accelerometer's mounted resonance (0: none); not written in the manifests")
+    p.add_argument("--sensor-resonance-q", type=float, default=30.0, help="its quality factor")
     p.add_argument("--anti-alias", default="sigma-delta", help='"sigma-delta" or "butterworth:ORDER:CORNER_HZ"')
     p.add_argument("--skew-us", type=float, default=0.0, help="multiplexed ADC: channel k sampled k·skew late")
     p.add_argument("--wander-pct", type=float, default=0.3)
