@@ -31,11 +31,19 @@ void widen_for_model_error(ParameterEstimate& p, double delta, double scale, dou
   p.high = std::min(box_high, std::max({high, p.value, p.high}));
 }
 
-ModelFamilyCheck family_check_of(const RecordingTarget& t, const std::vector<double>& measured_turns, MatchedTheory theory,
+namespace {
+
+/// α3, else α4 (no coupler channel): the quantity the check compares.
+LinkQuantity checked_quantity(const RecordingTarget& t) {
+  return t.measured[static_cast<std::size_t>(FitLink::coupler)] ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
+}
+
+}  // namespace
+
+ModelFamilyCheck family_check_of(const RecordingTarget& t, const std::vector<double>& measured_turns, MatchedTheory& theory,
                                  const ModelFamilySettings& settings) {
   apply_pass_band(theory, t.filter);
-  const LinkQuantity q = t.measured[static_cast<std::size_t>(FitLink::coupler)] ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
-  const TheorySeries& s = theory.series[index_of(q)];
+  const TheorySeries& s = theory.series[index_of(checked_quantity(t))];
   const bool has_top = t.filter.band == BandType::lowpass || t.filter.band == BandType::bandpass;
   return check_model_family(measured_turns, s.clearance_revolutions, s.nominal, std::abs(t.crank_speed_rad_s) / units::kTwoPi,
                             has_top ? t.filter.high_hz : 0.0, settings);
@@ -76,9 +84,8 @@ ModelFamilyCheck family_check_at(const RecordingTarget& t, const std::vector<dou
     if (vibration_not_checked) *vibration_not_checked = ref.not_run;
     return c;
   }
-  apply_pass_band(theory, t.filter);
-  const LinkQuantity q = t.measured[static_cast<std::size_t>(FitLink::coupler)] ? LinkQuantity::alpha3 : LinkQuantity::alpha4;
-  const TheorySeries& s = theory.series[index_of(q)];
+  const LinkQuantity q = checked_quantity(t);
+  const TheorySeries& s = theory.series[index_of(q)];  // (through the pass band: family_check_of)
   (void)check_link_vibration(c, measured_turns, s.clearance_revolutions,
                              ref.rigid_links->series[index_of(q)].clearance_revolutions,
                              ref.theory->series[index_of(q)].clearance_revolutions, s.nominal);
@@ -88,7 +95,8 @@ ModelFamilyCheck family_check_at(const RecordingTarget& t, const std::vector<dou
 ModelFamilyCheck elastic_family_check_at(const RecordingTarget& t, const std::vector<double>& measured_turns,
                                          const ContactParameters& p, int warmup, int turns, double tolerance,
                                          const FitModel& model, const ModelFamilySettings& settings) {
-  return family_check_of(t, measured_turns, simulate_linkage_turns(t, p, warmup, turns, tolerance, model, t.grid), settings);
+  MatchedTheory theory = simulate_linkage_turns(t, p, warmup, turns, tolerance, model, t.grid);
+  return family_check_of(t, measured_turns, theory, settings);
 }
 
 }  // namespace fourbar

@@ -44,10 +44,10 @@ void widen_for_model_error(ParameterEstimate& p, double delta, double scale, dou
 inline constexpr double kFitReferenceMinRestitution = 0.5;
 
 /// The model-family check of one recording against `theory` (the model's α
-/// turns on the target's grid, before the pass band): the target's pass
-/// band, then check_model_family on α3 (else α4) against `measured_turns`.
+/// turns on the target's grid): the target's pass band applied to `theory`
+/// in place, then check_model_family on α3 (else α4) against `measured_turns`.
 ModelFamilyCheck family_check_of(const RecordingTarget& target, const std::vector<double>& measured_turns,
-                                 MatchedTheory theory, const ModelFamilySettings& settings);
+                                 MatchedTheory& theory, const ModelFamilySettings& settings);
 
 /// The model-family check of one recording at contact parameters `p`: the
 /// matched theory (compare/matched_theory.hpp, `warmup` + `turns` turns) at
