@@ -191,7 +191,11 @@ def parse_args(argv):
     p.add_argument("--wander-period-s", type=float, default=2.7)
     p.add_argument("--pulse-angle-deg", type=float, default=12.0)
     p.add_argument("--seed", type=int, default=1)
-    return p.parse_args(argv)
+    args = p.parse_args(argv)
+    if args.sensor_resonance_hz < 0 or args.sensor_resonance_q <= 0:
+        p.error("--sensor-resonance-hz must be 0 (none) or above and --sensor-resonance-q above 0 "
+                f"(got {args.sensor_resonance_hz} Hz, Q {args.sensor_resonance_q})")
+    return args
 
 
 def main(argv):
