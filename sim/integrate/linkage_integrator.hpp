@@ -31,8 +31,10 @@ enum class LinkageMethod { bdf, esdirk4, esdirk5, erk, adams };
 
 class LinkageIntegrator {
  public:
-  /// Scalar relative and absolute `tolerance` on the scaled state; `size`
-  /// components, the first `coupled` differenced for the Jacobian; `roots` witnesses.
+  /// Relative and absolute `tolerance` on the scaled state (absolute a
+  /// hundredth of it on the books after the first `coupled`, see the .cpp);
+  /// `size` components, the first `coupled` differenced for the Jacobian;
+  /// `roots` witnesses.
   LinkageIntegrator(double tolerance, std::size_t size, std::size_t coupled, std::size_t roots,
                     LinkageMethod method = LinkageMethod::bdf);
   ~LinkageIntegrator();
