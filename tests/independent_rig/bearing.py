@@ -22,6 +22,21 @@ F is the force of the bushing on the pin. The eccentricity d = B3 − C4
 χ is calibrated so that a free two-body collision under this law rebounds
 with exactly the restitution e (the dimensionless law x'' = −x^1.5·(1+χx')⁺
 has no other parameter, so one χ serves every mass and speed).
+
+Bending, two way (`beams`, make_session.py --vibration-coupling two-way):
+each link's pinned–free modes (links.py, mass-normalised φ_k, ω_k, ζ) move
+its free end across the link by w = Σ φ_k(L)·q_k, so the pin centre is
+B = A + L3·u3 + w3·n3 and the bushing centre C = O4 + L4·u4 + w4·n4
+(n = u turned +90°), and the contact force drives the modes it depends on:
+
+  q̈_k + 2ζω_k·q̇_k + ω_k²·q_k = φ_k(L)·(F·n3)   (coupler; the rocker: −F·n4)
+
+The contact's power F·(v_B − v_C) is then the rigid links' plus the modes'
+(the modes are orthogonal to the rigid rotation about the pin), so the
+energy the modes ring with is paid by the contact. Left out, as small
+against the contact's: the bending's rotary and centrifugal coupling with
+the link's rotation and the crank pin's acceleration driving the coupler's
+modes; the Euler equations keep the rigid moment arms.
 """
 from dataclasses import dataclass, field
 import math
@@ -114,8 +129,19 @@ class Stats:
 
 
 class ClearanceLinkage:
-    def __init__(self, rig: Rig, clearance_m: float, contact: Contact, crank: CrankMotion):
+    def __init__(self, rig: Rig, clearance_m: float, contact: Contact, crank: CrankMotion, beams=None):
+        """beams: None (rigid links) or (coupler, rocker) BeamModes driven two way."""
         self.rig, self.xi, self.c, self.crank = rig, clearance_m, contact, crank
+        self.beams = beams
+        if beams is None:
+            self.nc = self.nr = 0
+        else:
+            self.nc, self.nr = beams[0].count, beams[1].count
+            self.tip_c = beams[0].shape(beams[0].length_m)
+            self.tip_r = beams[1].shape(beams[1].length_m)
+            self.w_c = 2.0 * math.pi * beams[0].frequencies_hz()
+            self.w_r = 2.0 * math.pi * beams[1].frequencies_hz()
+        self.size = 6 + 2 * (self.nc + self.nr)
         self.K = contact.stiffness_N_m15 or hertz_stiffness(clearance_m)
         self.chi = damping_factor(contact.restitution)
         self.v0 = contact.v_floor_m_s
@@ -138,6 +164,18 @@ class ClearanceLinkage:
         vb = (-l2 * w2 * s2 - l3 * y[2] * s3, l2 * w2 * c2 + l3 * y[2] * c3)
         cc = (l1 + l4 * c4, l4 * s4)
         vc = (-l4 * y[3] * s4, l4 * y[3] * c4)
+        if self.nc:
+            # the free ends' deflection across the links, w·n, and its rate ẇ·n − w·θ̇·u
+            nc, nr = self.nc, self.nr
+            w3 = float(np.dot(self.tip_c, y[6:6 + nc]))
+            w3d = float(np.dot(self.tip_c, y[6 + nc:6 + 2 * nc]))
+            r0 = 6 + 2 * nc
+            w4 = float(np.dot(self.tip_r, y[r0:r0 + nr]))
+            w4d = float(np.dot(self.tip_r, y[r0 + nr:r0 + 2 * nr]))
+            b = (b[0] - w3 * s3, b[1] + w3 * c3)
+            vb = (vb[0] - w3d * s3 - w3 * y[2] * c3, vb[1] + w3d * c3 - w3 * y[2] * s3)
+            cc = (cc[0] - w4 * s4, cc[1] + w4 * c4)
+            vc = (vc[0] - w4d * s4 - w4 * y[3] * c4, vc[1] + w4d * c4 - w4 * y[3] * s4)
         a_a = (l2 * (-a2 * s2 - w2 * w2 * c2), l2 * (a2 * c2 - w2 * w2 * s2))
         return b, vb, cc, vc, a_a, (c3, s3, c4, s4)
 
@@ -170,7 +208,20 @@ class ClearanceLinkage:
         n3_a = -s3 * a_a[0] + c3 * a_a[1]
         t3 = -cp.mass_kg * cp.mass_centre_m * (n3_a + g * c3) + (px * fy - py * fx)
         t4 = -rk.mass_kg * g * rk.mass_centre_m * c4 - (qx * fy - qy * fx)
-        return [y[2], y[3], t3 / self.IA3, t4 / self.IO4, fx, fy]
+        if not self.nc:
+            return [y[2], y[3], t3 / self.IA3, t4 / self.IO4, fx, fy]
+        out = np.empty(self.size)
+        out[:6] = (y[2], y[3], t3 / self.IA3, t4 / self.IO4, fx, fy)
+        f3 = -s3 * fx + c3 * fy           # across the coupler, on its pin
+        f4 = s4 * fx - c4 * fy            # across the rocker, on its bushing (−F)
+        i = 6
+        for n, tip, w, zeta, f in ((self.nc, self.tip_c, self.w_c, self.beams[0].damping_ratio, f3),
+                                   (self.nr, self.tip_r, self.w_r, self.beams[1].damping_ratio, f4)):
+            q, qd = y[i:i + n], y[i + n:i + 2 * n]
+            out[i:i + n] = qd
+            out[i + n:i + 2 * n] = -2.0 * zeta * w * qd - w * w * q + tip * f
+            i += 2 * n
+        return out
 
     def gap_event(self, t, y):
         b, _vb, cc, _vc, _a, _ = self.geometry(t, y)
@@ -186,13 +237,18 @@ class ClearanceLinkage:
         """The nominal motion at t = 0, the pin at the bushing's centre."""
         th2, w2, a2 = self.crank.state(0.0)
         t3, t4, w3, w4, _a3, _a4 = nominal_rates(self.rig, th2, w2, a2)
-        return np.array([t3, t4, w3, w4, 0.0, 0.0])
+        y = np.zeros(self.size)
+        y[:4] = (t3, t4, w3, w4)
+        return y
 
     def run(self, y, t0, t1, nodes=None, rtol=1e-8):
         """Integrates from t0 to t1; returns the end state and, when nodes
         (sorted times in [t0, t1]) are given, the state at each (rows)."""
-        out = None if nodes is None else np.empty((len(nodes), 6))
-        atol = np.array([1e-12, 1e-12, 1e-9, 1e-9, 1e-10, 1e-10])
+        out = None if nodes is None else np.empty((len(nodes), self.size))
+        parts = [[1e-12, 1e-12, 1e-9, 1e-9, 1e-10, 1e-10]]
+        for n in (self.nc, self.nr):    # mass-normalised q ~ tip deflection/4, q̇ ~ ω·q
+            parts += [np.full(n, 1e-13), np.full(n, 1e-10)]
+        atol = np.concatenate(parts)
         t = t0
         inside = self.gap_event(t, y) > 0.0
         k = 0

@@ -57,7 +57,15 @@ def one_recording(args, rig, rpm, clearance_m, index, out_dir):
                         theta0_rad=rng.uniform(0, 2 * math.pi))
     contact = Contact(args.restitution, args.friction, pin_radius_m=args.pin_radius_mm * 1e-3,
                       friction_at=args.friction_at)
-    model = ClearanceLinkage(rig, clearance_m, contact, crank)
+    modes = {
+        "coupler": BeamModes(rig.coupler.length_m, rig.coupler.mass_kg, args.coupler_mode_hz,
+                             args.damping_ratio, args.modes),
+        "rocker": BeamModes(rig.rocker.length_m, rig.rocker.mass_kg, args.rocker_mode_hz,
+                            args.damping_ratio, args.modes),
+    }
+    two_way = args.vibration and args.vibration_coupling == "two-way"
+    model = ClearanceLinkage(rig, clearance_m, contact, crank,
+                             beams=(modes["coupler"], modes["rocker"]) if two_way else None)
     period = 60.0 / rpm
     t_rec = args.warmup_turns * period
     preroll = max(args.preroll_s, 0.0)
@@ -87,12 +95,6 @@ def one_recording(args, rig, rpm, clearance_m, index, out_dir):
     th2, w2, a2 = crank.state(mid)
     f_cpl = -np.sin(th3) * fx + np.cos(th3) * fy      # across the coupler at its end
     f_rkr = np.sin(th4) * fx - np.cos(th4) * fy       # −F across the rocker
-    modes = {
-        "coupler": BeamModes(rig.coupler.length_m, rig.coupler.mass_kg, args.coupler_mode_hz,
-                             args.damping_ratio, args.modes),
-        "rocker": BeamModes(rig.rocker.length_m, rig.rocker.mass_kg, args.rocker_mode_hz,
-                            args.damping_ratio, args.modes),
-    }
     sensors = default_sensors(args)
     g = rig.gravity_m_s2
     columns, twin_columns, stats_sensors = [], [], {}
@@ -102,7 +104,13 @@ def one_recording(args, rig, rpm, clearance_m, index, out_dir):
         th, w, a = (th3, w3, a3) if s.link == "coupler" else (th4, w4, a4)
         rigid = rigid_specific_force(s, g, th2, w2, a2, rig.crank.length_m, th, w, a)
         bend = np.zeros_like(rigid)
-        if s.tangential and args.vibration:
+        if s.tangential and two_way:
+            # Σ φ_k(x)·q̈_k from the integrated modes (interval means, as α3, α4)
+            n_c = modes["coupler"].count
+            i0 = 6 if s.link == "coupler" else 6 + 2 * n_c
+            n = modes[s.link].count
+            bend = np.diff(states[:, i0 + n:i0 + 2 * n], axis=0) @ modes[s.link].shape(s.position_m) / h
+        elif s.tangential and args.vibration:
             force = f_cpl if s.link == "coupler" else f_rkr
             bend = modes[s.link].acceleration(force, h, s.position_m)
         v_rigid = to_samples(condition(rigid, s, fs_fine), daq, ch)[skip:skip + n_out]
@@ -170,6 +178,10 @@ def parse_args(argv):
                    help="pin radius in the friction's slip speed and moments (0: a point pin, as the thesis)")
     p.add_argument("--prior", default="truth", help='session.toml [theory]: "truth" or e.g. "e=1" or "e=0.5,mu=0.2"')
     p.add_argument("--vibration", action="store_true", help="add the links' bending modes")
+    p.add_argument("--vibration-coupling", choices=["one-way", "two-way"], default="one-way",
+                   help='"one-way": the bearing force drives the modes, the bending does not move the bushing '
+                        '(energy not paid by the contact: energy_budget.py); "two-way": the free ends\' '
+                        'deflection is in the contact (bearing.py), the contact pays for the ringing')
     p.add_argument("--twin-out", help="also write the same session without the vibration (same motion and noise) here")
     p.add_argument("--coupler-mode-hz", type=float, default=600.0)
     p.add_argument("--rocker-mode-hz", type=float, default=520.0)

@@ -7,6 +7,9 @@ forms (exit 1 on a failure, 77 without scipy).
   4.1-20 as corrected) and α4 = −m4·g·S4·cos θ4 / I_O4;
 - a pin pressed into the wall: the rocker's moment equals (C4 − O4) × F_n·n;
 - the bending modes ring at the pinned–free beam's frequencies;
+- two-way bending: the free ends' deflection enters the contact, whose
+  power on the links' relative motion is then the modes' (energy paid by
+  the contact, which the one-way drive does not do: energy_budget.py);
 - the crank pulse's falling edge crosses mid-level at the marked angle
   (within the RC's ln 2·τ lag).
 """
@@ -78,6 +81,37 @@ d2 = model.rhs(t, y2)
 qx, qy = rk.length_m * math.cos(y2[1]) + 0.254e-3 * nx, rk.length_m * math.sin(y2[1]) + 0.254e-3 * ny
 m4 = -(qx * fy - qy * fx) - rk.mass_kg * g * rk.mass_centre_m * math.cos(y2[1])
 check(abs(d2[3] * rk.inertia_about_joint_kg_m2 - m4) < 1e-9 * abs(m4), "rocker moment of the contact force")
+
+# two-way bending: the free ends' deflection is in the contact, and the
+# contact's power on the relative motion is the modes' (links at rest):
+# F·(v_B − v_A − v_C) = Σ φ_k(L)·(F·n3)·q̇_k + Σ φ_k(L)·(−F·n4)·q̇_k
+beams = (BeamModes(cp.length_m, cp.mass_kg, 600.0, 0.02), BeamModes(rk.length_m, rk.mass_kg, 520.0, 0.02))
+two = ClearanceLinkage(rig, 0.254e-3, Contact(0.5), crank, beams=beams)
+y3 = np.zeros(two.size)
+y3[:6] = y2
+rng = np.random.default_rng(3)
+n_c, n_r = beams[0].count, beams[1].count
+y3[6:6 + n_c] = rng.normal(0, 2e-9, n_c)                        # q (tip deflections ~1e-8 m)
+y3[6 + n_c:6 + 2 * n_c] = rng.normal(0, 2e-3, n_c)              # q̇
+y3[6 + 2 * n_c:6 + 2 * n_c + n_r] = rng.normal(0, 2e-9, n_r)
+y3[6 + 2 * n_c + n_r:] = rng.normal(0, 2e-3, n_r)
+b3, vb3, cc3, vc3, _a, (c3, s3, c4, s4) = two.geometry(t, y3)
+w3_tip = float(np.dot(two.tip_c, y3[6:6 + n_c]))
+check(abs(b3[0] - (b[0] - w3_tip * s3)) < 1e-15 and abs(b3[1] - (b[1] + w3_tip * c3)) < 1e-15,
+      f"two-way: the coupler's end moved {w3_tip * 1e9:.2f} nm across the link")
+fx3, fy3, _nx, _ny = two.contact_force(b3, vb3, cc3, vc3, 0.0, 0.0)
+l2 = rig.crank.length_m
+va = (-l2 * w2 * math.sin(th2), l2 * w2 * math.cos(th2))
+p_contact = fx3 * (vb3[0] - va[0] - vc3[0]) + fy3 * (vb3[1] - va[1] - vc3[1])
+d3 = two.rhs(t, y3)
+f3, f4 = -s3 * fx3 + c3 * fy3, s4 * fx3 - c4 * fy3
+p_modes = f3 * float(np.dot(two.tip_c, y3[6 + n_c:6 + 2 * n_c])) + \
+    f4 * float(np.dot(two.tip_r, y3[6 + 2 * n_c + n_r:]))
+check(abs(p_contact - p_modes) < 1e-9 * abs(p_modes) and abs(p_modes) > 0,
+      f"two-way: the contact's power {p_contact:.6e} W is the modes' {p_modes:.6e} W (one way would give 0)")
+i_r = 6 + 2 * n_c
+want = -2 * 0.02 * two.w_r * y3[i_r + n_r:] - two.w_r ** 2 * y3[i_r:i_r + n_r] + two.tip_r * f4
+check(np.allclose(d3[i_r + n_r:], want, rtol=1e-12, atol=0), "two-way: the rocker's modes driven by −F·n4")
 
 modes = BeamModes(cp.length_m, cp.mass_kg, 600.0, 0.01)
 fs = 204800.0
