@@ -43,8 +43,11 @@
 
 namespace fourbar {
 
-/// A window's ratio over its neighbours' above which its energy is unmodelled.
-inline constexpr double kExcessRatio = 6.0;
+/// A window's ratio over its neighbours' above which its energy is unmodelled
+/// (5: 6 until 2026-12-03 missed structures at 5.6–6.0 whose prominence was
+/// 6.2–10; on recordings without one no window with a prominence of 6 had a
+/// ratio between 5 and 6, docs/verdict.md "A lower ratio threshold").
+inline constexpr double kExcessRatio = 5.0;
 /// Bands per window (windows one band apart).
 inline constexpr std::size_t kWindowBands = 2;
 /// … and its measured energy at least this many times its neighbours' (the

@@ -77,6 +77,25 @@ TEST(ModelFamily, LowerQResonanceIsNamedAtItsFrequency) {
   }
 }
 
+// A mode the model has too, but at a sixth of the measured amplitude: the
+// measured spectrum peaks there (prominence 9.5–11×) while the ratio over
+// the trend is only 5–6× (the model's own weak line lifts its level there).
+// Missed at the old kExcessRatio of 6 (seeds 2 and 4, 5.97× and 5.96×), as
+// were a two-way ringing session of the independent generator (5.85×) and a
+// Q = 5 mount at 450 Hz (5.59×) (docs/verdict.md "A lower ratio threshold").
+// The same line at the measured amplitude in the model names nothing.
+TEST(ModelFamily, AModeTheModelHasTooWeaklyIsNamed) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const auto measured = turns(25, 200, 5, 0.18, seed);
+    const ModelFamilyCheck weak = check_model_family(measured, turns(20, 320, 0, 0.03, seed + 100), nominal(), kCrankHz, 1000, {});
+    ASSERT_TRUE(weak.checked) << weak.not_checked;
+    ASSERT_FALSE(weak.unmodelled.empty()) << "seed " << seed;
+    EXPECT_NEAR(weak.unmodelled.front().peak_hz, 600, 20) << "seed " << seed;
+    const ModelFamilyCheck same = check_model_family(measured, turns(20, 200, 0, 0.18, seed + 100), nominal(), kCrankHz, 1000, {});
+    EXPECT_TRUE(same.unmodelled.empty()) << "seed " << seed << ": " << same.unmodelled.front().peak_hz;
+  }
+}
+
 TEST(ModelFamily, HeavilyDampedRingingIsNeverCalledNarrow) {
   const auto measured = turns(25, 200, 5, 1.0, 9, 500, 0.3), model = turns(20, 200, 0, 0, 10);
   const ModelFamilyCheck c = check_model_family(measured, model, nominal(), kCrankHz, 1000, {});
