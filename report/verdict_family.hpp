@@ -36,6 +36,9 @@ struct VerdictFamily {
   /// The rig file has the links' modal data but the elastic-link reference
   /// did not run (e.g. no contact stiffness): why, said in the verdict.
   std::string link_vibration_not_run;
+  /// The elastic-link reference ran (the rig file gives the links' modes):
+  /// only then is an elastic link's broad ringing looked for.
+  bool link_vibration_checked = false;
 };
 
 /// The record's "model_family" object.

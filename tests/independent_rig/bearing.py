@@ -188,7 +188,10 @@ class ClearanceLinkage:
         nx, ny = dx / r, dy / r
         rvx, rvy = vb[0] - vc[0], vb[1] - vc[1]
         ddot = nx * rvx + ny * rvy
-        fn = self.K * delta ** 1.5 * max(1.0 + self.chi * ddot / self.v0, 0.0)
+        # numpy's power: a rejected trial stage of the explicit free-flight
+        # step can carry a huge δ (two-way modes ringing at kHz); inf then
+        # fails the step's error test instead of raising OverflowError
+        fn = self.K * float(np.float64(delta) ** 1.5) * max(1.0 + self.chi * ddot / self.v0, 0.0)
         f = 0.0
         if self.c.friction > 0.0 and self.fric_active:
             rp = self.c.pin_radius_m

@@ -98,6 +98,30 @@ TEST(VerdictFamily, CheckedWithNothingFoundHoldsAndChangesNothing) {
   EXPECT_EQ(v.a_from, "scatter");
 }
 
+// "Holds" claims no link vibration only when the elastic-link reference ran
+// (the rig file gives the links' modes); without it, only a narrow line was
+// looked for, and the sentence says so and how to give the modes.
+TEST(VerdictFamily, HoldsSaysWhatWasNotLookedForWithoutModalData) {
+  VerdictInputs in = chaotic_match();
+  VerdictFamily f;
+  f.checked = true;
+  f.checked_up_to_hz = 950;
+  in.family = f;
+  const Verdict without = verdict_of(in);
+  EXPECT_EQ(without.family.words, "holds");
+  EXPECT_EQ(without.family.sentence.find("no link vibration"), std::string::npos) << without.family.sentence;
+  EXPECT_NE(without.family.sentence.find("fourbar tap"), std::string::npos) << without.family.sentence;
+  in.family->link_vibration_checked = true;
+  const Verdict with = verdict_of(in);
+  EXPECT_NE(with.family.sentence.find("no link vibration or sensor resonance found"), std::string::npos);
+  // read from a record: the reference's object says it ran
+  const json record = {{"model_family", {{"checked", true}, {"checked_up_to_hz", 950.0}, {"link_vibration", {{"checked", true}, {"present", false}}}}}};
+  ASSERT_TRUE(verdict_family(record));
+  EXPECT_TRUE(verdict_family(record)->link_vibration_checked);
+  const json bare = {{"model_family", {{"checked", true}, {"checked_up_to_hz", 950.0}}}};
+  EXPECT_FALSE(verdict_family(bare)->link_vibration_checked);
+}
+
 TEST(VerdictFamily, RecordJsonReadsBack) {
   ModelFamilyCheck c;
   c.checked = true;
