@@ -139,9 +139,8 @@ VerdictPart family_part(const VerdictInputs& in) {
                 " the measured α3 deviation has, band by band, the spectrum of the model's (" +
                 (f.link_vibration_checked
                      ? std::string("no link vibration or sensor resonance found).")
-                     : std::string("no narrow resonance found). A link's broad ringing is looked for only against the "
-                                   "links' modal data, which the rig file does not give: measure them with `fourbar tap` "
-                                   "and add the lines it prints to the rig file.")) +
+                     : std::string("no narrow resonance; broad link ringing is sought only with the links' modes "
+                                   "in the rig file, from `fourbar tap`).")) +
                 set_aside};
   const UnmodelledEnergy& u = f.unmodelled.front();
   std::string s = "The measurement holds energy the rigid model does not have: " + unmodelled_text(u);
