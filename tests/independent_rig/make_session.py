@@ -204,6 +204,9 @@ def parse_args(argv):
     p.add_argument("--pulse-angle-deg", type=float, default=12.0)
     p.add_argument("--seed", type=int, default=1)
     args = p.parse_args(argv)
+    if args.vibration_coupling == "two-way" and not args.vibration:
+        p.error("--vibration-coupling two-way couples the links' bending modes, which only --vibration adds; "
+                "give --vibration as well (or leave the coupling out for rigid links)")
     if args.sensor_resonance_hz < 0 or args.sensor_resonance_q <= 0:
         p.error("--sensor-resonance-hz must be 0 (none) or above and --sensor-resonance-q above 0 "
                 f"(got {args.sensor_resonance_hz} Hz, Q {args.sensor_resonance_q})")
