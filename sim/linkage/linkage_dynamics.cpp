@@ -215,6 +215,47 @@ std::array<double, kJoints> pair_penetrations(const LinkageModel& m, const Linka
   return pen;
 }
 
+void pair_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w) {
+  const BodyPoses poses = body_poses(m, c);
+  // Origin velocities and angular velocities, parents first (the crank's
+  // origin O2 is fixed): v_q = v_parent + ω_parent·r⊥ + the offsets' rates,
+  // v_body = v_q − ω_body·r_c⊥ (the Jacobians' rows of forward_kinematics times ż).
+  std::array<Vec2, kBodies> v{};
+  std::array<double, kBodies> omega{};
+  omega[0] = c.crank.speed_rad_s;
+  auto origin = [&](int b) { return b == kGround ? std::pair{Vec2{}, 0.0} : std::pair{v[static_cast<std::size_t>(b)], omega[static_cast<std::size_t>(b)]}; };
+  auto pose_u = [&](int b) { return b == kGround ? Vec2{1, 0} : poses.u[static_cast<std::size_t>(b)]; };
+  auto pose_p = [&](int b) { return b == kGround ? Vec2{} : poses.p[static_cast<std::size_t>(b)]; };
+  for (const Placement& pl : m.placements()) {
+    const auto [vp, wp] = origin(pl.parent.body);
+    Vec2 vq = vp + wp * rotate(pose_u(pl.parent.body), pl.parent.local_m).perp();
+    if (pl.offset_index >= 0) vq += Vec2{c.z_rate(pl.offset_index), c.z_rate(pl.offset_index + 1)};
+    const auto b = static_cast<std::size_t>(pl.body);
+    omega[b] = c.z_rate(pl.angle_index);
+    v[b] = vq - omega[b] * rotate(poses.u[b], pl.child.local_m).perp();
+  }
+  for (int j : m.clearance_joints()) {
+    const JointData& jd = m.joint(j);
+    PairState& ps = w.pair[static_cast<std::size_t>(j)];
+    ps.joint = j;
+    const Vec2 e = pair_eccentricity(m, c, poses, j);
+    ps.eccentricity_m = e;
+    const double r = std::sqrt(dot(e, e));
+    ps.gap_m = jd.clearance_m - r;
+    ps.penetration_m = -ps.gap_m;
+    ps.normal = r > 0 ? e * (1.0 / r) : Vec2{1.0, 0.0};
+    const auto [v_pin, w_pin] = origin(jd.pin.body);
+    const auto [v_bush, w_bush] = origin(jd.bushing.body);
+    const Vec2 r_pin = rotate(pose_u(jd.pin.body), jd.pin.local_m);
+    const Vec2 r_bp = (pose_p(jd.pin.body) + r_pin) - pose_p(jd.bushing.body);
+    const Vec2 vv = (v_pin + w_pin * r_pin.perp()) - (v_bush + w_bush * r_bp.perp());
+    ps.normal_speed_m_s = dot(vv, ps.normal);
+    ps.tangential_speed_m_s = dot(vv, ps.normal.perp());
+    ps.omega_pin_rad_s = w_pin;
+    ps.omega_bushing_rad_s = w_bush;
+  }
+}
+
 void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w) {
   const int n = m.coordinates(), nz = n + 1;
   w.z_rate_cache = c.z_rate;

@@ -100,6 +100,12 @@ Vec2 pair_eccentricity(const LinkageModel& m, const LinkageCoordinates& c, const
 /// Jacobians and velocities (the witnesses, evaluated after every step).
 std::array<double, kJoints> pair_penetrations(const LinkageModel& m, const LinkageCoordinates& c);
 
+/// The clearance pairs' geometry and relative velocities (w.pair, all but
+/// J_rel) from the bodies' poses and rates alone, without the frames'
+/// Jacobians: what the contact books need between the right-hand sides
+/// (the same values as forward_kinematics to rounding).
+void pair_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w);
+
 /// Frames of all bodies, the pairs' geometry and relative velocities.
 void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w);
 

@@ -319,7 +319,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
     LinkageCoordinates c;
     integ.interpolate(time, track_state);
     coordinates(time, track_state.data(), c);
-    forward_kinematics(model, c, ws);
+    pair_kinematics(model, c, ws);
     pair_forces(model, chis(ws), ws);
     return ws.pair;
   }

@@ -180,5 +180,41 @@ TEST(LinkageDynamics, PairPenetrationsAreTheKinematicsOwn) {
   }
 }
 
+TEST(LinkageDynamics, PairKinematicsAreTheJacobiansOwnVelocities) {
+  // pair_kinematics (poses and rates, no Jacobians: the contact books' path)
+  // against forward_kinematics (J_rel·ż), four clearance layouts, elastic
+  // coupler and rocker, seeded states with random rates.
+  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
+  const double xi = 0.254e-3;
+  for (const std::array<double, 3>& clearances :
+       {std::array<double, 3>{0, xi, 0}, std::array<double, 3>{xi, xi, xi}, std::array<double, 3>{xi, 0, 0},
+        std::array<double, 3>{0, 0, 2 * xi}}) {
+    LinkageSpec spec = spec_with(clearances);
+    spec.elastic = {false, true, true};
+    spec.elastic_modes = 2;
+    const LinkageModel lm = build_linkage(rig, spec);
+    std::mt19937 gen(31);
+    for (int k = 0; k < 20; ++k) {
+      LinkageCoordinates q;
+      random_linkage_state(rig, lm, gen, q);
+      LinkageWorkspace full, light;
+      forward_kinematics(lm, q, full);
+      pair_kinematics(lm, q, light);
+      for (int j : lm.clearance_joints()) {
+        const PairState &a = full.pair[static_cast<std::size_t>(j)], &b = light.pair[static_cast<std::size_t>(j)];
+        EXPECT_EQ(a.penetration_m, b.penetration_m) << "joint " << j << ", state " << k;
+        EXPECT_EQ(a.normal.x, b.normal.x);
+        EXPECT_EQ(a.normal.y, b.normal.y);
+        const double speed = std::hypot(a.normal_speed_m_s, a.tangential_speed_m_s);
+        ASSERT_GT(speed, 0.0);
+        EXPECT_NEAR(a.normal_speed_m_s, b.normal_speed_m_s, 1e-13 * speed) << "joint " << j << ", state " << k;
+        EXPECT_NEAR(a.tangential_speed_m_s, b.tangential_speed_m_s, 1e-13 * speed) << "joint " << j << ", state " << k;
+        EXPECT_EQ(a.omega_pin_rad_s, b.omega_pin_rad_s);
+        EXPECT_EQ(a.omega_bushing_rad_s, b.omega_bushing_rad_s);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fourbar
