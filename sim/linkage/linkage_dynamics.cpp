@@ -215,6 +215,23 @@ std::array<double, kJoints> pair_penetrations(const LinkageModel& m, const Linka
   return pen;
 }
 
+namespace {
+
+/// The pair's eccentricity, gap, penetration and normal (shared by both
+/// kinematics passes, so they give the same bits).
+void set_pair_geometry(const LinkageModel& m, const LinkageCoordinates& c, const BodyPoses& poses, int j,
+                       PairState& ps) {
+  ps.joint = j;
+  const Vec2 e = pair_eccentricity(m, c, poses, j);
+  ps.eccentricity_m = e;
+  const double r = std::sqrt(dot(e, e));
+  ps.gap_m = m.joint(j).clearance_m - r;
+  ps.penetration_m = -ps.gap_m;
+  ps.normal = r > 0 ? e * (1.0 / r) : Vec2{1.0, 0.0};
+}
+
+}  // namespace
+
 void pair_kinematics(const LinkageModel& m, const LinkageCoordinates& c, LinkageWorkspace& w) {
   const BodyPoses poses = body_poses(m, c);
   // Origin velocities and angular velocities, parents first (the crank's
@@ -237,13 +254,7 @@ void pair_kinematics(const LinkageModel& m, const LinkageCoordinates& c, Linkage
   for (int j : m.clearance_joints()) {
     const JointData& jd = m.joint(j);
     PairState& ps = w.pair[static_cast<std::size_t>(j)];
-    ps.joint = j;
-    const Vec2 e = pair_eccentricity(m, c, poses, j);
-    ps.eccentricity_m = e;
-    const double r = std::sqrt(dot(e, e));
-    ps.gap_m = jd.clearance_m - r;
-    ps.penetration_m = -ps.gap_m;
-    ps.normal = r > 0 ? e * (1.0 / r) : Vec2{1.0, 0.0};
+    set_pair_geometry(m, c, poses, j, ps);
     const auto [v_pin, w_pin] = origin(jd.pin.body);
     const auto [v_bush, w_bush] = origin(jd.bushing.body);
     const Vec2 r_pin = rotate(pose_u(jd.pin.body), jd.pin.local_m);
@@ -296,15 +307,9 @@ void forward_kinematics(const LinkageModel& m, const LinkageCoordinates& c, Link
   for (int j : m.clearance_joints()) {
     const JointData& jd = m.joint(j);
     PairState& ps = w.pair[static_cast<std::size_t>(j)];
-    ps.joint = j;
     const BodyFrame &pin = frame(jd.pin.body), &bush = frame(jd.bushing.body);
     const Vec2 r_pin = rotate(pin.u, jd.pin.local_m);
-    const Vec2 e = pair_eccentricity(m, c, poses, j);
-    ps.eccentricity_m = e;
-    const double r = std::sqrt(dot(e, e));
-    ps.gap_m = jd.clearance_m - r;
-    ps.penetration_m = -ps.gap_m;
-    ps.normal = r > 0 ? e * (1.0 / r) : Vec2{1.0, 0.0};
+    set_pair_geometry(m, c, poses, j, ps);
     // The bushing's material point at the pin: bushing origin to pin centre.
     const Vec2 r_bp = (pin.p + r_pin) - bush.p;
     ps.J_rel = point_jacobian(pin, r_pin) - point_jacobian(bush, r_bp);

@@ -146,74 +146,70 @@ TEST(LinkageDynamics, ElasticMassMatrixHoldsTheBodiesKineticEnergiesAndSolvesThe
   }
 }
 
+/// Calls f(model, state, k) for 20 seeded states in each of four clearance
+/// layouts (B; A, B, O4; A; O4 at twice the clearance), elastic coupler and
+/// rocker with two modes.
+template <class F>
+void for_each_layout_state(unsigned seed, F&& f) {
+  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
+  const double xi = 0.254e-3;
+  for (const std::array<double, 3>& clearances :
+       {std::array<double, 3>{0, xi, 0}, std::array<double, 3>{xi, xi, xi}, std::array<double, 3>{xi, 0, 0},
+        std::array<double, 3>{0, 0, 2 * xi}}) {
+    LinkageSpec spec = spec_with(clearances);
+    spec.elastic = {false, true, true};
+    spec.elastic_modes = 2;
+    const LinkageModel lm = build_linkage(rig, spec);
+    std::mt19937 gen(seed);
+    for (int k = 0; k < 20; ++k) {
+      LinkageCoordinates q;
+      random_linkage_state(rig, lm, gen, q);
+      f(lm, q, k);
+    }
+  }
+}
+
 // The witnesses' positions-only pass (pair_penetrations, every step) gives
 // the bits of the full kinematics' penetration, for a joint placed by its
 // offsets (A, O4) and for the loop-closing one (whose pin the random links'
 // 1 mrad can push through the wall), and |e| − ξ of the pin's and the
 // bushing's world sites.
 TEST(LinkageDynamics, PairPenetrationsAreTheKinematicsOwn) {
-  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
-  const double xi = 0.254e-3;
-  for (const std::array<double, 3>& clearances :
-       {std::array<double, 3>{0, xi, 0}, std::array<double, 3>{xi, xi, xi}, std::array<double, 3>{xi, 0, 0},
-        std::array<double, 3>{0, 0, 2 * xi}}) {
-    LinkageSpec spec = spec_with(clearances);
-    spec.elastic = {false, true, true};
-    spec.elastic_modes = 2;
-    const LinkageModel lm = build_linkage(rig, spec);
-    std::mt19937 gen(29);
-    for (int k = 0; k < 20; ++k) {
-      LinkageCoordinates q;
-      random_linkage_state(rig, lm, gen, q);
-      LinkageWorkspace w;
-      forward_kinematics(lm, q, w);
-      const std::array<double, kJoints> pen = pair_penetrations(lm, q);
-      for (int j : lm.clearance_joints()) {
-        const PairState& ps = w.pair[static_cast<std::size_t>(j)];
-        EXPECT_EQ(pen[static_cast<std::size_t>(j)], ps.penetration_m) << "joint " << j << ", state " << k;
-        const JointData& jd = lm.joint(j);
-        const Vec2 e = site_position(w, jd.pin) - site_position(w, jd.bushing);
-        EXPECT_NEAR(pen[static_cast<std::size_t>(j)], std::sqrt(dot(e, e)) - jd.clearance_m, 1e-15)
-            << "joint " << j << ", state " << k;
-      }
+  for_each_layout_state(29, [](const LinkageModel& lm, const LinkageCoordinates& q, int k) {
+    LinkageWorkspace w;
+    forward_kinematics(lm, q, w);
+    const std::array<double, kJoints> pen = pair_penetrations(lm, q);
+    for (int j : lm.clearance_joints()) {
+      const PairState& ps = w.pair[static_cast<std::size_t>(j)];
+      EXPECT_EQ(pen[static_cast<std::size_t>(j)], ps.penetration_m) << "joint " << j << ", state " << k;
+      const JointData& jd = lm.joint(j);
+      const Vec2 e = site_position(w, jd.pin) - site_position(w, jd.bushing);
+      EXPECT_NEAR(pen[static_cast<std::size_t>(j)], std::sqrt(dot(e, e)) - jd.clearance_m, 1e-15)
+          << "joint " << j << ", state " << k;
     }
-  }
+  });
 }
 
+// pair_kinematics (poses and rates, no Jacobians: the contact books' path)
+// against forward_kinematics (J_rel·ż), seeded states with random rates.
 TEST(LinkageDynamics, PairKinematicsAreTheJacobiansOwnVelocities) {
-  // pair_kinematics (poses and rates, no Jacobians: the contact books' path)
-  // against forward_kinematics (J_rel·ż), four clearance layouts, elastic
-  // coupler and rocker, seeded states with random rates.
-  const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
-  const double xi = 0.254e-3;
-  for (const std::array<double, 3>& clearances :
-       {std::array<double, 3>{0, xi, 0}, std::array<double, 3>{xi, xi, xi}, std::array<double, 3>{xi, 0, 0},
-        std::array<double, 3>{0, 0, 2 * xi}}) {
-    LinkageSpec spec = spec_with(clearances);
-    spec.elastic = {false, true, true};
-    spec.elastic_modes = 2;
-    const LinkageModel lm = build_linkage(rig, spec);
-    std::mt19937 gen(31);
-    for (int k = 0; k < 20; ++k) {
-      LinkageCoordinates q;
-      random_linkage_state(rig, lm, gen, q);
-      LinkageWorkspace full, light;
-      forward_kinematics(lm, q, full);
-      pair_kinematics(lm, q, light);
-      for (int j : lm.clearance_joints()) {
-        const PairState &a = full.pair[static_cast<std::size_t>(j)], &b = light.pair[static_cast<std::size_t>(j)];
-        EXPECT_EQ(a.penetration_m, b.penetration_m) << "joint " << j << ", state " << k;
-        EXPECT_EQ(a.normal.x, b.normal.x);
-        EXPECT_EQ(a.normal.y, b.normal.y);
-        const double speed = std::hypot(a.normal_speed_m_s, a.tangential_speed_m_s);
-        ASSERT_GT(speed, 0.0);
-        EXPECT_NEAR(a.normal_speed_m_s, b.normal_speed_m_s, 1e-13 * speed) << "joint " << j << ", state " << k;
-        EXPECT_NEAR(a.tangential_speed_m_s, b.tangential_speed_m_s, 1e-13 * speed) << "joint " << j << ", state " << k;
-        EXPECT_EQ(a.omega_pin_rad_s, b.omega_pin_rad_s);
-        EXPECT_EQ(a.omega_bushing_rad_s, b.omega_bushing_rad_s);
-      }
+  for_each_layout_state(31, [](const LinkageModel& lm, const LinkageCoordinates& q, int k) {
+    LinkageWorkspace full, light;
+    forward_kinematics(lm, q, full);
+    pair_kinematics(lm, q, light);
+    for (int j : lm.clearance_joints()) {
+      const PairState &a = full.pair[static_cast<std::size_t>(j)], &b = light.pair[static_cast<std::size_t>(j)];
+      EXPECT_EQ(a.penetration_m, b.penetration_m) << "joint " << j << ", state " << k;
+      EXPECT_EQ(a.normal.x, b.normal.x);
+      EXPECT_EQ(a.normal.y, b.normal.y);
+      const double speed = std::hypot(a.normal_speed_m_s, a.tangential_speed_m_s);
+      ASSERT_GT(speed, 0.0);
+      EXPECT_NEAR(a.normal_speed_m_s, b.normal_speed_m_s, 1e-13 * speed) << "joint " << j << ", state " << k;
+      EXPECT_NEAR(a.tangential_speed_m_s, b.tangential_speed_m_s, 1e-13 * speed) << "joint " << j << ", state " << k;
+      EXPECT_EQ(a.omega_pin_rad_s, b.omega_pin_rad_s);
+      EXPECT_EQ(a.omega_bushing_rad_s, b.omega_bushing_rad_s);
     }
-  }
+  });
 }
 
 }  // namespace
