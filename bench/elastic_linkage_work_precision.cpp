@@ -13,6 +13,11 @@
 //   bench/elastic_linkage_work_precision [--method bdf|esdirk4|esdirk5|erk|adams] [repeats] [modes...]
 //   bench/elastic_linkage_work_precision [--method M] --one MODES TOL [CSV]   (one run, for a
 //     profiler; CSV gets the coupler and rocker sensor columns and α3)
+//   bench/elastic_linkage_work_precision [--method M] --turns MODES TURNS TOL   (TURNS turns in one
+//     run: CPU, steps and coupler-sensor error per turn against the reference run as long)
+//   bench/elastic_linkage_work_precision [--method M] --steps MODES TURNS TOL [CSV]   (how many
+//     steps each state component set, steps and median step per tenth of the run;
+//     CSV: every step's end, size, order, weighted error and the component that set it)
 //   bench/elastic_linkage_work_precision --share MODES SAMPLES [CSV]   (the
 //     reference at tol 1e-12 sampled SAMPLES times a turn; per link and shape
 //     its eigenfrequency and the RMS of its direct part Φy_k(L/2)·η̈_k of the
@@ -87,9 +92,11 @@ int main(int argc_in, char** argv_in) {
   char** argv = args.data();
   const bool one = (argc == 4 || argc == 5) && std::string(argv[1]) == "--one";
   const bool share = (argc == 4 || argc == 5) && std::string(argv[1]) == "--share";
-  const int repeats = argc > 1 && !one && !share ? std::max(1, std::atoi(argv[1])) : 3;
+  const bool turns_mode = argc == 5 && std::string(argv[1]) == "--turns";
+  const bool steps_mode = (argc == 5 || argc == 6) && std::string(argv[1]) == "--steps";
+  const int repeats = argc > 1 && !one && !share && !turns_mode && !steps_mode ? std::max(1, std::atoi(argv[1])) : 3;
   std::vector<int> mode_counts;
-  for (int i = 2; i < argc && !one && !share; ++i) mode_counts.push_back(std::atoi(argv[i]));
+  for (int i = 2; i < argc && !one && !share && !turns_mode && !steps_mode; ++i) mode_counts.push_back(std::atoi(argv[i]));
   if (mode_counts.empty()) mode_counts = {2, 4};
   const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml");
   const double w = units::rpm_to_rad_s(350), T = units::kTwoPi / w;
@@ -179,6 +186,100 @@ int main(int argc_in, char** argv_in) {
       std::fclose(f);
     }
     std::printf("cpu %.3f s, %s\n", a.cpu_s, a.counters.c_str());
+    return 0;
+  }
+  if (steps_mode) {
+    // Which state component sets the step, and where in the turn the steps go.
+    const int modes = std::atoi(argv[2]), n_turns = std::atoi(argv[3]);
+    const double tol = std::atof(argv[4]), span = n_turns * T;
+    const LinkageModel m = build_linkage(rig, spec(modes, tol, method));
+    LinkageSimulator sim(m, crank);
+    std::vector<LinkageStepTrace> trace;
+    sim.trace_steps(&trace);
+    sim.start_centred(0.0);
+    sim.advance_to(span);
+    std::printf("# %d modes per link, %s at tol %g, %d turns: %zu steps, %s, contacts %zu\n", modes,
+                method_name.c_str(), tol, n_turns, trace.size(), sim.integrator_counters().c_str(),
+                sim.contacts().size());
+    std::vector<std::size_t> by_component;
+    for (const LinkageStepTrace& r : trace) {
+      if (r.limiting >= by_component.size()) by_component.resize(r.limiting + 1, 0);
+      ++by_component[r.limiting];
+    }
+    std::printf("\n%-24s %7s %7s\n", "step set by", "steps", "share");
+    for (std::size_t i = 0; i < by_component.size(); ++i)
+      if (by_component[i] > 0)
+        std::printf("%-24s %7zu %6.1f%%\n", sim.state_component(i).c_str(), by_component[i],
+                    100.0 * static_cast<double>(by_component[i]) / static_cast<double>(trace.size()));
+    std::printf("\n%-15s %7s %12s %9s\n", "turns", "steps", "median_h_us", "orders");
+    for (int part = 0; part < 10; ++part) {
+      std::vector<double> h;
+      int lo = 99, hi = 0;
+      for (const LinkageStepTrace& r : trace)
+        if (r.end_time_s > span * part / 10.0 && r.end_time_s <= span * (part + 1) / 10.0) {
+          h.push_back(r.step_s);
+          lo = std::min(lo, r.order);
+          hi = std::max(hi, r.order);
+        }
+      std::sort(h.begin(), h.end());
+      std::printf("%4.1f-%-10.1f %7zu %12.2f %6d-%d\n", n_turns * part / 10.0, n_turns * (part + 1) / 10.0, h.size(),
+                  h.empty() ? 0.0 : 1e6 * h[h.size() / 2], h.empty() ? 0 : lo, hi);
+    }
+    if (argc == 6)
+      if (std::FILE* f = std::fopen(argv[5], "w")) {
+        std::fprintf(f, "end_time_s,step_s,order,weighted_error,limiting\n");
+        for (const LinkageStepTrace& r : trace)
+          std::fprintf(f, "%.17g,%.17g,%d,%.6g,%s\n", r.end_time_s, r.step_s, r.order, r.weighted_error,
+                       sim.state_component(r.limiting).c_str());
+        std::fclose(f);
+      }
+    return 0;
+  }
+  if (turns_mode) {
+    // Several turns in one run: the first turn holds the start's transient
+    // (pins centred, modes at rest), the later ones are what a long run
+    // costs per turn. Per turn: CPU, steps, and the error against the
+    // reference run of the same length.
+    const int modes = std::atoi(argv[2]), n_turns = std::atoi(argv[3]);
+    const double tol = std::atof(argv[4]);
+    times.clear();
+    for (int i = 0; i <= 720 * n_turns; ++i) times.push_back(T * i / 720.0);
+    auto turns_run = [&](double run_tol, LinkageMethod meth, std::vector<double>& cpu_turn, std::vector<std::size_t>& steps_turn) {
+      const LinkageModel m = build_linkage(rig, spec(modes, run_tol, meth));
+      Result r;
+      LinkageSimulator sim(m, crank);
+      sim.set_sample_times(times);
+      sim.set_sensors({{1, 0.5 * rig.coupler.length_m, 0.0}, {2, 0.5 * rig.rocker.length_m, 0.0}});
+      sim.start_centred(0.0);
+      std::size_t steps0 = 0;
+      for (int k = 1; k <= n_turns; ++k) {
+        const double c0 = cpu_seconds();
+        sim.advance_to(T * k);
+        cpu_turn.push_back(cpu_seconds() - c0);
+        const std::size_t steps = sim.diagnostics().steps;
+        steps_turn.push_back(steps - steps0);
+        steps0 = steps;
+      }
+      for (const LinkageSample& x : sim.samples()) r.coupler.push_back(x.sensor_m_s2[0]);
+      r.counters = sim.integrator_counters() + ", contacts " + std::to_string(sim.contacts().size());
+      return r;
+    };
+    std::vector<double> cpu_ref, cpu;
+    std::vector<std::size_t> steps_ref, steps;
+    const Result ref = turns_run(1e-12, LinkageMethod::bdf, cpu_ref, steps_ref);
+    const Result a = turns_run(tol, method, cpu, steps);
+    std::printf("# %d modes per link, %s at tol %g, %d turns; reference BDF at 1e-12 (%s)\n", modes,
+                method_name.c_str(), tol, n_turns, ref.counters.c_str());
+    std::printf("%-5s %9s %8s %11s %12s\n", "turn", "cpu_s", "steps", "err_sensor", "ref_steps");
+    double later_cpu = 0;
+    for (int k = 0; k < n_turns; ++k) {
+      const std::vector<double> x(a.coupler.begin() + 720 * k, a.coupler.begin() + 720 * (k + 1));
+      const std::vector<double> y(ref.coupler.begin() + 720 * k, ref.coupler.begin() + 720 * (k + 1));
+      std::printf("%-5d %9.4f %8zu %11.3e %12zu\n", k + 1, cpu[static_cast<std::size_t>(k)],
+                  steps[static_cast<std::size_t>(k)], rel_rms(x, y), steps_ref[static_cast<std::size_t>(k)]);
+      if (k > 0) later_cpu += cpu[static_cast<std::size_t>(k)];
+    }
+    if (n_turns > 1) std::printf("turns 2..%d: %.4f s per turn\n", n_turns, later_cpu / (n_turns - 1));
     return 0;
   }
   if (one) {

@@ -95,7 +95,7 @@ struct LinkageIntegrator::Cvode {
   LinkageMethod method = LinkageMethod::bdf;
   bool ark() const { return method != LinkageMethod::bdf && method != LinkageMethod::adams; }
   SUNContext ctx = nullptr;
-  N_Vector y = nullptr, dky = nullptr, atol = nullptr;
+  N_Vector y = nullptr, dky = nullptr, atol = nullptr, ele = nullptr, ewt = nullptr;
   SUNMatrix jac = nullptr;
   SUNLinearSolver ls = nullptr;
   void* mem = nullptr;
@@ -114,6 +114,8 @@ LinkageIntegrator::LinkageIntegrator(double tolerance, std::size_t size, std::si
   const auto n = static_cast<sunindextype>(size);
   c.y = new_serial_vector(n, c.ctx);
   c.dky = new_serial_vector(n, c.ctx);
+  c.ele = new_serial_vector(n, c.ctx);
+  c.ewt = new_serial_vector(n, c.ctx);
   N_VConst(0.0, c.y);
   c.atol = new_serial_vector(n, c.ctx);
   double* atol = N_VGetArrayPointer(c.atol);
@@ -137,6 +139,8 @@ LinkageIntegrator::~LinkageIntegrator() {
   SUNMatDestroy(c.jac);
   N_VDestroy(c.y);
   N_VDestroy(c.dky);
+  N_VDestroy(c.ele);
+  N_VDestroy(c.ewt);
   N_VDestroy(c.atol);
   SUNContext_Free(&c.ctx);
 }
@@ -238,6 +242,30 @@ LinkageIntegrator::Step LinkageIntegrator::step(double t_stop) {
   ++steps_;
   stepped_ = true;
   return s;
+}
+
+LinkageIntegrator::StepReport LinkageIntegrator::last_step_report() {
+  Cvode& c = *cv_;
+  StepReport r;
+  if (!stepped_) return r;
+  if (c.ark()) {
+    check_linkage(ARKStepGetLastStep(c.mem, &r.step_s), "last step");
+    check_linkage(ARKStepGetEstLocalErrors(c.mem, c.ele), "local errors");
+    check_linkage(ARKStepGetErrWeights(c.mem, c.ewt), "error weights");
+  } else {
+    check_linkage(CVodeGetLastStep(c.mem, &r.step_s), "last step");
+    check_linkage(CVodeGetLastOrder(c.mem, &r.order), "last order");
+    check_linkage(CVodeGetEstLocalErrors(c.mem, c.ele), "local errors");
+    check_linkage(CVodeGetErrWeights(c.mem, c.ewt), "error weights");
+  }
+  const double* e = N_VGetArrayPointer(c.ele);
+  const double* w = N_VGetArrayPointer(c.ewt);
+  for (std::size_t i = 0; i < size_; ++i)
+    if (const double v = std::abs(e[i] * w[i]); v > r.weighted_error) {
+      r.weighted_error = v;
+      r.limiting = i;
+    }
+  return r;
 }
 
 void LinkageIntegrator::interpolate(double t, std::vector<double>& y) {

@@ -63,6 +63,15 @@ class LinkageIntegrator {
     long rhs = 0, jacobians = 0, error_failures = 0, newton_failures = 0;
   };
   Counters counters() const;
+  /// The last step's size and order (0 for ARKODE's fixed tables) and the
+  /// component whose weighted local-error estimate |e_i|·w_i was the
+  /// largest: the one that set the step (bench/elastic_linkage_work_precision --steps).
+  struct StepReport {
+    double step_s = 0, weighted_error = 0;
+    int order = 0;
+    std::size_t limiting = 0;
+  };
+  StepReport last_step_report();
 
  private:
   Counters since_reset() const;

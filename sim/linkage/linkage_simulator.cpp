@@ -94,6 +94,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
   std::vector<LinkageSample> samples;
   std::vector<LinkageContact> contacts;
   LinkageDiagnostics diag;
+  std::vector<LinkageStepTrace>* trace = nullptr;
 
   std::size_t work_index() const { return static_cast<std::size_t>(2 * n); }
   /// Quadrature base of the k-th clearance joint: contact loss, friction loss, impulse n, impulse t, (film).
@@ -401,6 +402,10 @@ struct LinkageSimulator::Impl final : LinkageOde {
       if ((t - seg_start) * w > kLinkageRestartTurns * units::kTwoPi) restart(t, state_at(t));
       const LinkageIntegrator::Step st = integ.step(t_end);
       const double ta = t, tb = st.end;
+      if (trace) {
+        const LinkageIntegrator::StepReport r = integ.last_step_report();
+        trace->push_back({absolute(tb), r.step_s, r.weighted_error, r.order, r.limiting});
+      }
       emit_samples(tb);
       track(ta, tb);
       book_interval(ta, tb);
@@ -455,6 +460,30 @@ std::string LinkageSimulator::integrator_counters() const {
   const LinkageIntegrator::Counters c = impl_->integ.counters();
   return "rhs " + std::to_string(c.rhs) + ", jacobians " + std::to_string(c.jacobians) + ", error-test failures " +
          std::to_string(c.error_failures) + ", Newton failures " + std::to_string(c.newton_failures);
+}
+
+void LinkageSimulator::trace_steps(std::vector<LinkageStepTrace>* out) { impl_->trace = out; }
+
+std::string LinkageSimulator::state_component(std::size_t i) const {
+  const LinkageModel& m = impl_->model;
+  const auto n = static_cast<std::size_t>(m.coordinates());
+  if (i >= 2 * n) return "books";
+  const std::size_t k = i % n;
+  const std::string rate = i >= n ? " rate" : "";
+  const char* link_names[] = {"crank", "coupler", "rocker"};
+  for (const Placement& pl : m.placements()) {
+    if (static_cast<std::size_t>(pl.angle_index) == k) return (pl.body == 1 ? "theta3" : "theta4") + rate;
+    if (pl.offset_index >= 0 && k - static_cast<std::size_t>(pl.offset_index) < 2)
+      return std::string(to_string(static_cast<LinkJoint>(pl.joint))) +
+             (k == static_cast<std::size_t>(pl.offset_index) ? " d_x" : " d_y") + rate;
+  }
+  for (int b = 1; b < kBodies; ++b)
+    if (const ElasticLink* link = m.elastic(b)) {
+      const auto first = static_cast<std::size_t>(m.modal_index(b));
+      if (k >= first && k < first + static_cast<std::size_t>(link->modes()))
+        return std::string(link_names[b]) + " eta" + std::to_string(k - first + 1) + rate;
+    }
+  return "q" + std::to_string(k) + rate;
 }
 
 LinkageDiagnostics LinkageSimulator::diagnostics() {

@@ -61,6 +61,14 @@ struct LinkageDiagnostics {
   std::size_t steps = 0;
 };
 
+/// One integrator step of a step trace: where it ended, its size and order,
+/// and the state component that set it (LinkageSimulator::state_component).
+struct LinkageStepTrace {
+  double end_time_s = 0, step_s = 0, weighted_error = 0;
+  int order = 0;
+  std::size_t limiting = 0;
+};
+
 class LinkageSimulator {
  public:
   LinkageSimulator(const LinkageModel& model, const CrankMotion& crank);
@@ -80,6 +88,12 @@ class LinkageSimulator {
   const std::vector<LinkageContact>& contacts() const;
   LinkageDiagnostics diagnostics();
   std::string integrator_counters() const;
+  /// Appends a record of every following step to `out` (nullptr stops);
+  /// costs two error-vector reads a step, for benchmarks and diagnosis.
+  void trace_steps(std::vector<LinkageStepTrace>* out);
+  /// The integrator's state component i by name: "theta3", "coupler eta2",
+  /// "crank_coupler d_x" and the same with " rate"; "books" past them.
+  std::string state_component(std::size_t i) const;
 
  private:
   struct Impl;
