@@ -265,6 +265,8 @@ int write_linkage_run(const Scene& scene, const LinkageRun& run, const std::file
                       {"crank_speed_rpm", units::rad_s_to_rpm(scene.crank_speed_rad_s)},
                       {"crank_motion", scene.linkage.crank_table.string()},
                       {"duration_s", run.duration_s},
+                      {"warmup_revolutions", run.warmup_turns},
+                      {"output_start_s", run.output_start_s},
                       {"revolutions", scene.revolutions},
                       {"samples_per_revolution", scene.samples_per_revolution}};
   summary["linkage"] = {{"settings",
@@ -392,8 +394,9 @@ int run_sim(const Invocation& inv) {
   opts.add_options()("scene", po::value(&scene_file)->required(), "scene file (TOML)")(
       "out,o", po::value(&out_dir), "output folder (default: out/<scene name>)")(
       "warmup-turns", po::value(&warmup_turns),
-      "model = \"clearance\": turns run first and not output (default 20, the report's model's warm-up; 0: the "
-      "output starts from the start, as the thesis's first-turn figures; ignored with steady_state)");
+      "turns run first and not output. model = \"clearance\": default 20, the report's model's warm-up "
+      "(ignored with steady_state); model = \"linkage\": default 0. 0: the output starts from the start, as "
+      "the thesis's first-turn figures and a crank table's own times");
   add_csv_comments_option(opts, csv_comments);
   po::positional_options_description pos;
   pos.add("scene", 1);
@@ -411,7 +414,9 @@ int run_sim(const Invocation& inv) {
                        "impacts.csv and revolutions.csv keep them (column revolution), and\n"
                        "summary.json's clearance.output_turns counts the output turns' impacts.\n"
                        "Notes on stderr say when counts come from the transient after the start\n"
-                       "(fewer warm-up turns) or from fewer than 20 turns.\n\n" +
+                       "(fewer warm-up turns) or from fewer than 20 turns. A linkage scene runs\n"
+                       "--warmup-turns turns (default 0) before series.csv's first row;\n"
+                       "impacts.csv and summary.json's joints and energy cover the whole run.\n\n" +
                            sim_outputs_help(),
                        opts, pos, inv, vm))
     return 0;
@@ -429,7 +434,9 @@ int run_sim(const Invocation& inv) {
   }
   if (scene.model == Model::linkage) {
     if (!scene.linkage.crank_table.empty()) prov.inputs.push_back(scene.linkage.crank_table);
-    return write_linkage_run(scene, run_linkage(scene), out_dir, prov);
+    // The linkage model starts its output at the start unless warm-up turns are asked for.
+    const int warmup = vm.count("warmup-turns") ? static_cast<int>(warmup_turns) : 0;
+    return write_linkage_run(scene, run_linkage(scene, warmup), out_dir, prov);
   }
 
   const SeriesTable table = run_nominal(scene);

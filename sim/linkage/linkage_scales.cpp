@@ -58,4 +58,26 @@ void scale_modal_start(const LinkageModel& model, const LinkageScales& scales,
   }
 }
 
+std::string linkage_state_component(const LinkageModel& m, std::size_t i) {
+  const auto n = static_cast<std::size_t>(m.coordinates());
+  if (i >= 2 * n) return "books";
+  const std::size_t k = i % n;
+  const std::string rate = i >= n ? " rate" : "";
+  const char* link_names[] = {"crank", "coupler", "rocker"};
+  for (const Placement& pl : m.placements()) {
+    if (static_cast<std::size_t>(pl.angle_index) == k) return (pl.body == 1 ? "theta3" : "theta4") + rate;
+    if (pl.offset_index < 0) continue;
+    const auto first = static_cast<std::size_t>(pl.offset_index);
+    if (k == first || k == first + 1)
+      return std::string(to_string(static_cast<LinkJoint>(pl.joint))) + (k == first ? " d_x" : " d_y") + rate;
+  }
+  for (int b = 1; b < kBodies; ++b)
+    if (const ElasticLink* link = m.elastic(b)) {
+      const auto first = static_cast<std::size_t>(m.modal_index(b));
+      if (k >= first && k < first + static_cast<std::size_t>(link->modes()))
+        return std::string(link_names[b]) + " eta" + std::to_string(k - first + 1) + rate;
+    }
+  return "q" + std::to_string(k) + rate;
+}
+
 }  // namespace fourbar

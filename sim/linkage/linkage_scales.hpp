@@ -9,6 +9,7 @@
 // accelerometer reads of it, its position and rate alike.
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "mechanism/kinematics.hpp"
@@ -36,5 +37,10 @@ LinkageScales linkage_scales(const LinkageModel& model, const CrankState& start)
 void scale_modal_start(const LinkageModel& model, const LinkageScales& scales,
                        const std::array<std::array<double, 4>, 2>& eta_m,
                        const std::array<std::array<double, 4>, 2>& rate_m_s, std::vector<double>& y);
+
+/// The scaled state's component i by name: the coordinates q first ("theta3",
+/// "crank_coupler d_x", "coupler eta2", …), then their rates (the same with
+/// " rate"), then "books" for the quadratures after 2n.
+std::string linkage_state_component(const LinkageModel& model, std::size_t i);
 
 }  // namespace fourbar

@@ -465,25 +465,7 @@ std::string LinkageSimulator::integrator_counters() const {
 void LinkageSimulator::trace_steps(std::vector<LinkageStepTrace>* out) { impl_->trace = out; }
 
 std::string LinkageSimulator::state_component(std::size_t i) const {
-  const LinkageModel& m = impl_->model;
-  const auto n = static_cast<std::size_t>(m.coordinates());
-  if (i >= 2 * n) return "books";
-  const std::size_t k = i % n;
-  const std::string rate = i >= n ? " rate" : "";
-  const char* link_names[] = {"crank", "coupler", "rocker"};
-  for (const Placement& pl : m.placements()) {
-    if (static_cast<std::size_t>(pl.angle_index) == k) return (pl.body == 1 ? "theta3" : "theta4") + rate;
-    if (pl.offset_index >= 0 && k - static_cast<std::size_t>(pl.offset_index) < 2)
-      return std::string(to_string(static_cast<LinkJoint>(pl.joint))) +
-             (k == static_cast<std::size_t>(pl.offset_index) ? " d_x" : " d_y") + rate;
-  }
-  for (int b = 1; b < kBodies; ++b)
-    if (const ElasticLink* link = m.elastic(b)) {
-      const auto first = static_cast<std::size_t>(m.modal_index(b));
-      if (k >= first && k < first + static_cast<std::size_t>(link->modes()))
-        return std::string(link_names[b]) + " eta" + std::to_string(k - first + 1) + rate;
-    }
-  return "q" + std::to_string(k) + rate;
+  return linkage_state_component(impl_->model, i);
 }
 
 LinkageDiagnostics LinkageSimulator::diagnostics() {

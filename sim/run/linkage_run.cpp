@@ -17,30 +17,49 @@ std::unique_ptr<CrankMotion> linkage_crank(const Scene& scene) {
   return std::make_unique<ConstantSpeedCrank>(scene.start_angle_rad, scene.crank_speed_rad_s);
 }
 
-LinkageRun run_linkage(const Scene& scene) {
+LinkageRun run_linkage(const Scene& scene, int warmup_turns) {
   const LinkageModel model = build_linkage(*scene.rig, scene.linkage.spec);
   if (model.all_ideal())
     throw InputError(
         "[linkage]: no joint has a clearance; give one of crank_coupler_radial_mm, coupler_rocker_radial_mm, "
         "rocker_ground_radial_mm > 0 (or use model = \"nominal\" for the ideal linkage)");
+  if (warmup_turns < 0) throw InputError("linkage run: warm-up turns " + std::to_string(warmup_turns) + " must be >= 0");
   const std::unique_ptr<CrankMotion> crank = linkage_crank(scene);
   LinkageRun out;
+  out.warmup_turns = warmup_turns;
+  const auto* table = dynamic_cast<const TabulatedCrank*>(crank.get());
+  if (warmup_turns > 0) {
+    // The warm-up ends when the crank has turned warmup_turns times from its start.
+    const CrankState c0 = crank->at(0.0);
+    const double dir = c0.speed_rad_s < 0 ? -1.0 : 1.0;
+    const double angle = c0.angle_rad + dir * units::kTwoPi * warmup_turns;
+    const double end = table ? scene.linkage.duration_s.value_or(table->end_time_s()) : 0.0;
+    try {
+      out.output_start_s = crank->time_at_angle(angle);
+    } catch (const RunError&) {
+      out.output_start_s = end;  // never reached
+    }
+    if (table && !(out.output_start_s < end))
+      throw InputError("sim: --warmup-turns " + std::to_string(warmup_turns) + ": the crank table " +
+                       scene.linkage.crank_table.string() + " does not turn " + std::to_string(warmup_turns) +
+                       " times before its end at " + format_double(end) +
+                       " s; give fewer warm-up turns (0 starts the output at the table's start)");
+  }
   const auto rows = static_cast<std::size_t>(scene.revolutions) * static_cast<std::size_t>(scene.samples_per_revolution);
   std::vector<double> times(rows + 1);
-  if (scene.linkage.crank_table.empty()) {
+  if (!table) {
     const double T = units::kTwoPi / std::abs(scene.crank_speed_rad_s);
     out.duration_s = scene.revolutions * T;
-    for (std::size_t i = 0; i <= rows; ++i) times[i] = out.duration_s * static_cast<double>(i) / static_cast<double>(rows);
   } else {
-    const auto* table = dynamic_cast<const TabulatedCrank*>(crank.get());
-    out.duration_s = scene.linkage.duration_s.value_or(table->end_time_s());
-    for (std::size_t i = 0; i <= rows; ++i) times[i] = out.duration_s * static_cast<double>(i) / static_cast<double>(rows);
+    out.duration_s = scene.linkage.duration_s.value_or(table->end_time_s()) - out.output_start_s;
   }
+  for (std::size_t i = 0; i <= rows; ++i)
+    times[i] = out.output_start_s + out.duration_s * static_cast<double>(i) / static_cast<double>(rows);
   LinkageSimulator sim(model, *crank);
   sim.set_sample_times(times);
   sim.set_sensors(scene.linkage.sensors);
   sim.start_centred(0.0);
-  sim.advance_to(out.duration_s);
+  sim.advance_to(times.back());
   out.contacts = sim.contacts();
   out.diagnostics = sim.diagnostics();
   out.clearance_joints = model.clearance_joints();

@@ -8,7 +8,9 @@
 // clearance joint J: J_gap_mm, J_penetration_mm, J_contact_force_N,
 // J_fx_N, J_fy_N. Rows: revolutions·samples_per_revolution + 1, uniform in
 // crank angle at constant speed, uniform in time over duration_s with a
-// crank table.
+// crank table. Warm-up turns run first and are not sampled: the output
+// starts when the crank has turned them (impacts.csv and the books keep
+// the whole run).
 
 #include <memory>
 #include <vector>
@@ -25,12 +27,16 @@ struct LinkageRun {
   std::vector<LinkageContact> contacts;
   LinkageDiagnostics diagnostics;
   std::vector<int> clearance_joints;
-  double duration_s = 0;
+  double duration_s = 0;      ///< the output's span
+  double output_start_s = 0;  ///< the first row's time: the end of the warm-up turns
+  int warmup_turns = 0;
   std::string integrator_counters;
 };
 
 /// The scene's crank: constant speed, or the [linkage] crank_motion table.
 std::unique_ptr<CrankMotion> linkage_crank(const Scene& scene);
-LinkageRun run_linkage(const Scene& scene);
+/// `warmup_turns` ≥ 0 turns of the crank before the first output row;
+/// InputError when a crank table does not turn that often before its end.
+LinkageRun run_linkage(const Scene& scene, int warmup_turns = 0);
 
 }  // namespace fourbar

@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -79,6 +83,115 @@ TEST(SimLinkageCommand, ElasticCouplerSceneWritesSensorAndModalColumns) {
   const auto& e = j.at("linkage").at("energy");
   EXPECT_GT(e.at("modal_damping_J").get<double>(), 0.0);
   EXPECT_LT(e.at("residual_rel").get<double>(), 1e-8);
+}
+
+/// The data rows of a CSV file as numbers (the first line is the header; a
+/// cell that is not a number reads as NaN).
+std::vector<std::vector<double>> numeric_rows(const std::string& text) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) {
+      try {
+        row.push_back(std::stod(cell));
+      } catch (...) {
+        row.push_back(std::nan(""));
+      }
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(SimLinkageCommand, WarmupTurnsStartTheSeriesAfterThemAndKeepTheRun) {
+  // Three turns output from the start against one turn after two warm-up
+  // turns: the same run, so the second's rows are the first's last turn and
+  // both have the same contacts.
+  TempDir dir;
+  dir.write("rig.toml", testing::read_file(FOURBAR_SOURCE_DIR "/data/rigs/thesis_elastic.toml"));
+  const std::string scene = R"(rig = "rig.toml"
+model = "linkage"
+crank_speed_rpm = 350.0
+revolutions = REVS
+samples_per_revolution = 90
+outputs = ["time_s", "alpha3_rad_s2", "contact_force_N"]
+[linkage]
+coupler_rocker_radial_mm = 0.254
+elastic_links = ["coupler"]
+elastic_modes = 1
+restitution = 0.5
+contact_stiffness_N_per_m_n = 1e10
+tolerance = 1e-9
+)";
+  const auto three = dir.write("three.toml", testing::replace(scene, "REVS", "3"));
+  const auto one = dir.write("one.toml", testing::replace(scene, "REVS", "1"));
+  const auto a = run_fourbar("sim " + three.string() + " --out " + (dir.path() / "a").string());
+  ASSERT_EQ(a.status, 0) << a.err;
+  const auto b = run_fourbar("sim " + one.string() + " --warmup-turns 2 --out " + (dir.path() / "b").string());
+  ASSERT_EQ(b.status, 0) << b.err;
+  const auto ra = numeric_rows(testing::read_file(dir.path() / "a/series.csv"));
+  const auto rb = numeric_rows(testing::read_file(dir.path() / "b/series.csv"));
+  ASSERT_EQ(ra.size(), 3U * 90U + 1U);
+  ASSERT_EQ(rb.size(), 91U);
+  EXPECT_NEAR(rb.front()[0], 720.0, 1e-9);  // crank_deg goes on from the warm-up
+  EXPECT_NEAR(rb.back()[0], 1080.0, 1e-9);
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < rb.size(); ++i) {
+    const std::vector<double>& x = rb[i];
+    const std::vector<double>& y = ra[2 * 90 + i];
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      if (std::isnan(y[k])) continue;
+      EXPECT_NEAR(x[k], y[k], 1e-7 * (1 + std::abs(y[k]))) << "row " << i << " column " << k;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 91U * 5U);
+  EXPECT_EQ(testing::read_file(dir.path() / "b/impacts.csv"), testing::read_file(dir.path() / "a/impacts.csv"));
+  std::ifstream in(dir.path() / "b/summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j.at("scene").at("warmup_revolutions").get<int>(), 2);
+  EXPECT_NEAR(j.at("scene").at("output_start_s").get<double>(), 2 * 60.0 / 350.0, 1e-12);
+  EXPECT_NEAR(j.at("scene").at("duration_s").get<double>(), 60.0 / 350.0, 1e-12);
+  // Without the option a linkage scene's output starts at the start.
+  std::ifstream ina(dir.path() / "a/summary.json");
+  EXPECT_EQ(nlohmann::json::parse(ina).at("scene").at("warmup_revolutions").get<int>(), 0);
+}
+
+TEST(SimLinkageCommand, WarmupLongerThanTheCrankTableExitsTwoNamingTheTable) {
+  TempDir dir;
+  dir.write("rig.toml", testing::thesis_rig_toml());
+  // 0.1 s at 350 rpm: 0.58 of a turn.
+  std::string table = "time_s,crank_rad,crank_rad_s\n";
+  const double w = 350.0 * 2 * M_PI / 60;
+  for (int i = 0; i <= 100; ++i) {
+    const double t = 0.001 * i;
+    table += std::to_string(t) + "," + std::to_string(w * t) + "," + std::to_string(w) + "\n";
+  }
+  dir.write("crank.csv", table);
+  const auto scene = dir.write("scene.toml", R"(rig = "rig.toml"
+model = "linkage"
+outputs = ["time_s"]
+[linkage]
+crank_motion = "crank.csv"
+coupler_rocker_radial_mm = 0.254
+restitution = 0.5
+contact_stiffness_N_per_m_n = 1e10
+)");
+  const auto r = run_fourbar("sim " + scene.string() + " --warmup-turns 1 --out " + (dir.path() / "out").string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("--warmup-turns 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("crank.csv"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out/series.csv"));
+  // The same table without warm-up runs.
+  const auto ok = run_fourbar("sim " + scene.string() + " --out " + (dir.path() / "ok").string());
+  EXPECT_EQ(ok.status, 0) << ok.err;
 }
 
 TEST(SimLinkageCommand, BadLinkageValuesExitTwoNamingTheKey) {
