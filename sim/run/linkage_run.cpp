@@ -29,11 +29,14 @@ LinkageRun run_linkage(const Scene& scene, int warmup_turns) {
   out.warmup_turns = warmup_turns;
   const auto* table = dynamic_cast<const TabulatedCrank*>(crank.get());
   if (warmup_turns > 0) {
-    // The warm-up ends when the crank has turned warmup_turns times from its start.
+    // The warm-up ends when the crank has turned warmup_turns times from its
+    // start, in the direction it turns (a table's: from its start to its end,
+    // so that a recording that starts at rest counts too).
     const CrankState c0 = crank->at(0.0);
-    const double dir = c0.speed_rad_s < 0 ? -1.0 : 1.0;
-    const double angle = c0.angle_rad + dir * units::kTwoPi * warmup_turns;
     const double end = table ? scene.linkage.duration_s.value_or(table->end_time_s()) : 0.0;
+    const double turned = table ? crank->at(end).angle_rad - c0.angle_rad : c0.speed_rad_s;
+    const double dir = turned < 0 ? -1.0 : 1.0;
+    const double angle = c0.angle_rad + dir * units::kTwoPi * warmup_turns;
     try {
       out.output_start_s = crank->time_at_angle(angle);
     } catch (const RunError&) {

@@ -163,13 +163,13 @@ tolerance = 1e-9
   EXPECT_EQ(nlohmann::json::parse(ina).at("scene").at("warmup_revolutions").get<int>(), 0);
 }
 
-TEST(SimLinkageCommand, WarmupLongerThanTheCrankTableExitsTwoNamingTheTable) {
+TEST(SimLinkageCommand, WarmupOnACrankTableCountsItsTurnsAndRefusesTooMany) {
   TempDir dir;
   dir.write("rig.toml", testing::thesis_rig_toml());
-  // 0.1 s at 350 rpm: 0.58 of a turn.
+  // 0.4 s at 350 rpm: 2.33 turns.
   std::string table = "time_s,crank_rad,crank_rad_s\n";
   const double w = 350.0 * 2 * M_PI / 60;
-  for (int i = 0; i <= 100; ++i) {
+  for (int i = 0; i <= 400; ++i) {
     const double t = 0.001 * i;
     table += std::to_string(t) + "," + std::to_string(w * t) + "," + std::to_string(w) + "\n";
   }
@@ -183,15 +183,22 @@ coupler_rocker_radial_mm = 0.254
 restitution = 0.5
 contact_stiffness_N_per_m_n = 1e10
 )");
-  const auto r = run_fourbar("sim " + scene.string() + " --warmup-turns 1 --out " + (dir.path() / "out").string());
+  const auto r = run_fourbar("sim " + scene.string() + " --warmup-turns 3 --out " + (dir.path() / "out").string());
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(r.err.rfind("fourbar: ", 0), 0u) << r.err;
-  EXPECT_NE(r.err.find("--warmup-turns 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--warmup-turns 3"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("crank.csv"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "out/series.csv"));
-  // The same table without warm-up runs.
-  const auto ok = run_fourbar("sim " + scene.string() + " --out " + (dir.path() / "ok").string());
-  EXPECT_EQ(ok.status, 0) << ok.err;
+  // Two warm-up turns fit: the output runs from the second turn's end to the table's end.
+  const auto ok = run_fourbar("sim " + scene.string() + " --warmup-turns 2 --out " + (dir.path() / "ok").string());
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  std::ifstream in(dir.path() / "ok/summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_NEAR(j.at("scene").at("output_start_s").get<double>(), 2 * 60.0 / 350.0, 1e-5);
+  EXPECT_NEAR(j.at("scene").at("duration_s").get<double>(), 0.4 - 2 * 60.0 / 350.0, 1e-5);
+  const auto rows = numeric_rows(testing::read_file(dir.path() / "ok/series.csv"));
+  ASSERT_FALSE(rows.empty());
+  EXPECT_NEAR(rows.front()[0], 720.0, 1e-2);  // crank_deg
 }
 
 TEST(SimLinkageCommand, BadLinkageValuesExitTwoNamingTheKey) {
