@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "common/error.hpp"
 #include "sim/flex/elastic_link.hpp"
@@ -140,6 +141,29 @@ TEST(ElasticLink, BadInputNamesTheQuantity) {
   s.mass_per_length_kg_m = 0;
   EXPECT_NE(message(s).find("mass per length"), std::string::npos) << message(s);
   EXPECT_NE(message(s).find("'coupler'"), std::string::npos) << message(s);
+}
+
+// A uniform bar's measured inertia, m·L²/12 about its centre written to a few
+// figures, may round below the linear mass per length's own: it is taken as
+// that (no rotary part), while an inertia 1 % lower still names the key.
+TEST(ElasticLink, AUniformBarsRoundedInertiaIsTakenAsItsOwn) {
+  ElasticLinkSpec spec = pinned_pinned_link(0.309, coupler_section(), 2);
+  spec.name = "coupler";
+  const double m = 0.2439, L = 0.309, centre = L / 2;
+  const double exact_about_centre_kg_mm2 = m * L * L / 12 * 1e6;  // 1940.65133…
+  for (const double written : {1940.6513, 1940.65, 1940.6, exact_about_centre_kg_mm2}) {
+    spec.rigid = RigidInertia{m, centre, written * 1e-6 + m * centre * centre};
+    const ElasticLink link = build_elastic_link(spec);
+    EXPECT_NEAR(link.inertia_origin_kg_m2, m * L * L / 3, 1e-4 * m * L * L / 3) << written;
+    EXPECT_NEAR(link.mass_kg, m, 1e-15);
+  }
+  spec.rigid = RigidInertia{m, centre, 0.99 * exact_about_centre_kg_mm2 * 1e-6 + m * centre * centre};
+  try {
+    build_elastic_link(spec);
+    ADD_FAILURE() << "an inertia 1 % below the uniform bar's was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("inertia_kg_mm2"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
