@@ -21,9 +21,9 @@ after 11, not sample by sample: each tangential accelerometer's signal
 band-passed to 2–1000 Hz (the analysis band), cut into turns by the crank
 angle; its turn-to-turn scatter (RMS of each turn minus the turns' mean,
 over the mean's RMS) and the mean turn's RMS. Measured 2026-12-04 (seed
-505): generator coupler 1.333, rocker 0.496; fourbar elastic 1.273, 0.424
-(ratios 0.96, 0.86; over four start angles 1.21–1.29 and 0.42–0.44);
-fourbar with rigid links 2.101, 0.731 (1.58x, 1.47x: outside the bands, so
+505): generator coupler 1.334, rocker 0.496; fourbar elastic 1.271, 0.425
+(ratios 0.95, 0.86; over four start angles 1.21–1.29 and 0.42–0.44);
+fourbar with rigid links 2.103, 0.731 (1.58x, 1.47x: outside the bands, so
 the check can fail). Impacts a turn are printed, not compared: they come in
 bursts (generator 3.6–8.5 over seeds and crank wander, fourbar 2.4–4.4).
 On the thesis rig's own links the two differ (30 turns: generator 1.42 /
@@ -35,8 +35,6 @@ Exit 77 (skipped) when this Python has no scipy.
 
 usage: check_elastic.py FOURBAR_EXE WORK_DIR [SEED]
 """
-import csv
-import json
 import math
 import os
 import re
@@ -46,8 +44,7 @@ import sys
 
 try:
     import numpy as np
-    import scipy.io.wavfile
-    import scipy.signal
+    import scipy.signal  # noqa: F401
 except ImportError:
     print("independent_rig_elastic: skipped: python3-scipy and python3-numpy (Debian) are not "
           f"installed for {sys.executable}; apt-get install python3-scipy")
@@ -55,9 +52,10 @@ except ImportError:
 import tomllib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import linkage_compare as lc  # noqa: E402
 RIG = os.path.join(HERE, "..", "..", "data", "rigs", "thesis.toml")
 TURNS, WARMUP, RPM, CLEARANCE_MM, RESTITUTION = 60, 10, 350.0, 0.254, 0.5
-SAMPLES_PER_TURN = 3600          # fourbar's series: 21 kHz at 350 rpm
 BAND_HZ = (2.0, 1000.0)
 # Accepted ratio fourbar / generator (measured over 58 turns: fourbar's four
 # start angles 1.21–1.29 and 0.42–0.44; rigid links 1.58x and 1.47x off).
@@ -85,69 +83,24 @@ def uniform_rig(path_out):
         f.writelines(out)
 
 
-def band(x, fs):
-    sos = scipy.signal.butter(4, BAND_HZ, "bandpass", fs=fs, output="sos")
-    return scipy.signal.sosfiltfilt(sos, x)
-
-
 def statistics(turns):
+    """(turn-to-turn scatter over the mean turn's RMS, the mean turn's RMS)."""
     a = np.array(turns)
     mean = a.mean(axis=0)
     mean_rms = float(np.sqrt(np.mean(mean ** 2)))
     return float(np.sqrt(np.mean((a - mean) ** 2))) / mean_rms, mean_rms
 
 
-def generator_stats(session, manifest):
-    fs, data = scipy.io.wavfile.read(os.path.join(session, manifest["_wav"]))
-    volts = data.astype(float) / 2 ** 31 * manifest["full_scale_V"]   # 24-bit WAV read left-justified
-    channels = {c["role"]: c for c in manifest["channel"]}
-    pulse = volts[:, channels["crank_pulse"]["index"]]
-    mid = 0.5 * (pulse.max() + pulse.min())
-    falling = np.where((pulse[:-1] > mid) & (pulse[1:] <= mid))[0]
-    out = {}
-    for link in ("coupler", "rocker"):
-        c = channels[f"{link}_tangential"]
-        x = band(volts[:, c["index"]] * 1000.0 / (c["sensitivity_mV_per_m_s2"] * c["gain"]), fs)
-        grid = np.arange(len(x))
-        turns = [np.interp(np.linspace(a, b, 720, endpoint=False), grid, x)
-                 for a, b in zip(falling[:-1], falling[1:])]
-        out[link] = statistics(turns[1:TURNS - 1])   # the same turns as fourbar's, away from the filter's ends
-    return out
-
-
-def fourbar_run(fourbar, work, name, rig_file, elastic, stiffness, sensors):
-    scene = os.path.join(work, f"{name}.toml")
-    links = 'elastic_links = ["coupler", "rocker"]\nelastic_modes = 3\n' if elastic else ""
-    with open(scene, "w") as f:
-        f.write(f'rig = "{rig_file}"\nmodel = "linkage"\ncrank_speed_rpm = {RPM}\nstart_angle_deg = 0.0\n'
-                f'revolutions = {TURNS}\nsamples_per_revolution = {SAMPLES_PER_TURN}\n'
-                f'outputs = ["time_s"]\n\n[linkage]\ncoupler_rocker_radial_mm = {CLEARANCE_MM}\n{links}'
-                f'restitution = {RESTITUTION}\ncontact_stiffness_N_per_m_n = {stiffness:.10g}\n'
-                f'friction_coefficient = 0.0\ntolerance = 1e-8\n'
-                f'coupler_sensors_mm = [{sensors["coupler"][0]}, {sensors["coupler"][1]}]\n'
-                f'rocker_sensors_mm = [{sensors["rocker"][0]}, {sensors["rocker"][1]}]\n')
-    out = os.path.join(work, f"out_{name}")
-    rc = subprocess.run([fourbar, "sim", scene, "--out", out, "--warmup-turns", str(WARMUP)],
-                        stdout=subprocess.DEVNULL).returncode
-    if rc != 0:
-        raise SystemExit(f"fourbar sim {scene} exited {rc}")
-    with open(os.path.join(out, "series.csv")) as f:
-        rows = list(csv.reader(f))
-    head, body = rows[0], np.array(rows[1:], dtype=float)
-    t, deg = body[:, head.index("time_s")], body[:, head.index("crank_deg")]
-    fs = 1.0 / float(np.median(np.diff(t)))
-    stats = {}
-    for link in ("coupler", "rocker"):
-        d, h = sensors[link]
-        column = next(c for c in head if c.startswith(f"{link}_acc_"))
-        x = band(body[:, head.index(column)], fs)
-        angle = deg - deg[0]
-        turns = [np.interp(k * 360.0 + np.arange(720) * 0.5, angle, x) for k in range(1, TURNS - 1)]
-        stats[link] = statistics(turns)
-    with open(os.path.join(out, "impacts.csv")) as f:
-        impacts = [r for r in csv.DictReader(f)
-                   if float(r["time_s"]) >= t[0] and float(r["approach_speed_m_s"]) > 1e-3]
-    return stats, len(impacts) / TURNS
+def fourbar_stats(fourbar, work, name, rig_file, elastic, stiffness, sensors, offset_deg):
+    keys = {"coupler_rocker_radial_mm": CLEARANCE_MM, "restitution": RESTITUTION,
+            "contact_stiffness_N_per_m_n": f"{stiffness:.10g}", "friction_coefficient": 0.0, "tolerance": 1e-8}
+    if elastic:
+        keys.update({"elastic_links": '["coupler", "rocker"]', "elastic_modes": 3})
+    deg, columns, impacts = lc.fourbar_sim(fourbar, work, name, rig_file, RPM, TURNS, WARMUP, keys, sensors)
+    fs = lc.SAMPLES_PER_TURN * RPM / 60.0
+    stats = {link: statistics(lc.fourbar_turns(deg, lc.band(x, fs, BAND_HZ), offset_deg, TURNS - 2))
+             for link, x in columns.items()}
+    return stats, lc.impacts_per_turn(impacts, TURNS)
 
 
 def main(argv):
@@ -163,20 +116,10 @@ def main(argv):
                     "--warmup-turns", str(WARMUP), "--restitution", str(RESTITUTION), "--prior", "truth",
                     "--vibration", "--vibration-coupling", "two-way", "--snr-db", "80", "--hum-mV", "0",
                     "--seed", seed], check=True)
-    with open(os.path.join(session, "truth", "truth.json")) as f:
-        truth = json.load(f)
-    args = truth["arguments"]
-    name, rec = next(iter(truth["recordings"].items()))
-    with open(os.path.join(session, os.path.splitext(rec["file"])[0] + ".toml"), "rb") as f:
-        manifest = tomllib.load(f)
-    manifest["_wav"] = rec["file"]
-    sensors = {}
-    for c in manifest["channel"]:
-        for link in ("coupler", "rocker"):
-            if c["role"] == f"{link}_tangential":
-                sensors[link] = (c["position_mm"], c["offset_mm"])
+    args, rec, manifest = lc.read_session(session)
+    sensors = {link: (c["position_mm"], c["offset_mm"]) for link, c in lc.tangential(manifest).items()}
+    offset_deg = next(c for c in manifest["channel"] if c["role"] == "crank_pulse")["crank_offset_deg"]
 
-    sys.path.insert(0, HERE)
     from links import pinned_free_roots  # noqa: E402
     b1 = pinned_free_roots(1)[0]
     rig_elastic = os.path.join(work, "rig_uniform_elastic.toml")
@@ -187,10 +130,11 @@ def main(argv):
             f.write(f"\n[{link}.elastic]\nmode_frequencies_Hz = {freqs}\n"
                     f"damping_ratios = {[args['damping_ratio']] * args['modes']}\n")
 
-    gen = generator_stats(session, manifest)
+    gen = {link: statistics(turns)
+           for link, turns in lc.generator_turns(session, rec, manifest, BAND_HZ, TURNS - 2).items()}
     stiffness = rec["contact_stiffness_N_m1p5"]
-    elastic, elastic_impacts = fourbar_run(fourbar, work, "elastic", rig_elastic, True, stiffness, sensors)
-    rigid, rigid_impacts = fourbar_run(fourbar, work, "rigid", rig_uniform, False, stiffness, sensors)
+    elastic, elastic_impacts = fourbar_stats(fourbar, work, "elastic", rig_elastic, True, stiffness, sensors, offset_deg)
+    rigid, rigid_impacts = fourbar_stats(fourbar, work, "rigid", rig_uniform, False, stiffness, sensors, offset_deg)
 
     print(f"uniform links, {RPM:g} rpm, {CLEARANCE_MM} mm, e = {RESTITUTION}, seed {seed}, {TURNS} turns after {WARMUP}; "
           f"sensors band-passed {BAND_HZ[0]:g}-{BAND_HZ[1]:g} Hz")
