@@ -25,8 +25,11 @@ at μ = 0.15 0.159 and 0.093, at μ = 0.25 0.102 and 0.042, without friction
 0.0072 (this motion does not test restitution; check_elastic.py's chaotic
 one does not test friction). Earlier, with a cruder alignment: fourbar's
 ramp over 0.05 or 0.3 mm/s, a stick speed of 0.01 mm/s or tolerance 1e-10
-moved the figures by < 0.001. Impacts a turn (generator 1.0, fourbar 2.0,
-all slower than 5 mm/s) are printed, not compared.
+moved the figures by < 0.001. Impacts a turn faster than 1 mm/s are
+printed, not compared: fourbar's turn has a bounce at 3.92 mm/s (the
+generator's median 3.6) and the pin's return to the wall 0.9° later at
+1.14 mm/s, just over the count's threshold (generator 1.0 a turn, fourbar
+2.0).
 
 usage: check_friction.py FOURBAR_EXE WORK_DIR [SEED]
 """
