@@ -13,13 +13,21 @@
 //    (a falling half-Hann taper) of what the modes found so far leave
 //    unexplained starts the next mode, then all are fitted again (step 3);
 //    until no peak stands 18 dB above the spectrum's median (at most 4
-//    modes, or --modes). Two close modes that make one hump come out as two.
+//    modes; with --modes N at most kMaxTapModes, and the N lowest are
+//    reported). Two close modes that make one hump come out as two.
 // 3. A nonlinear least-squares fit of Σ e^{−σ_k t}(a_k cos ω_k t + b_k sin ω_k t)
 //    by Levenberg–Marquardt on (σ_k, ω_k), the amplitudes solved linearly at
 //    each step (variable projection, Golub–Pereyra).
 // 4. Uncertainty: the covariance s²(JᵀJ)⁻¹ of all parameters at the optimum
 //    (white noise), carried to f_k = √(σ² + ω²)/2π (undamped natural
-//    frequency) and ζ_k = σ/√(σ² + ω²) by their gradients (1 σ).
+//    frequency) and ζ_k = σ/√(σ² + ω²) by their gradients (1 σ). That
+//    assumes the fitted modes are all there is; a real link also rings in
+//    higher, more damped modes that die within the first milliseconds and
+//    pull the highest fitted mode (a beam's third mode moved its second by
+//    4 standard errors, tests/independent_rig/tap_beam.py). So the fit is
+//    repeated from 2 ms later (kLateStart_s), and the change is each
+//    estimate's window sensitivity; the uncertainty printed is both in
+//    quadrature (TapMode::frequency_uncertainty_Hz).
 
 #include <span>
 #include <string>
@@ -33,14 +41,28 @@ struct TapMode {
   double damping_ratio = 0;
   double damping_sigma = 0;
   double amplitude = 0;  ///< at the start of the decay, recorded units
+  /// How far f and ζ move when the fit starts kLateStart_s later (0 when the
+  /// decay is too short for that): unmodelled early ringing, not noise alone.
+  double frequency_window_Hz = 0;
+  double damping_window = 0;
+  double frequency_uncertainty_Hz() const;  ///< √(σ_f² + window²)
+  double damping_uncertainty() const;
 };
 
+/// The most modes a tap fit looks for (`--modes` 1 to this).
+inline constexpr int kMaxTapModes = 8;
+
 struct TapOptions {
-  int modes = 0;  ///< 0: as many as the spectrum shows (<= 4)
+  /// 0: as many as the spectrum shows (<= 4); N: the N lowest of all that
+  /// stand out (<= kMaxTapModes are fitted), the higher ones fitted too.
+  int modes = 0;
 };
 
 struct TapResult {
   std::vector<TapMode> modes;  ///< lowest frequency first
+  /// With TapOptions::modes = N: the modes found above the N lowest, fitted
+  /// with them and not reported (Hz).
+  std::vector<double> higher_modes_Hz;
   double tap_time_s = 0;       ///< the largest |value|, from the first sample
   double decay_start_s = 0, decay_duration_s = 0;
   double noise_rms = 0;     ///< the floor the decay ends at

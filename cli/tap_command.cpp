@@ -1,6 +1,7 @@
 // `fourbar tap REC`: a link's modal frequencies and damping ratios from an
 // accelerometer recording of a hammer tap, as rig-file lines to paste.
 
+#include <cmath>
 #include <iostream>
 #include <vector>
 
@@ -19,10 +20,12 @@ namespace {
 constexpr const char* kTapDetails =
     "Finds the tap (the largest value), fits the free decay after it with a sum of\n"
     "damped sinusoids (spectrum peaks to start, then nonlinear least squares), and\n"
-    "prints each mode's natural frequency and damping ratio with its standard error,\n"
-    "then the [<link>.elastic] lines for the rig file. Record the link mounted as in\n"
-    "the rig (pinned at both joints), the accelerometer where the sensor sits, from\n"
-    "before the tap until the ringing has died away. Exit 2 when there is no decay.\n"
+    "prints each mode's natural frequency and damping ratio with its uncertainty (the\n"
+    "fit's standard error and its change when the fit starts 2 ms later), then the\n"
+    "[<link>.elastic] lines for the rig file, with a '#' note when two modes' ratio\n"
+    "is not a pinned link's. Record the link mounted as in the rig (pinned at both\n"
+    "joints), the accelerometer where the sensor sits, from before the tap until\n"
+    "the ringing has died away. Exit 2 when there is no decay.\n"
     "docs/flex.md \"Tap test\".\n";
 
 std::vector<double> read_channel(const std::string& file, const ReaderOptions& options, const std::string& channel,
@@ -62,7 +65,7 @@ int run_tap(const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the tap recording (any format fourbar reads)")(
       "channel", po::value(&channel), "the accelerometer channel: column name or number from 1 (default: the first)")(
-      "modes", po::value(&modes), "how many modes to fit, 1-8 (default: the spectrum's peaks, at most 4)")(
+      "modes", po::value(&modes), "report the N lowest modes, 1-8 (all that stand out are fitted; default: the spectrum's peaks, at most 4)")(
       "link", po::value(&link), "the link tapped, for the rig-file lines: coupler (default) or rocker")(
       "sample-rate-hz", po::value(&sample_rate_hz), "sample rate of a text recording without a time column");
   po::positional_options_description pos;
@@ -72,7 +75,8 @@ int run_tap(const Invocation& inv) {
     return 0;
   if (link != "coupler" && link != "rocker")
     throw InputError("tap: --link must be coupler or rocker, not '" + link + "'");
-  if (vm.count("modes") && (modes < 1 || modes > 8)) throw InputError("tap: --modes must be 1 to 8");
+  if (vm.count("modes") && (modes < 1 || modes > kMaxTapModes))
+    throw InputError("tap: --modes must be 1 to " + std::to_string(kMaxTapModes));
   ReaderOptions options;
   if (vm.count("sample-rate-hz")) {
     if (!(sample_rate_hz > 0)) throw InputError("tap: --sample-rate-hz must be positive");
@@ -93,10 +97,34 @@ int run_tap(const Invocation& inv) {
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const TapMode& m = r.modes[k];
     std::cout << "  mode " << k + 1 << ": " << format_number(m.frequency_Hz, 6) << " ± "
-              << format_number(m.frequency_sigma_Hz, 2) << " Hz, damping ratio " << format_number(m.damping_ratio, 4)
-              << " ± " << format_number(m.damping_sigma, 2) << "\n";
+              << format_number(m.frequency_uncertainty_Hz(), 2) << " Hz, damping ratio "
+              << format_number(m.damping_ratio, 4) << " ± " << format_number(m.damping_uncertainty(), 2) << "\n";
   }
-  std::cout << "# paste into the rig file (the standard errors above are 1 sigma):\n[" << link << ".elastic]\n"
+  if (!r.higher_modes_Hz.empty()) {
+    std::cout << "  also fitted, not reported (only the " << r.modes.size() << " lowest were asked for):";
+    for (double f : r.higher_modes_Hz) std::cout << " " << format_number(f, 5) << " Hz";
+    std::cout << "\n";
+  }
+  // The rig file's k-th entry is the link's k-th in-plane bending mode; a
+  // pinned–pinned bar's follow as k², so a ratio far from that says a mode
+  // is missing (the tap or the sensor at its node) or does not belong.
+  for (std::size_t k = 1; k < r.modes.size(); ++k) {
+    const double ratio = r.modes[k].frequency_Hz / r.modes[k - 1].frequency_Hz;
+    const double expected = std::pow(static_cast<double>(k + 1) / static_cast<double>(k), 2);
+    if (ratio > 1.5 * expected)
+      std::cout << "# note: mode " << k + 1 << " is " << format_number(ratio, 3) << " times mode " << k
+                << ", a pinned-pinned link's next mode near " << format_number(expected, 3)
+                << " times: a mode between them may be missing (tap and measure away from its node, e.g. at 0.3 "
+                   "of the length), and the rig file's entries must be the link's modes in order\n";
+    else if (ratio < 0.65 * expected)
+      std::cout << "# note: mode " << k + 1 << " is only " << format_number(ratio, 3) << " times mode " << k
+                << " (a pinned-pinned link's next mode near " << format_number(expected, 3)
+                << " times): check that both are this link's in-plane bending (not out-of-plane, a mount or "
+                   "another part) before pasting\n";
+  }
+  std::cout << "# paste into the rig file (± above: the fit's 1-sigma standard error and its change when the fit "
+               "starts 2 ms later, in quadrature):\n["
+            << link << ".elastic]\n"
             << "mode_frequencies_Hz = [";
   for (std::size_t k = 0; k < r.modes.size(); ++k)
     std::cout << (k ? ", " : "") << format_number(r.modes[k].frequency_Hz, 6);

@@ -53,6 +53,35 @@ TEST(TapCommand, PrintsTheRigFileLines) {
   EXPECT_NE(checked.out.find("rocker  modes: 600"), std::string::npos) << checked.out;
 }
 
+// The rig file's entries are the link's modes in order: a gap (the second
+// mode at its node) or two modes too close for one link's bending get a
+// '#' note, which keeps the pasted lines valid TOML; with --modes the lowest
+// are printed and the higher ones named.
+TEST(TapCommand, NotesAModeRatioThatIsNotALinksAndNamesTheHigherModesFitted) {
+  TempDir dir;
+  const auto gap = dir.write("gap.csv", testing::tap_csv(testing::virtual_tap(
+                                            {{600.0, 0.01, 1.0, 0.0}, {5400.0, 0.02, 1.0, 1.0}}, 30, 2)));
+  const auto r = run_fourbar("tap " + gap.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("# note: mode 2 is 9"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("may be missing"), std::string::npos) << r.out;
+  const auto one = run_fourbar("tap " + gap.string() + " --modes 1");
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_NE(one.out.find("also fitted, not reported (only the 1 lowest were asked for): 540"), std::string::npos)
+      << one.out;
+  EXPECT_EQ(numbers_after(one.out, "mode_frequencies_Hz").size(), 1u) << one.out;
+  const auto close = dir.write("close.csv", testing::tap_csv(testing::virtual_tap(
+                                                {{600.0, 0.01, 1.0, 0.0}, {625.0, 0.015, 0.7, 2.0}}, 30, 4)));
+  const auto c = run_fourbar("tap " + close.string());
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(c.out.find("# note: mode 2 is only 1.04 times mode 1"), std::string::npos) << c.out;
+  const auto plain = dir.write("plain.csv", testing::tap_csv(testing::virtual_tap(
+                                                {{614.1, 0.02, 1.0, 0.5}, {2456.3, 0.015, 0.5, 1.0}}, 30, 1)));
+  const auto p = run_fourbar("tap " + plain.string());
+  ASSERT_EQ(p.status, 0) << p.err;
+  EXPECT_EQ(p.out.find("# note"), std::string::npos) << p.out;
+}
+
 TEST(TapCommand, ARecordingWithoutADecayIsExit2) {
   TempDir dir;
   auto rec = testing::virtual_tap({{600.0, 0.01, 1.0, 0.0}}, 30, 1);
