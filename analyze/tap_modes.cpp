@@ -24,6 +24,9 @@ constexpr double kPeakOverMedian = 8;
 /// the fitted ones (ζ 3–5 % at 5–10 kHz) have fallen 20–60 dB by then, the
 /// thesis coupler's second mode (2.5 kHz, ζ 1.5 %) keeps 40 % of its energy.
 constexpr double kLateStart_s = 0.002;
+/// A fitted component whose amplitude is not shown to fall by more than this
+/// (σ·T, T the fitted window) over the window is a steady tone, not a mode.
+constexpr double kSteadyDecay = 0.1;
 
 /// The decay model's basis at (σ_k, ω_k): columns e^{−σt}cos ωt, e^{−σt}sin ωt.
 Eigen::MatrixXd basis(const Eigen::VectorXd& theta, double dt, Eigen::Index n) {
@@ -253,10 +256,29 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
       mode.frequency_window_Hz = std::abs(wl - wn) / (2 * pi);
       mode.damping_window = std::abs(sl / wl - mode.damping_ratio);
     }
+    // A steady tone (mains hum, a machine nearby) fits as a "mode" that does
+    // not decay: 0.3 % hum under a beam's tap became mode 1 at 50 Hz. Its
+    // decay over the fitted window, σ·T, not shown above kSteadyDecay (by 2
+    // standard errors) marks it; it stays in the fit, out of the modes.
+    const double window_s = static_cast<double>(m) * dt;
+    if ((sigma - 2 * std::sqrt(std::max(0.0, cs(0, 0)))) * window_s < kSteadyDecay) {
+      result.steady_tones_Hz.push_back(mode.frequency_Hz);
+      continue;
+    }
     result.modes.push_back(mode);
   }
+  std::sort(result.steady_tones_Hz.begin(), result.steady_tones_Hz.end());
   std::sort(result.modes.begin(), result.modes.end(),
             [](const TapMode& p, const TapMode& q) { return p.frequency_Hz < q.frequency_Hz; });
+  if (result.modes.empty())
+    throw InputError("shows no decaying mode: what rings after its largest peak is a steady tone (" +
+                     format_number(result.steady_tones_Hz.front(), 4) +
+                     " Hz); record a hammer tap on the link, with the link free to ring");
+  if (options.modes > 0 && result.modes.size() < static_cast<std::size_t>(options.modes))
+    throw InputError("shows " + std::to_string(result.modes.size()) + " decaying mode(s), fewer than the " +
+                     std::to_string(options.modes) + " asked (and a steady tone at " +
+                     format_number(result.steady_tones_Hz.front(), 4) + " Hz); give --modes " +
+                     std::to_string(result.modes.size()) + " or tap harder");
   if (options.modes > 0 && result.modes.size() > static_cast<std::size_t>(options.modes)) {
     for (std::size_t j = static_cast<std::size_t>(options.modes); j < result.modes.size(); ++j)
       result.higher_modes_Hz.push_back(result.modes[j].frequency_Hz);

@@ -28,6 +28,9 @@
 //    repeated from 2 ms later (kLateStart_s), and the change is each
 //    estimate's window sensitivity; the uncertainty printed is both in
 //    quadrature (TapMode::frequency_uncertainty_Hz).
+// 5. A fitted component that does not decay over the window (σ·T not above
+//    0.1 by 2 standard errors) is a steady tone (mains hum), named apart and
+//    not a mode; with --modes N the N lowest of the rest are reported.
 
 #include <span>
 #include <string>
@@ -63,6 +66,9 @@ struct TapResult {
   /// With TapOptions::modes = N: the modes found above the N lowest, fitted
   /// with them and not reported (Hz).
   std::vector<double> higher_modes_Hz;
+  /// Components that do not decay over the fitted window (mains hum, a
+  /// machine nearby): fitted with the modes, not among them (Hz).
+  std::vector<double> steady_tones_Hz;
   double tap_time_s = 0;       ///< the largest |value|, from the first sample
   double decay_start_s = 0, decay_duration_s = 0;
   double noise_rms = 0;     ///< the floor the decay ends at

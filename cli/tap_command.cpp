@@ -65,7 +65,8 @@ int run_tap(const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()("recording", po::value(&recording)->required(), "the tap recording (any format fourbar reads)")(
       "channel", po::value(&channel), "the accelerometer channel: column name or number from 1 (default: the first)")(
-      "modes", po::value(&modes), "report the N lowest modes, 1-8 (all that stand out are fitted; default: the spectrum's peaks, at most 4)")(
+      "modes", po::value(&modes),
+      "report the N lowest modes, 1-8 (all that stand out are fitted; default: the spectrum's peaks, at most 4)")(
       "link", po::value(&link), "the link tapped, for the rig-file lines: coupler (default) or rocker")(
       "sample-rate-hz", po::value(&sample_rate_hz), "sample rate of a text recording without a time column");
   po::positional_options_description pos;
@@ -99,6 +100,12 @@ int run_tap(const Invocation& inv) {
     std::cout << "  mode " << k + 1 << ": " << format_number(m.frequency_Hz, 6) << " ± "
               << format_number(m.frequency_uncertainty_Hz(), 2) << " Hz, damping ratio "
               << format_number(m.damping_ratio, 4) << " ± " << format_number(m.damping_uncertainty(), 2) << "\n";
+  }
+  if (!r.steady_tones_Hz.empty()) {
+    std::cout << "  steady tone(s), fitted and left out (no decay over the " << format_number(r.decay_duration_s, 3)
+              << " s fitted: mains hum or a machine nearby):";
+    for (double f : r.steady_tones_Hz) std::cout << " " << format_number(f, 5) << " Hz";
+    std::cout << "\n";
   }
   if (!r.higher_modes_Hz.empty()) {
     std::cout << "  also fitted, not reported (only the " << r.modes.size() << " lowest were asked for):";
