@@ -39,7 +39,6 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 
 try:
@@ -110,15 +109,9 @@ def main(argv):
     os.makedirs(work)
     rig_uniform = os.path.join(work, "rig_uniform.toml")
     uniform_rig(rig_uniform)
-    session = os.path.join(work, "generator")
-    subprocess.run([sys.executable, "-W", "ignore", os.path.join(HERE, "make_session.py"), "--out", session,
-                    "--rig", rig_uniform, "--recording", f"{RPM:g}:{CLEARANCE_MM}", "--turns", str(TURNS),
-                    "--warmup-turns", str(WARMUP), "--restitution", str(RESTITUTION), "--prior", "truth",
-                    "--vibration", "--vibration-coupling", "two-way", "--snr-db", "80", "--hum-mV", "0",
-                    "--seed", seed], check=True)
-    args, rec, manifest = lc.read_session(session)
-    sensors = {link: (c["position_mm"], c["offset_mm"]) for link, c in lc.tangential(manifest).items()}
-    offset_deg = next(c for c in manifest["channel"] if c["role"] == "crank_pulse")["crank_offset_deg"]
+    session, args, rec, manifest, sensors, offset_deg = lc.make_generator_session(
+        work, rig_uniform, RPM, CLEARANCE_MM, TURNS, WARMUP, RESTITUTION,
+        ["--vibration", "--vibration-coupling", "two-way"], seed)
 
     from links import pinned_free_roots  # noqa: E402
     b1 = pinned_free_roots(1)[0]

@@ -35,7 +35,6 @@ usage: check_friction.py FOURBAR_EXE WORK_DIR [SEED]
 """
 import os
 import shutil
-import subprocess
 import sys
 
 try:
@@ -68,16 +67,10 @@ def main(argv):
     seed = argv[2] if len(argv) > 2 else "505"
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    session = os.path.join(work, "generator")
-    subprocess.run([sys.executable, "-W", "ignore", os.path.join(HERE, "make_session.py"), "--out", session,
-                    "--rig", RIG, "--recording", f"{RPM:g}:{CLEARANCE_MM}", "--turns", str(TURNS),
-                    "--warmup-turns", str(WARMUP), "--restitution", str(RESTITUTION), "--friction", str(FRICTION),
-                    "--prior", "truth", "--snr-db", "80", "--hum-mV", "0", "--wander-pct", "0", "--seed", seed],
-                   check=True)
-    _, rec, manifest = lc.read_session(session)
+    session, _, rec, manifest, sensors, offset_deg = lc.make_generator_session(
+        work, RIG, RPM, CLEARANCE_MM, TURNS, WARMUP, RESTITUTION,
+        ["--friction", str(FRICTION), "--wander-pct", "0"], seed)
     channels = lc.tangential(manifest)
-    sensors = {link: (c["position_mm"], c["offset_mm"]) for link, c in channels.items()}
-    offset_deg = next(c for c in manifest["channel"] if c["role"] == "crank_pulse")["crank_offset_deg"]
     gen = lc.generator_turns(session, rec, manifest, BAND_HZ, TURNS - 2)
 
     keys = {"coupler_rocker_radial_mm": CLEARANCE_MM, "restitution": RESTITUTION,

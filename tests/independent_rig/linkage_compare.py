@@ -12,6 +12,7 @@ import csv
 import json
 import os
 import subprocess
+import sys
 import tomllib
 
 import numpy as np
@@ -37,6 +38,23 @@ def read_session(session):
     with open(os.path.join(session, os.path.splitext(rec["file"])[0] + ".toml"), "rb") as f:
         manifest = tomllib.load(f)
     return truth["arguments"], rec, manifest
+
+
+def make_generator_session(work, rig, rpm, clearance_mm, turns, warmup, restitution, extra, seed):
+    """Runs make_session.py into WORK/generator (one recording, the true prior,
+    80 dB SNR and no hum: physics, not the DAQ's noise); returns (session,
+    truth's arguments, the recording's truth, manifest, {link: (position_mm,
+    offset_mm)} of the tangential sensors, the crank pulse's crank_offset_deg)."""
+    session = os.path.join(work, "generator")
+    subprocess.run([sys.executable, "-W", "ignore", os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                                  "make_session.py"),
+                    "--out", session, "--rig", rig, "--recording", f"{rpm:g}:{clearance_mm}", "--turns", str(turns),
+                    "--warmup-turns", str(warmup), "--restitution", str(restitution), "--prior", "truth",
+                    "--snr-db", "80", "--hum-mV", "0", "--seed", str(seed)] + extra, check=True)
+    args, rec, manifest = read_session(session)
+    sensors = {link: (c["position_mm"], c["offset_mm"]) for link, c in tangential(manifest).items()}
+    offset_deg = next(c for c in manifest["channel"] if c["role"] == "crank_pulse")["crank_offset_deg"]
+    return session, args, rec, manifest, sensors, offset_deg
 
 
 def tangential(manifest):

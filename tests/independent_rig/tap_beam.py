@@ -193,8 +193,8 @@ def main(argv):
         f, w = judge(path, printed, truth + higher, f"{snr} dB seed {seed} {' '.join(modes) or '(modes found)'}")
         failures += f
         worst = tuple(max(a, b) for a, b in zip(worst, w))
-    print(f"truth: " + ", ".join(f"{f:.3f} Hz ζ {z:.4f}" for f, z in truth) +
-          f"; in the signal too: " + ", ".join(f"{f:.0f} Hz ζ {z:.3f}" for f, z in higher))
+    print("truth: " + ", ".join(f"{f:.3f} Hz ζ {z:.4f}" for f, z in truth) +
+          "; in the signal too: " + ", ".join(f"{f:.0f} Hz ζ {z:.3f}" for f, z in higher))
     print(f"worst frequency error {worst[0]:.2e}, worst damping-ratio error {100 * worst[1]:.1f} %, "
           f"truth at most {worst[2]:.1f} printed uncertainties away")
     return 1 if failures else 0
