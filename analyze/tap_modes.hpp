@@ -7,6 +7,10 @@
 //    after it for twice the time its envelope (RMS over 5 ms blocks) takes
 //    to reach 1.5 times the noise floor (the RMS before the tap, or of the
 //    record's last tenth).
+//    A later strike of the hammer (a bounce) is found where a linear
+//    predictor of the free decay fails (its error's RMS over 0.5 ms blocks
+//    12 times the median block's); the decay then runs from 0.5 ms after
+//    the last strike, since only there is it free.
 //    No decay (the record's last tenth within 10 dB of the decay's first
 //    block, or an envelope that falls less than 6 dB) is an error.
 // 2. Modes one at a time: the strongest peak of the zero-padded spectrum
@@ -70,6 +74,9 @@ struct TapResult {
   /// machine nearby): fitted with the modes, not among them (Hz).
   std::vector<double> steady_tones_Hz;
   double tap_time_s = 0;       ///< the largest |value|, from the first sample
+  /// Later strikes of the hammer (a bounce), from the first sample: the
+  /// decay is fitted from after the last of them (step 1).
+  std::vector<double> later_strikes_s;
   double decay_start_s = 0, decay_duration_s = 0;
   double noise_rms = 0;     ///< the floor the decay ends at
   double residual_rms = 0;  ///< of the fit over the decay

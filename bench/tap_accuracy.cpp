@@ -31,19 +31,20 @@ int main() {
       {"close: 600/625 Hz, ζ 0.01/0.015", {{600.0, 0.01, 1.0, 0.0}, {625.0, 0.015, 0.7, 2.0}}},
       {"thesis coupler: 614/2456 Hz, ζ 0.02/0.015", {{614.1, 0.02, 1.0, 0.5}, {2456.3, 0.015, 0.5, 1.0}}},
   };
-  std::printf("| case | SNR (dB) | worst f error | worst ζ error | truth within 2σ (f, ζ) | within 2u (f, ζ) | median u/σ (f) | ms per fit |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf("| case | SNR (dB) | worst f error | worst ζ error | truth within 2σ (f, ζ) | within 2u (f, ζ) | median u/σ (f) | bounces found | ms per fit |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   constexpr int kSeeds = 20;
   for (const Case& c : cases)
     for (double snr : {20.0, 30.0, 40.0}) {
       double worst_f = 0, worst_z = 0, ms = 0;
-      int inside_f = 0, inside_z = 0, inside_uf = 0, inside_uz = 0, total = 0;
+      int inside_f = 0, inside_z = 0, inside_uf = 0, inside_uz = 0, total = 0, bounces = 0;
       std::vector<double> inflation;
       for (int seed = 1; seed <= kSeeds; ++seed) {
         const auto rec = testing::virtual_tap(c.modes, snr, static_cast<unsigned>(seed) + 100);
         const auto t0 = std::chrono::steady_clock::now();
         const TapResult r = identify_tap_modes(rec.samples, rec.sample_rate_hz);
         ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        bounces += r.later_strikes_s.empty() ? 0 : 1;
         if (r.modes.size() != c.modes.size()) {
           std::printf("| %s | %.0f | found %zu modes (seed %d) | | | |\n", c.name.c_str(), snr, r.modes.size(), seed);
           continue;
@@ -63,9 +64,9 @@ int main() {
       }
       std::sort(inflation.begin(), inflation.end());
       const double median_inflation = inflation.empty() ? 0.0 : inflation[inflation.size() / 2];
-      std::printf("| %s | %.0f | %.2e | %.1f %% | %d/%d, %d/%d | %d/%d, %d/%d | %.2f | %.0f |\n", c.name.c_str(), snr,
-                  worst_f, 100 * worst_z, inside_f, total, inside_z, total, inside_uf, total, inside_uz, total,
-                  median_inflation, ms / kSeeds);
+      std::printf("| %s | %.0f | %.2e | %.1f %% | %d/%d, %d/%d | %d/%d, %d/%d | %.2f | %d/%d | %.0f |\n", c.name.c_str(),
+                  snr, worst_f, 100 * worst_z, inside_f, total, inside_z, total, inside_uf, total, inside_uz, total,
+                  median_inflation, bounces, kSeeds, ms / kSeeds);
     }
   return 0;
 }

@@ -23,9 +23,11 @@ constexpr const char* kTapDetails =
     "prints each mode's natural frequency and damping ratio with its uncertainty (the\n"
     "fit's standard error and its change when the fit starts 2 ms later), then the\n"
     "[<link>.elastic] lines for the rig file, with a '#' note when two modes' ratio\n"
-    "is not a pinned link's. Record the link mounted as in the rig (pinned at both\n"
-    "joints), the accelerometer where the sensor sits, from before the tap until\n"
-    "the ringing has died away. Exit 2 when there is no decay.\n"
+    "is not a pinned link's. A bounce of the hammer (a second strike) is found and\n"
+    "named; the decay is fitted from after the last strike. Record the link mounted\n"
+    "as in the rig (pinned at both joints), the accelerometer where the sensor sits,\n"
+    "from before the tap until the ringing has died away. Exit 2 when there is no\n"
+    "decay.\n"
     "docs/flex.md \"Tap test\".\n";
 
 std::vector<double> read_channel(const std::string& file, const ReaderOptions& options, const std::string& channel,
@@ -95,6 +97,13 @@ int run_tap(const Invocation& inv) {
   std::cout << recording << ": channel '" << name << "', " << format_number(fs) << " Hz, tap at "
             << format_number(r.tap_time_s, 4) << " s, " << format_number(r.decay_duration_s, 3)
             << " s of decay fitted (" << format_number(r.decay_db, 3) << " dB to the noise floor)\n";
+  if (!r.later_strikes_s.empty()) {
+    std::cout << "  the hammer struck again (a bounce) at";
+    for (double t : r.later_strikes_s)
+      std::cout << " " << format_number(t, 4) << " s (+" << format_number(1e3 * (t - r.tap_time_s), 3) << " ms)";
+    std::cout << "; the decay is fitted from " << format_number(r.decay_start_s, 4)
+              << " s, after the last strike, where it is free (a quick, firm tap avoids the bounce)\n";
+  }
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const TapMode& m = r.modes[k];
     std::cout << "  mode " << k + 1 << ": " << format_number(m.frequency_Hz, 6) << " ± "

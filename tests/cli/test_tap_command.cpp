@@ -82,6 +82,24 @@ TEST(TapCommand, NotesAModeRatioThatIsNotALinksAndNamesTheHigherModesFitted) {
   EXPECT_EQ(p.out.find("# note"), std::string::npos) << p.out;
 }
 
+// A bounce of the hammer is named on its own line, with the time the fit
+// starts from, and the pasted lines hold the true modes.
+TEST(TapCommand, NamesABounceOfTheHammer) {
+  TempDir dir;
+  auto rec = testing::virtual_tap({{614.1, 0.02, 1.0, 0.5}, {2456.3, 0.015, 0.5, 1.0}}, 30, 2);
+  const auto bounce =
+      testing::virtual_tap({{614.1, 0.02, 0.4, 0.5}, {2456.3, 0.015, 0.2, 1.0}}, 300, 9, rec.sample_rate_hz, 1.0, 0.105);
+  for (std::size_t i = 0; i < rec.samples.size(); ++i) rec.samples[i] += bounce.samples[i] - 0.3;
+  const auto r = run_fourbar("tap " + dir.write("bounce.csv", testing::tap_csv(rec)).string() + " --modes 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("struck again \\(a bounce\\) at 0\\.105 s \\(\\+4\\.[0-9]+ ms\\)")))
+      << r.out;
+  const auto f = numbers_after(r.out, "mode_frequencies_Hz");
+  ASSERT_EQ(f.size(), 2u) << r.out;
+  EXPECT_NEAR(f[0] / 614.1, 1.0, 0.005) << r.out;
+  EXPECT_NEAR(f[1] / 2456.3, 1.0, 0.005) << r.out;
+}
+
 TEST(TapCommand, ARecordingWithoutADecayIsExit2) {
   TempDir dir;
   auto rec = testing::virtual_tap({{600.0, 0.01, 1.0, 0.0}}, 30, 1);
