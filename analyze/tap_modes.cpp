@@ -236,11 +236,55 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
   // after the tap made the beam's fit report 603.8 Hz, ζ 0.117 as its
   // second mode (truth 2451.7 Hz, 0.015). The decay after the last strike
   // is fitted, and the strikes are reported.
+  // An overloaded recorder clips the tap's first cycles flat at its limits;
+  // their samples are not the link's motion (the predictor below took them
+  // for strikes, and at a limit of 0.2 of the peak the beam's second mode
+  // came out at 602 Hz). Three or more samples at the record's largest or
+  // smallest value (a continuous signal has one each), two of them
+  // neighbours, are a clip; the decay is fitted from 0.5 ms after the last
+  // of them, where it is free again.
+  const auto [lo_it, hi_it] = std::minmax_element(samples.begin(), samples.end());
+  const double hi = *hi_it, lo = *lo_it;
+  if (hi > lo) {
+    const double rail = 1e-12 * (hi - lo);
+    std::size_t count = 0, last = 0;
+    bool flat = false;  // two neighbours at the same limit: a flat top
+    for (std::size_t i = 0; i < n; ++i)
+      if (samples[i] >= hi - rail || samples[i] <= lo + rail) {
+        flat = flat || (count > 0 && last + 1 == i && samples[i] == samples[last]);
+        ++count, last = i;
+      }
+    if (2 * count > n)
+      throw InputError("sits at its largest or smallest value (" + format_number(lo) + ", " + format_number(hi) +
+                       ") in " + std::to_string(count) + " of its " + std::to_string(n) +
+                       " samples: a digital line or a saturated channel, not an accelerometer's tap; give the "
+                       "accelerometer's --channel, or set the recorder's input range larger");
+    // A steady tone sampled in step with the recorder repeats its extremes
+    // exactly, to the record's end; a clipped tap's flat tops end before
+    // its decay does.
+    if (count >= 3 && flat && last < n - n / 10) {
+      result.clipped_samples = count;
+      result.clipped_until_s = static_cast<double>(last) / fs;
+      start = std::max(start, std::min(n - 1, last + std::max<std::size_t>(1, static_cast<std::size_t>(5e-4 * fs))));
+    }
+  }
+  // What to do about too little decay: a clipped tap needs a softer one.
+  const std::string harder =
+      result.clipped_samples > 0
+          ? "tap softer or set the recorder's input range larger (the record is clipped until " +
+                format_number(result.clipped_until_s) + " s, and only the decay after that is fitted)"
+          : "tap harder";
   for (const std::size_t k : later_strikes(samples, start, offset, fs)) {
     result.later_strikes_s.push_back(static_cast<double>(k) / fs);
     start = std::min(n - 1, k + std::max<std::size_t>(1, static_cast<std::size_t>(5e-4 * fs)));
   }
   const std::size_t block = std::max<std::size_t>(16, static_cast<std::size_t>(0.005 * fs));
+  if (start + 4 * block > n && result.clipped_samples > 0)
+    throw InputError("is clipped: " + std::to_string(result.clipped_samples) + " samples sit at its limits (" +
+                     format_number(lo) + ", " + format_number(hi) + "), the last at " +
+                     format_number(result.clipped_until_s) +
+                     " s, too near its end for a free decay to follow; tap softer or set the recorder's input "
+                     "range larger, and record until the ringing has died away");
   if (start + 4 * block > n)
     throw InputError("has its largest peak at " + format_number(result.tap_time_s) +
                      " s, too near its end for a decay to follow; record from before the tap until the ringing "
@@ -278,7 +322,7 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
   std::vector<std::pair<double, double>> peaks = spectrum_peaks(y, fs, kPeakOverMedian);
   if (peaks.empty())
     throw InputError(
-        "shows no resonance peak in its decay (nothing rings above the noise); tap harder, or closer "
+        "shows no resonance peak in its decay (nothing rings above the noise); " + harder + ", or closer "
         "to the middle of the link");
   // With --modes N the N lowest are wanted, not the N strongest: a hammer
   // excites a link's higher modes strongly in acceleration (∝ ω²), and a
@@ -296,7 +340,7 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
       if (options.modes > theta.size() / 2)
         throw InputError("shows " + std::to_string(theta.size() / 2) + " mode(s) in its decay, fewer than the " +
                          std::to_string(options.modes) + " asked; give --modes " + std::to_string(theta.size() / 2) +
-                         " or tap harder");
+                         " or " + harder);
       break;
     }
     Eigen::VectorXd grown(theta.size() + 2);
@@ -369,7 +413,7 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
     throw InputError("shows " + std::to_string(result.modes.size()) + " decaying mode(s), fewer than the " +
                      std::to_string(options.modes) + " asked (and a steady tone at " +
                      format_number(result.steady_tones_Hz.front(), 4) + " Hz); give --modes " +
-                     std::to_string(result.modes.size()) + " or tap harder");
+                     std::to_string(result.modes.size()) + " or " + harder);
   if (options.modes > 0 && result.modes.size() > static_cast<std::size_t>(options.modes)) {
     for (std::size_t j = static_cast<std::size_t>(options.modes); j < result.modes.size(); ++j)
       result.higher_modes_Hz.push_back(result.modes[j].frequency_Hz);

@@ -7,6 +7,9 @@
 //    after it for twice the time its envelope (RMS over 5 ms blocks) takes
 //    to reach 1.5 times the noise floor (the RMS before the tap, or of the
 //    record's last tenth).
+//    A record clipped by an overloaded recorder (3 or more samples at its
+//    largest or smallest value, two of them neighbours, the last before the
+//    record's last tenth) is fitted from 0.5 ms after the last of them.
 //    A later strike of the hammer (a bounce) is found where a linear
 //    predictor of the free decay fails (its error's RMS over 0.5 ms blocks
 //    12 times the median block's); the decay then runs from 0.5 ms after
@@ -77,6 +80,11 @@ struct TapResult {
   /// Later strikes of the hammer (a bounce), from the first sample: the
   /// decay is fitted from after the last of them (step 1).
   std::vector<double> later_strikes_s;
+  /// Samples at the record's largest or smallest value when they make a
+  /// clip (step 1: an overloaded recorder's flat tops; 0: not clipped), and the last one's
+  /// time: the decay is fitted from after it.
+  std::size_t clipped_samples = 0;
+  double clipped_until_s = 0;
   double decay_start_s = 0, decay_duration_s = 0;
   double noise_rms = 0;     ///< the floor the decay ends at
   double residual_rms = 0;  ///< of the fit over the decay

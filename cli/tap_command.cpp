@@ -24,7 +24,8 @@ constexpr const char* kTapDetails =
     "fit's standard error and its change when the fit starts 2 ms later), then the\n"
     "[<link>.elastic] lines for the rig file, with a '#' note when two modes' ratio\n"
     "is not a pinned link's. A bounce of the hammer (a second strike) is found and\n"
-    "named; the decay is fitted from after the last strike. Record the link mounted\n"
+    "named, as is a clipped tap (samples at the recorder's limits); the decay is\n"
+    "fitted from after the last strike or clipped sample. Record the link mounted\n"
     "as in the rig (pinned at both joints), the accelerometer where the sensor sits,\n"
     "from before the tap until the ringing has died away. Exit 2 when there is no\n"
     "decay.\n"
@@ -97,6 +98,10 @@ int run_tap(const Invocation& inv) {
   std::cout << recording << ": channel '" << name << "', " << format_number(fs) << " Hz, tap at "
             << format_number(r.tap_time_s, 4) << " s, " << format_number(r.decay_duration_s, 3)
             << " s of decay fitted (" << format_number(r.decay_db, 3) << " dB to the noise floor)\n";
+  if (r.clipped_samples > 0)
+    std::cout << "  clipped: " << r.clipped_samples << " samples at the recorder's limits, the last at "
+              << format_number(r.clipped_until_s, 4) << " s; the decay is fitted from after them (tap softer, or "
+              << "set a larger input range, to fit the loudest part too)\n";
   if (!r.later_strikes_s.empty()) {
     std::cout << "  the hammer struck again (a bounce) at";
     for (double t : r.later_strikes_s)

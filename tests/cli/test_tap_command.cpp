@@ -11,6 +11,7 @@
 
 #include "analyze/tap_recording.hpp"
 #include "support/clean_failure.hpp"
+#include "support/realdata.hpp"
 #include "support/run_command.hpp"
 
 namespace fourbar {
@@ -109,6 +110,22 @@ TEST(TapCommand, ARecordingWithoutADecayIsExit2) {
   const auto r = run_fourbar("tap " + file.string());
   testing::expect_clean_failure(r, "hum.csv", dir.path() / "none");
   EXPECT_NE(r.err.find("no free decay"), std::string::npos) << r.err;
+}
+
+// Files other software wrote (../shared/realdata): a LabVIEW digital line
+// (0/1) and a microphone record of a steady sound. Neither is a tap; both
+// are refused with a message that says what they are, and the digital line
+// is not called a clipped tap.
+TEST(TapCommand, OtherSoftwaresRecordsThatAreNoTapAreExit2) {
+  FOURBAR_REALDATA_FILE(tdms, "tdms/Digital_Input.tdms");
+  TempDir dir;
+  const auto digital = run_fourbar("tap " + tdms.string());
+  testing::expect_clean_failure(digital, "a digital line or a saturated channel", dir.path() / "none");
+  EXPECT_EQ(digital.err.find("clipped"), std::string::npos) << digital.err;
+  for (const char* uff : {"uff58/Sample_UFF58_ascii.uff", "uff58/Sample_UFF58b_bin.uff"}) {
+    const auto r = run_fourbar("tap " + (testing::realdata_dir() / uff).string());
+    testing::expect_clean_failure(r, "no free decay", dir.path() / "none");
+  }
 }
 
 TEST(TapCommand, BadElasticRigKeysAreExit2) {
