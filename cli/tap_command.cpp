@@ -103,11 +103,29 @@ int run_tap(const Invocation& inv) {
               << format_number(r.clipped_until_s, 4) << " s; the decay is fitted from after them (tap softer, or "
               << "set a larger input range, to fit the loudest part too)\n";
   if (!r.later_strikes_s.empty()) {
-    std::cout << "  the hammer struck again (a bounce) at";
-    for (double t : r.later_strikes_s)
-      std::cout << " " << format_number(t, 4) << " s (+" << format_number(1e3 * (t - r.tap_time_s), 3) << " ms)";
-    std::cout << "; the decay is fitted from " << format_number(r.decay_start_s, 4)
-              << " s, after the last strike, where it is free (a quick, firm tap avoids the bounce)\n";
+    // A bounce follows its strike within milliseconds; a strike later than
+    // kBounceWithin_s is a tap of its own (a record of several taps).
+    constexpr double kBounceWithin_s = 0.05;
+    std::vector<double> bounces, taps;
+    double previous = r.tap_time_s;
+    for (double t : r.later_strikes_s) {
+      (t - previous < kBounceWithin_s ? bounces : taps).push_back(t);
+      previous = t;
+    }
+    if (!bounces.empty()) {
+      std::cout << "  the hammer struck again (a bounce) at";
+      for (double t : bounces)
+        std::cout << " " << format_number(t, 4) << " s (+" << format_number(1e3 * (t - r.tap_time_s), 3) << " ms)";
+      std::cout << "\n";
+    }
+    if (!taps.empty()) {
+      std::cout << "  the record holds " << taps.size() << " more tap(s), at";
+      for (double t : taps) std::cout << " " << format_number(t, 4) << " s";
+      std::cout << "; one tap is fitted, the last (cut the record to fit another)\n";
+    }
+    std::cout << "  the decay is fitted from " << format_number(r.decay_start_s, 4)
+              << " s, after the last strike, where it is free"
+              << (bounces.empty() ? "" : " (a quick, firm tap avoids the bounce)") << "\n";
   }
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const TapMode& m = r.modes[k];

@@ -101,6 +101,25 @@ TEST(TapCommand, NamesABounceOfTheHammer) {
   EXPECT_NEAR(f[1] / 2456.3, 1.0, 0.005) << r.out;
 }
 
+// Several taps in one record (a technician's habit): the later ones are
+// named as taps, not bounces, and the last one's decay is fitted.
+TEST(TapCommand, NamesFurtherTapsInTheRecord) {
+  TempDir dir;
+  const std::vector<testing::TapModeTruth> truth = {{614.1, 0.02, 1.0, 0.5}, {2456.3, 0.015, 0.5, 1.0}};
+  auto rec = testing::virtual_tap(truth, 40, 3, 25600, 1.6, 0.1);
+  const auto second =
+      testing::virtual_tap({{614.1, 0.02, 0.7, 1.5}, {2456.3, 0.015, 0.35, 0.2}}, 300, 4, 25600, 1.6, 0.9);
+  for (std::size_t i = 0; i < rec.samples.size(); ++i) rec.samples[i] += second.samples[i] - 0.3;
+  const auto r = run_fourbar("tap " + dir.write("two_taps.csv", testing::tap_csv(rec)).string() + " --modes 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("the record holds 1 more tap(s), at 0.9"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("bounce"), std::string::npos) << r.out;
+  const auto f = numbers_after(r.out, "mode_frequencies_Hz");
+  ASSERT_EQ(f.size(), 2u) << r.out;
+  EXPECT_NEAR(f[0] / 614.1, 1.0, 0.005) << r.out;
+  EXPECT_NEAR(f[1] / 2456.3, 1.0, 0.005) << r.out;
+}
+
 TEST(TapCommand, ARecordingWithoutADecayIsExit2) {
   TempDir dir;
   auto rec = testing::virtual_tap({{600.0, 0.01, 1.0, 0.0}}, 30, 1);
