@@ -154,6 +154,43 @@ void fit_decay(Eigen::VectorXd& theta, const Eigen::VectorXd& y, double dt, doub
   }
 }
 
+/// Samples at the record's limits: an overloaded recorder clips a hard tap's
+/// first cycles flat there (the bounce search took them for strikes, and at a
+/// limit of 0.2 of the peak the beam's second mode came out at 602 Hz).
+struct Clip {
+  std::size_t samples = 0;  ///< 0: not clipped
+  std::size_t last = 0;     ///< the last clipped sample
+  double low = 0, high = 0; ///< the record's limits
+};
+
+/// Three or more samples at the record's largest or smallest value (a
+/// continuous signal has one each), two of them neighbours (a flat top), the
+/// last before the record's last tenth (a steady tone sampled in step with
+/// the recorder repeats its extremes exactly, to the record's end) are a
+/// clip. Throws InputError when most samples sit at the limits: a digital
+/// line or a saturated channel, not a tap.
+Clip find_clip(std::span<const double> x) {
+  const std::size_t n = x.size();
+  const auto [lo_it, hi_it] = std::minmax_element(x.begin(), x.end());
+  Clip c;
+  c.low = *lo_it, c.high = *hi_it;
+  if (!(c.high > c.low)) return c;
+  const double rail = 1e-12 * (c.high - c.low);
+  std::size_t count = 0, last = 0;
+  bool flat = false;
+  for (std::size_t i = 0; i < n; ++i)
+    if (x[i] >= c.high - rail || x[i] <= c.low + rail) {
+      flat = flat || (count > 0 && last + 1 == i && x[i] == x[last]);
+      ++count, last = i;
+    }
+  if (2 * count > n)
+    throw InputError("sits at its largest or smallest value (" + format_number(c.low) + ", " + format_number(c.high) +
+                     ") in " + std::to_string(count) + " of its " + std::to_string(n) +
+                     " samples: a digital line or a saturated channel, not an accelerometer's tap; give the "
+                     "accelerometer's --channel, or set the recorder's input range larger");
+  if (count >= 3 && flat && last < n - n / 10) c.samples = count, c.last = last;
+  return c;
+}
 
 /// Later strikes of the hammer (it bounced, or was struck twice): samples
 /// where a free decay's linear prediction fails. A sum of damped sinusoids
@@ -232,41 +269,17 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
   };
   const double noise = before.empty() ? centred_rms(tail) : centred_rms(before);
   std::size_t start = std::min(n - 1, tap + std::max<std::size_t>(1, static_cast<std::size_t>(2e-4 * fs)));
-  // A free decay starts only after the hammer's last strike: a bounce 4 ms
-  // after the tap made the beam's fit report 603.8 Hz, ζ 0.117 as its
-  // second mode (truth 2451.7 Hz, 0.015). The decay after the last strike
-  // is fitted, and the strikes are reported.
-  // An overloaded recorder clips the tap's first cycles flat at its limits;
-  // their samples are not the link's motion (the predictor below took them
-  // for strikes, and at a limit of 0.2 of the peak the beam's second mode
-  // came out at 602 Hz). Three or more samples at the record's largest or
-  // smallest value (a continuous signal has one each), two of them
-  // neighbours, are a clip; the decay is fitted from 0.5 ms after the last
-  // of them, where it is free again.
-  const auto [lo_it, hi_it] = std::minmax_element(samples.begin(), samples.end());
-  const double hi = *hi_it, lo = *lo_it;
-  if (hi > lo) {
-    const double rail = 1e-12 * (hi - lo);
-    std::size_t count = 0, last = 0;
-    bool flat = false;  // two neighbours at the same limit: a flat top
-    for (std::size_t i = 0; i < n; ++i)
-      if (samples[i] >= hi - rail || samples[i] <= lo + rail) {
-        flat = flat || (count > 0 && last + 1 == i && samples[i] == samples[last]);
-        ++count, last = i;
-      }
-    if (2 * count > n)
-      throw InputError("sits at its largest or smallest value (" + format_number(lo) + ", " + format_number(hi) +
-                       ") in " + std::to_string(count) + " of its " + std::to_string(n) +
-                       " samples: a digital line or a saturated channel, not an accelerometer's tap; give the "
-                       "accelerometer's --channel, or set the recorder's input range larger");
-    // A steady tone sampled in step with the recorder repeats its extremes
-    // exactly, to the record's end; a clipped tap's flat tops end before
-    // its decay does.
-    if (count >= 3 && flat && last < n - n / 10) {
-      result.clipped_samples = count;
-      result.clipped_until_s = static_cast<double>(last) / fs;
-      start = std::max(start, std::min(n - 1, last + std::max<std::size_t>(1, static_cast<std::size_t>(5e-4 * fs))));
-    }
+  // After a clip or a later strike the decay is fitted from 0.5 ms on: a
+  // strike's own end (the hammer's contact, about 0.25 ms; the DAQ filter).
+  const std::size_t after = std::max<std::size_t>(1, static_cast<std::size_t>(5e-4 * fs));
+  // An overloaded recorder's flat tops are not the link's motion: the decay
+  // is fitted from after the last clipped sample, where it is free again
+  // (find_clip).
+  const Clip clip = find_clip(samples);
+  if (clip.samples > 0) {
+    result.clipped_samples = clip.samples;
+    result.clipped_until_s = static_cast<double>(clip.last) / fs;
+    start = std::max(start, std::min(n - 1, clip.last + after));
   }
   // What to do about too little decay: a clipped tap needs a softer one.
   const std::string harder =
@@ -274,14 +287,18 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
           ? "tap softer or set the recorder's input range larger (the record is clipped until " +
                 format_number(result.clipped_until_s) + " s, and only the decay after that is fitted)"
           : "tap harder";
+  // A free decay starts only after the hammer's last strike: a bounce 4 ms
+  // after the tap made the beam's fit report 603.8 Hz, ζ 0.117 as its
+  // second mode (truth 2451.7 Hz, 0.015). The decay after the last strike
+  // is fitted, and the strikes are reported.
   for (const std::size_t k : later_strikes(samples, start, offset, fs)) {
     result.later_strikes_s.push_back(static_cast<double>(k) / fs);
-    start = std::min(n - 1, k + std::max<std::size_t>(1, static_cast<std::size_t>(5e-4 * fs)));
+    start = std::min(n - 1, k + after);
   }
   const std::size_t block = std::max<std::size_t>(16, static_cast<std::size_t>(0.005 * fs));
   if (start + 4 * block > n && result.clipped_samples > 0)
     throw InputError("is clipped: " + std::to_string(result.clipped_samples) + " samples sit at its limits (" +
-                     format_number(lo) + ", " + format_number(hi) + "), the last at " +
+                     format_number(clip.low) + ", " + format_number(clip.high) + "), the last at " +
                      format_number(result.clipped_until_s) +
                      " s, too near its end for a free decay to follow; tap softer or set the recorder's input "
                      "range larger, and record until the ringing has died away");
