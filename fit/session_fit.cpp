@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <optional>
 
 #include <nlopt.h>
 
@@ -35,12 +36,22 @@ ContactParameters point(const FitOptions& o, const double* x) {
   return p;
 }
 
+/// One compared statistic where model and measurement differ most (before
+/// the modelling offset is profiled out): what a rejection names.
+struct WorstTerm {
+  std::size_t recording = 0;
+  std::string what;  ///< e.g. "spread of alpha3"
+  double model = 0, measured = 0, measured_se = 0, model_se = 0;
+  double z = 0;  ///< difference over its standard error (transformed scale)
+};
+
 struct Chi2 {
   double total = 0;
   int terms = 0;
   std::vector<double> by_recording;
   std::vector<int> terms_by_recording;
   std::vector<std::pair<std::string, double>> offsets;  ///< η̂ per compared statistic ("band_excess" last)
+  std::optional<WorstTerm> worst;
 };
 
 /// One compared statistic's residuals over the recordings and links, with
@@ -81,6 +92,10 @@ Chi2 chi2_at(const SimulationCache& cache, const FitOptions& o, const ContactPar
         const double var = std::pow(transformed_se(s, meas->value[si], meas->standard_error[si]), 2) +
                            std::pow(transformed_se(s, m.value[si], m.standard_error[si]), 2);
         per_statistic[k].add(d, var, r);
+        const double z = d / std::sqrt(var);
+        if (!c.worst || std::abs(z) > std::abs(c.worst->z))
+          c.worst = WorstTerm{r, std::string(name_of(s)) + " of " + std::string(name_of(l)), m.value[si],
+                              meas->value[si], meas->standard_error[si], m.standard_error[si], z};
       }
       const auto& band = targets[r].measured_band[li];
       if (!o.use_band || !band) continue;
@@ -93,6 +108,10 @@ Chi2 chi2_at(const SimulationCache& cache, const FitOptions& o, const ContactPar
       const double var = std::pow(band->standard_error / std::max(band->excess, 1e-30), 2) +
                          std::pow(m.standard_error / std::max(m.excess, 1e-30), 2);
       band_residuals.add(d, var, r);
+      const double z = d / std::sqrt(var);
+      if (!c.worst || std::abs(z) > std::abs(c.worst->z))
+        c.worst = WorstTerm{r, "band energy of " + std::string(name_of(l)), m.excess, band->excess,
+                            band->standard_error, m.standard_error, z};
     }
   }
   // Each statistic with its modelling-choice offset profiled out (a statistic
@@ -243,6 +262,20 @@ std::size_t expected_simulations(std::size_t recordings, const FitOptions& o) {
   const int profile = o.profile_points_e * (o.fit_friction ? o.profile_points_mu : 1);
   const int points = o.global_evaluations + o.local_evaluations + profile + o.replicates + 1;  // + the prior
   return recordings * static_cast<std::size_t>(std::max(1, points) + 2);                       // + the runs for a
+}
+
+/// "; the largest difference: …" for a rejection's note: the statistic, the
+/// recording, both values with their standard errors (from their turns) and
+/// the difference in standard errors. A recording whose turns repeat (a
+/// periodic motion) has a spread with a tiny error; the model's run from
+/// one start may be in another motion (docs/fit.md, the e = 0.8 session).
+std::string worst_term_text(const Chi2& c, const std::vector<RecordingTarget>& targets) {
+  if (!c.worst) return "";
+  const WorstTerm& w = *c.worst;
+  return "; the largest difference: the " + w.what + " in " + targets[w.recording].name + ", model " +
+         format_number(w.model, 4) + " ± " + format_number(w.model_se, 2) + " against measured " +
+         format_number(w.measured, 4) + " ± " + format_number(w.measured_se, 2) + ", " +
+         format_number(std::abs(w.z), 3) + " standard errors";
 }
 
 FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, const ContactParameters& prior,
@@ -435,7 +468,7 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
     out.notes.push_back("at the best parameters the statistics still differ by " +
                         format_number(std::sqrt(out.chi2 / out.terms), 2) +
                         " standard errors (RMS; most in " + out.recordings[worst].name + ", " +
-                        format_number(std::sqrt(per_term(worst)), 2) +
+                        format_number(std::sqrt(per_term(worst)), 2) + worst_term_text(at_best, targets) +
                         "): the model family does not describe this bearing; the values are effective ones and their "
                         "intervals, which assume the model describes the measurement, are not uncertainties");
     reject_model_family(out,

@@ -14,6 +14,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <regex>
 
 #include <nlohmann/json.hpp>
 
@@ -64,12 +65,23 @@ bool says_model_family_differs(const nlohmann::json& fit) {
   return false;
 }
 
+/// The rejection's note names the statistic that differs most, with both
+/// values and their standard errors.
+bool names_the_largest_difference(const nlohmann::json& fit) {
+  const std::regex pattern("the largest difference: the [a-z_ ]+ of alpha[34] in [^,]+, model [-0-9.e+]+ ± [-0-9.e+]+ "
+                           "against measured [-0-9.e+]+ ± [-0-9.e+]+, [0-9.e+]+ standard errors");
+  for (const auto& n : fit["notes"])
+    if (std::regex_search(n.get<std::string>(), pattern)) return true;
+  return false;
+}
+
 TEST(FitCrossModel, CompliantSessionFittedWithTheImpactModelSaysTheModelFamilyDiffers) {
   testing::TempDir dir;
   const nlohmann::json compliant = fit_of(dir, "compliant", "model = \"compliant\"\ncontact_stiffness_N_per_m_n = 1e10");
   const double per_term = compliant["chi2_per_term"].get<double>();
   EXPECT_GT(per_term, 10.0) << compliant.dump(1);  // noise alone: ≈ 1
   EXPECT_TRUE(says_model_family_differs(compliant)) << compliant.dump(1);
+  EXPECT_TRUE(names_the_largest_difference(compliant)) << compliant["notes"].dump(1);
   // Still an effective e inside the box, reported as such: the family
   // rejected first, e not identifiable, its interval not zero-width.
   const double e = compliant["parameters"]["restitution"]["value"].get<double>();
