@@ -24,6 +24,18 @@ struct TapRecording {
   double sample_rate_hz = 0;
 };
 
+/// The modes' free decay `t` seconds after a strike (0 before it).
+inline double ringing(const std::vector<TapModeTruth>& modes, double t) {
+  double v = 0;
+  if (t >= 0)
+    for (const auto& m : modes) {
+      const double w = 2 * std::numbers::pi * m.frequency_Hz;
+      const double wd = w * std::sqrt(1 - m.damping_ratio * m.damping_ratio);
+      v += m.amplitude * std::exp(-m.damping_ratio * w * t) * std::sin(wd * t + m.phase_rad);
+    }
+  return v;
+}
+
 inline TapRecording virtual_tap(const std::vector<TapModeTruth>& modes, double snr_db, unsigned seed,
                                 double sample_rate_hz = 25600, double duration_s = 1.0, double tap_time_s = 0.1) {
   TapRecording r;
@@ -37,16 +49,16 @@ inline TapRecording virtual_tap(const std::vector<TapModeTruth>& modes, double s
   r.samples.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = static_cast<double>(i) / sample_rate_hz - tap_time_s;
-    double v = 0.3;  // the accelerometer's offset
-    if (t >= 0)
-      for (const auto& m : modes) {
-        const double w = 2 * std::numbers::pi * m.frequency_Hz;
-        const double wd = w * std::sqrt(1 - m.damping_ratio * m.damping_ratio);
-        v += m.amplitude * std::exp(-m.damping_ratio * w * t) * std::sin(wd * t + m.phase_rad);
-      }
-    r.samples[i] = v + gauss(rng);
+    r.samples[i] = 0.3 + ringing(modes, t) + gauss(rng);  // 0.3: the accelerometer's offset
   }
   return r;
+}
+
+/// A later strike of the hammer (a bounce, another tap): the modes' free
+/// decay from `strike_time_s` on, added without noise.
+inline void add_strike(TapRecording& r, const std::vector<TapModeTruth>& modes, double strike_time_s) {
+  for (std::size_t i = 0; i < r.samples.size(); ++i)
+    r.samples[i] += ringing(modes, static_cast<double>(i) / r.sample_rate_hz - strike_time_s);
 }
 
 /// The recording as CSV text with a time column (`time_s,accel_m_s2`).

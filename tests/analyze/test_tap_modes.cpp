@@ -162,11 +162,8 @@ TEST(TapModes, ABounceOfTheHammerIsFoundAndTheDecayAfterItFitted) {
   for (const double delay_s : {0.004, 0.012})
     for (unsigned seed = 1; seed <= 3; ++seed) {
       auto rec = virtual_tap(truth, 30, seed);
-      // The bounce: the same link struck again at 0.4 of the force (the
-      // modes' phases of a second impulse), noise-free, offset removed.
-      const auto bounce = virtual_tap({{614.1, 0.02, 0.4, 0.5}, {2456.3, 0.015, 0.2, 1.0}}, 300, seed + 50,
-                                      rec.sample_rate_hz, 1.0, 0.1 + delay_s);
-      for (std::size_t i = 0; i < rec.samples.size(); ++i) rec.samples[i] += bounce.samples[i] - 0.3;
+      // The bounce: the same link struck again at 0.4 of the force.
+      testing::add_strike(rec, {{614.1, 0.02, 0.4, 0.5}, {2456.3, 0.015, 0.2, 1.0}}, 0.1 + delay_s);
       const TapResult r = identify_tap_modes(rec.samples, rec.sample_rate_hz);
       SCOPED_TRACE("bounce " + std::to_string(1e3 * delay_s) + " ms after the tap, seed " + std::to_string(seed));
       ASSERT_EQ(r.later_strikes_s.size(), 1u);
