@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/format.hpp"
 #include "common/units.hpp"
 #include "compare/elastic_reference.hpp"
 #include "compare/link_vibration.hpp"
@@ -97,6 +98,25 @@ ModelFamilyCheck elastic_family_check_at(const RecordingTarget& t, const std::ve
                                          const FitModel& model, const ModelFamilySettings& settings) {
   MatchedTheory theory = simulate_linkage_turns(t, p, warmup, turns, tolerance, model, t.grid);
   return family_check_of(t, measured_turns, theory, settings);
+}
+
+std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets) {
+  std::string which;
+  for (const RecordingTarget& t : targets)
+    for (FitLink l : kFitLinks) {
+      const TurnRepeat& r = t.repeat[static_cast<std::size_t>(l)];
+      if (!t.measured[static_cast<std::size_t>(l)] || r.period < 2) continue;
+      which += std::string(which.empty() ? "" : "; ") + t.name + "'s " + std::string(name_of(l)) + " repeats every " +
+               std::to_string(r.period) + " turns (turn i against turn i + " + std::to_string(r.period) + ": " +
+               format_number(r.ratio, 2) + " of what irregular turns give, against " + format_number(r.neighbours, 2) +
+               " for neighbouring turns)";
+      break;  // one link per recording
+    }
+  if (which.empty()) return "";
+  return "the measured turns hold a periodic motion: " + which +
+         ". A model may have such a motion beside an irregular one and not reach it from the recording's start; "
+         "then the rejection may come from the motion its runs took rather than from a wrong model (docs/fit.md "
+         "\"A periodic recording\")";
 }
 
 }  // namespace fourbar

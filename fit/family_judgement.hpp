@@ -40,6 +40,11 @@ struct FamilyJudgement {
 /// grid point on each side (within [box_low, box_high]); not identifiable.
 void widen_for_model_error(ParameterEstimate& p, double delta, double scale, double box_low, double box_high);
 
+/// For a rejection's note: the recordings whose measured turns repeat every
+/// few turns (RecordingTarget::repeat), what that means for the verdict, or
+/// "" when none does.
+std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets);
+
 /// The elastic-link reference's restitution in the fit: the fitted e, at least this.
 inline constexpr double kFitReferenceMinRestitution = 0.5;
 

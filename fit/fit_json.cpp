@@ -86,6 +86,12 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
         stats[std::string(name_of(l))] = sj;
       }
       rj["measured_statistics"] = stats;
+      // A periodic motion in the measured turns (response_statistics.hpp turn_repeat).
+      json repeat = json::object();
+      for (FitLink l : kFitLinks)
+        if (const TurnRepeat& tr = tg.repeat[static_cast<std::size_t>(l)]; tg.measured[static_cast<std::size_t>(l)])
+          repeat[std::string(name_of(l))] = {{"period_turns", tr.period}, {"ratio", tr.ratio}, {"neighbours", tr.neighbours}};
+      rj["measured_turns_repeat"] = repeat;
       if (tg.band_filter) rj["band_hz"] = {tg.band_filter->low_hz, tg.band_filter->high_hz};
     }
     if (r < f.magnification_fitted.size()) {

@@ -65,6 +65,10 @@ struct RecordingTarget {
   /// Each link's tangential accelerometer as analyze used it (by FitLink):
   /// what the elastic-link model reads (attach_sensors, linkage_statistics.hpp).
   std::array<std::optional<ResolvedMount>, 2> sensor;
+  /// Whether each link's measured turns repeat every few turns (turn_repeat,
+  /// on the analysis band's α): a periodic motion, which a model run from
+  /// the recording's start may not take (docs/fit.md "A periodic recording").
+  std::array<TurnRepeat, 2> repeat;
 };
 
 /// The analysis of the band above the averaging filter: band-pass from the

@@ -79,5 +79,21 @@ TEST(FamilyJudgement, AcceptedFamilyKeepsItsNumbers) {
   EXPECT_TRUE(j["parameters"]["restitution"]["identifiable"].get<bool>());
 }
 
+// A rejection's note names the recordings whose turns repeat (a periodic
+// motion the model's runs may not take), and only those.
+TEST(FamilyJudgement, APeriodicRecordingIsNamedInTheNote) {
+  std::vector<RecordingTarget> targets(2);
+  targets[0].name = "rec_250rpm_0254mm.flac";
+  targets[1].name = "rec_350rpm_0254mm.flac";
+  for (RecordingTarget& t : targets) t.measured[0] = StatisticValues{};
+  EXPECT_EQ(periodic_recordings_note(targets), "");
+  targets[0].repeat[0] = TurnRepeat{2, 0.14, 1.41};
+  targets[1].repeat[1] = TurnRepeat{3, 0.1, 1.2};  // the rocker, which this recording has no channel of
+  const std::string note = periodic_recordings_note(targets);
+  EXPECT_NE(note.find("rec_250rpm_0254mm.flac's alpha3 repeats every 2 turns"), std::string::npos) << note;
+  EXPECT_NE(note.find("0.14 of what irregular turns give"), std::string::npos) << note;
+  EXPECT_EQ(note.find("rec_350rpm"), std::string::npos) << note;
+}
+
 }  // namespace
 }  // namespace fourbar
