@@ -100,23 +100,36 @@ ModelFamilyCheck elastic_family_check_at(const RecordingTarget& t, const std::ve
   return family_check_of(t, measured_turns, theory, settings);
 }
 
-std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets) {
+std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets,
+                                     const std::vector<std::optional<std::array<TurnRepeat, 2>>>& model) {
   std::string which;
-  for (const RecordingTarget& t : targets)
+  bool model_irregular = false;
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const RecordingTarget& t = targets[k];
     for (FitLink l : kFitLinks) {
-      const TurnRepeat& r = t.repeat[static_cast<std::size_t>(l)];
-      if (!t.measured[static_cast<std::size_t>(l)] || r.period < 2) continue;
+      const auto i = static_cast<std::size_t>(l);
+      const TurnRepeat& r = t.repeat[i];
+      if (!t.measured[i] || r.period < 2) continue;
       which += std::string(which.empty() ? "" : "; ") + t.name + "'s " + std::string(name_of(l)) + " repeats every " +
                std::to_string(r.period) + " turns (turn i against turn i + " + std::to_string(r.period) + ": " +
                format_number(r.ratio, 2) + " of what irregular turns give, against " + format_number(r.neighbours, 2) +
                " for neighbouring turns)";
+      if (k < model.size() && model[k]) {
+        const double m = (*model[k])[i].by_lag[r.period - 1];
+        const bool repeats = m < kTurnRepeatRatio;
+        model_irregular = model_irregular || !repeats;
+        which += ", the model's run at the best point " + std::string(repeats ? "repeats too" : "does not") + " (" +
+                 format_number(m, 2) + ")";
+      }
       break;  // one link per recording
     }
+  }
   if (which.empty()) return "";
-  return "the measured turns hold a periodic motion: " + which +
-         ". A model may have such a motion beside an irregular one and not reach it from the recording's start; "
-         "then the rejection may come from the motion its runs took rather than from a wrong model (docs/fit.md "
-         "\"A periodic recording\")";
+  return "the measured turns hold a periodic motion: " + which + "." +
+         (model_irregular ? " A model may have such a motion beside an irregular one and not reach it from the "
+                            "recording's start; then the rejection may come from the motion its runs took rather than "
+                            "from a wrong model (docs/fit.md \"A periodic recording\")"
+                          : " (docs/fit.md \"A periodic recording\")");
 }
 
 }  // namespace fourbar

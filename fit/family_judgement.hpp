@@ -14,6 +14,8 @@
 //   - fit.json's first key is "model_family": {"verdict": "rejected",
 //     "reasons": [...]} and the terminal's first line says so.
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,9 +43,11 @@ struct FamilyJudgement {
 void widen_for_model_error(ParameterEstimate& p, double delta, double scale, double box_low, double box_high);
 
 /// For a rejection's note: the recordings whose measured turns repeat every
-/// few turns (RecordingTarget::repeat), what that means for the verdict, or
-/// "" when none does.
-std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets);
+/// few turns (RecordingTarget::repeat), whether the model's run at the best
+/// point (`model[r]`, by link; absent when it failed) repeats at that period
+/// too, and what that means for the verdict; "" when no recording repeats.
+std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets,
+                                     const std::vector<std::optional<std::array<TurnRepeat, 2>>>& model);
 
 /// The elastic-link reference's restitution in the fit: the fitted e, at least this.
 inline constexpr double kFitReferenceMinRestitution = 0.5;

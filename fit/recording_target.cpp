@@ -150,6 +150,7 @@ SimulatedStatistics statistics_of_theory(const RecordingTarget& t, MatchedTheory
     if (!t.measured[i]) continue;
     const TheorySeries& s = th.series[index_of(quantity_of(l))];
     out.link[i] = response_statistics(s.clearance_revolutions, s.nominal);
+    out.repeat[i] = turn_repeat(s.clearance_revolutions, t.grid.grid_points_per_rev);
   }
   return out;
 }

@@ -101,6 +101,7 @@ struct SimulatedStatistics {
   double impacts_per_rev = 0;                          ///< above the simulator's settle speed
   double sum_normal_impulse_per_rev_Ns = 0;            ///< ΣF
   int turns = 0;
+  std::array<TurnRepeat, 2> repeat;                    ///< of the kept turns after the pass band (turn_repeat)
 };
 
 /// Modelling choices without a physical counterpart (TheorySettings;

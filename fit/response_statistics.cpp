@@ -193,12 +193,13 @@ TurnRepeat turn_repeat(std::span<const double> x, std::size_t n) {
     for (std::size_t i = 0; i + p * n < x.size(); ++i) s += (x[i + p * n] - x[i]) * (x[i + p * n] - x[i]);
     return std::sqrt(s / static_cast<double>(x.size() - p * n) / (2.0 * dev));
   };
-  out.neighbours = ratio(1);
-  out.ratio = turns >= 3 ? ratio(2) : 1.0;
+  for (std::size_t p = 1; p <= kMaxTurnRepeatPeriod && p < turns; ++p) out.by_lag[p - 1] = ratio(p);
+  out.neighbours = out.by_lag[0];
+  out.ratio = out.by_lag[1];
   if (out.neighbours < 1 - kTurnRepeatRatio) return out;
   for (std::size_t p = 2; p <= kMaxTurnRepeatPeriod && turns >= 2 * p + 4; ++p)
-    if (const double q = ratio(p); q < kTurnRepeatRatio) {
-      out.period = p, out.ratio = q;
+    if (out.by_lag[p - 1] < kTurnRepeatRatio) {
+      out.period = p, out.ratio = out.by_lag[p - 1];
       break;
     }
   return out;

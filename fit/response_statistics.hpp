@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstddef>
+#include <array>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -82,12 +83,14 @@ BandEnergy band_energy(std::span<const double> turns, std::size_t grid_points_pe
 /// On the e = 0.8 virtual-rig session (docs/fit.md): 250 rpm, 0.254 mm gives
 /// ratio_2 = 0.14, ratio_1 = 1.41; its three other recordings 0.98–1.05 at
 /// every p.
+inline constexpr std::size_t kMaxTurnRepeatPeriod = 4;
 struct TurnRepeat {
   std::size_t period = 0;
   double ratio = 1;        ///< ratio_p at the period (ratio_2 when none)
   double neighbours = 1;   ///< ratio_1
+  /// ratio_p for p = 1 … kMaxTurnRepeatPeriod (1 where there are too few turns).
+  std::array<double, kMaxTurnRepeatPeriod> by_lag{1, 1, 1, 1};
 };
-inline constexpr std::size_t kMaxTurnRepeatPeriod = 4;
 inline constexpr double kTurnRepeatRatio = 0.3;
 TurnRepeat turn_repeat(std::span<const double> turns, std::size_t grid_points_per_rev);
 

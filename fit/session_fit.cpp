@@ -471,7 +471,13 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
                         format_number(std::sqrt(per_term(worst)), 2) + worst_term_text(at_best, targets) +
                         "): the model family does not describe this bearing; the values are effective ones and their "
                         "intervals, which assume the model describes the measurement, are not uncertainties");
-    if (const std::string periodic = periodic_recordings_note(targets); !periodic.empty()) out.notes.push_back(periodic);
+    std::vector<std::optional<std::array<TurnRepeat, 2>>> model_repeat;
+    for (std::size_t r = 0; r < targets.size(); ++r) {
+      const CachedSimulation& sim = cache.at(r, best);
+      model_repeat.push_back(sim.error.empty() ? std::optional(sim.statistics.repeat) : std::nullopt);
+    }
+    if (const std::string periodic = periodic_recordings_note(targets, model_repeat); !periodic.empty())
+      out.notes.push_back(periodic);
     reject_model_family(out,
                         "chi2/term " + format_number(out.chi2 / out.terms, 3) + " at the best parameters, above " +
                             format_number(kModelFamilyChi2PerTerm, 2) + " (the statistics' noise gives about 1)",

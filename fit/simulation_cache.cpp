@@ -52,6 +52,10 @@ std::string encode(const CachedSimulation& c) {
     put(out, b ? 1.0 : 0.0);
     if (b) put(out, b->excess), put(out, b->standard_error), put(out, b->floor);
   }
+  for (const TurnRepeat& r : s.repeat) {
+    put(out, static_cast<double>(r.period)), put(out, r.ratio), put(out, r.neighbours);
+    for (double v : r.by_lag) put(out, v);
+  }
   return out;
 }
 
@@ -78,6 +82,11 @@ CachedSimulation decode(const std::string& in) {
     BandEnergy e;
     e.excess = take(in, at), e.standard_error = take(in, at), e.floor = take(in, at);
     b = e;
+  }
+  for (TurnRepeat& r : s.repeat) {
+    r.period = static_cast<std::size_t>(take(in, at));
+    r.ratio = take(in, at), r.neighbours = take(in, at);
+    for (double& v : r.by_lag) v = take(in, at);
   }
   return c;
 }

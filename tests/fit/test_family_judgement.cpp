@@ -86,13 +86,24 @@ TEST(FamilyJudgement, APeriodicRecordingIsNamedInTheNote) {
   targets[0].name = "rec_250rpm_0254mm.flac";
   targets[1].name = "rec_350rpm_0254mm.flac";
   for (RecordingTarget& t : targets) t.measured[0] = StatisticValues{};
-  EXPECT_EQ(periodic_recordings_note(targets), "");
-  targets[0].repeat[0] = TurnRepeat{2, 0.14, 1.41};
-  targets[1].repeat[1] = TurnRepeat{3, 0.1, 1.2};  // the rocker, which this recording has no channel of
-  const std::string note = periodic_recordings_note(targets);
+  EXPECT_EQ(periodic_recordings_note(targets, {}), "");
+  targets[0].repeat[0] = TurnRepeat{2, 0.14, 1.41, {1.41, 0.14, 1.41, 0.14}};
+  targets[1].repeat[1] = TurnRepeat{3, 0.1, 1.2, {1.2, 1.2, 0.1, 1.2}};  // the rocker, which this recording has no channel of
+  // The model's run at the best point: irregular.
+  std::array<TurnRepeat, 2> irregular;
+  irregular[0].by_lag = {1.0, 0.98, 1.01, 1.0};
+  const std::string note = periodic_recordings_note(targets, {irregular, std::nullopt});
   EXPECT_NE(note.find("rec_250rpm_0254mm.flac's alpha3 repeats every 2 turns"), std::string::npos) << note;
   EXPECT_NE(note.find("0.14 of what irregular turns give"), std::string::npos) << note;
+  EXPECT_NE(note.find("the model's run at the best point does not (0.98)"), std::string::npos) << note;
+  EXPECT_NE(note.find("not reach it from the recording's start"), std::string::npos) << note;
   EXPECT_EQ(note.find("rec_350rpm"), std::string::npos) << note;
+  // A model that repeats at the same period: named, without the start's hint.
+  std::array<TurnRepeat, 2> periodic = irregular;
+  periodic[0].by_lag = {1.4, 0.05, 1.4, 0.05};
+  const std::string both = periodic_recordings_note(targets, {periodic, std::nullopt});
+  EXPECT_NE(both.find("repeats too (0.05)"), std::string::npos) << both;
+  EXPECT_EQ(both.find("not reach it"), std::string::npos) << both;
 }
 
 }  // namespace

@@ -104,6 +104,9 @@ TEST(TurnRepeat, FindsAPeriodicMotionUnderNoiseAndNothingInIrregularTurns) {
   EXPECT_EQ(two.period, 2u);
   EXPECT_LT(two.ratio, 0.2);
   EXPECT_NEAR(two.neighbours, std::sqrt(2.0), 0.05);
+  EXPECT_EQ(two.by_lag[0], two.neighbours);
+  EXPECT_NEAR(two.by_lag[2], std::sqrt(2.0), 0.05);  // odd lags differ, even ones repeat
+  EXPECT_LT(two.by_lag[3], 0.2);
   // Period 3: three patterns in turn.
   const TurnRepeat three = turn_repeat(turns_of(turns, n, [&](std::size_t r, double th) {
     return pattern(r % 3, th) + 0.3 * noise(gen);
