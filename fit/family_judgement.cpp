@@ -112,7 +112,7 @@ std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets
       if (!t.measured[i] || r.period < 2) continue;
       which += std::string(which.empty() ? "" : "; ") + t.name + "'s " + std::string(name_of(l)) + " repeats every " +
                std::to_string(r.period) + " turns (turn i against turn i + " + std::to_string(r.period) + ": " +
-               format_number(r.ratio, 2) + " of what irregular turns give, against " + format_number(r.neighbours, 2) +
+               format_number(r.ratio(), 2) + " of what irregular turns give, against " + format_number(r.neighbours(), 2) +
                " for neighbouring turns)";
       if (k < model.size() && model[k]) {
         const double m = (*model[k])[i].by_lag[r.period - 1];

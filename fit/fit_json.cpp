@@ -90,7 +90,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
       json repeat = json::object();
       for (FitLink l : kFitLinks)
         if (const TurnRepeat& tr = tg.repeat[static_cast<std::size_t>(l)]; tg.measured[static_cast<std::size_t>(l)])
-          repeat[std::string(name_of(l))] = {{"period_turns", tr.period}, {"ratio", tr.ratio}, {"neighbours", tr.neighbours}};
+          repeat[std::string(name_of(l))] = {{"period_turns", tr.period}, {"ratio", tr.ratio()}, {"neighbours", tr.neighbours()}};
       rj["measured_turns_repeat"] = repeat;
       if (tg.band_filter) rj["band_hz"] = {tg.band_filter->low_hz, tg.band_filter->high_hz};
     }

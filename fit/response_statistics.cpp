@@ -194,12 +194,10 @@ TurnRepeat turn_repeat(std::span<const double> x, std::size_t n) {
     return std::sqrt(s / static_cast<double>(x.size() - p * n) / (2.0 * dev));
   };
   for (std::size_t p = 1; p <= kMaxTurnRepeatPeriod && p < turns; ++p) out.by_lag[p - 1] = ratio(p);
-  out.neighbours = out.by_lag[0];
-  out.ratio = out.by_lag[1];
-  if (out.neighbours < 1 - kTurnRepeatRatio) return out;
+  if (out.neighbours() < 1 - kTurnRepeatRatio) return out;
   for (std::size_t p = 2; p <= kMaxTurnRepeatPeriod && turns >= 2 * p + 4; ++p)
     if (out.by_lag[p - 1] < kTurnRepeatRatio) {
-      out.period = p, out.ratio = out.by_lag[p - 1];
+      out.period = p;
       break;
     }
   return out;

@@ -86,10 +86,10 @@ BandEnergy band_energy(std::span<const double> turns, std::size_t grid_points_pe
 inline constexpr std::size_t kMaxTurnRepeatPeriod = 4;
 struct TurnRepeat {
   std::size_t period = 0;
-  double ratio = 1;        ///< ratio_p at the period (ratio_2 when none)
-  double neighbours = 1;   ///< ratio_1
   /// ratio_p for p = 1 … kMaxTurnRepeatPeriod (1 where there are too few turns).
   std::array<double, kMaxTurnRepeatPeriod> by_lag{1, 1, 1, 1};
+  double ratio() const { return by_lag[period >= 2 ? period - 1 : 1]; }  ///< at the period (ratio_2 when none)
+  double neighbours() const { return by_lag[0]; }                      ///< ratio_1
 };
 inline constexpr double kTurnRepeatRatio = 0.3;
 TurnRepeat turn_repeat(std::span<const double> turns, std::size_t grid_points_per_rev);

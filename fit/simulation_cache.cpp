@@ -53,7 +53,7 @@ std::string encode(const CachedSimulation& c) {
     if (b) put(out, b->excess), put(out, b->standard_error), put(out, b->floor);
   }
   for (const TurnRepeat& r : s.repeat) {
-    put(out, static_cast<double>(r.period)), put(out, r.ratio), put(out, r.neighbours);
+    put(out, static_cast<double>(r.period));
     for (double v : r.by_lag) put(out, v);
   }
   return out;
@@ -85,7 +85,6 @@ CachedSimulation decode(const std::string& in) {
   }
   for (TurnRepeat& r : s.repeat) {
     r.period = static_cast<std::size_t>(take(in, at));
-    r.ratio = take(in, at), r.neighbours = take(in, at);
     for (double& v : r.by_lag) v = take(in, at);
   }
   return c;

@@ -87,8 +87,8 @@ TEST(FamilyJudgement, APeriodicRecordingIsNamedInTheNote) {
   targets[1].name = "rec_350rpm_0254mm.flac";
   for (RecordingTarget& t : targets) t.measured[0] = StatisticValues{};
   EXPECT_EQ(periodic_recordings_note(targets, {}), "");
-  targets[0].repeat[0] = TurnRepeat{2, 0.14, 1.41, {1.41, 0.14, 1.41, 0.14}};
-  targets[1].repeat[1] = TurnRepeat{3, 0.1, 1.2, {1.2, 1.2, 0.1, 1.2}};  // the rocker, which this recording has no channel of
+  targets[0].repeat[0] = TurnRepeat{2, {1.41, 0.14, 1.41, 0.14}};
+  targets[1].repeat[1] = TurnRepeat{3, {1.2, 1.2, 0.1, 1.2}};  // the rocker, which this recording has no channel of
   // The model's run at the best point: irregular.
   std::array<TurnRepeat, 2> irregular;
   irregular[0].by_lag = {1.0, 0.98, 1.01, 1.0};

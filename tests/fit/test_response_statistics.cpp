@@ -102,9 +102,9 @@ TEST(TurnRepeat, FindsAPeriodicMotionUnderNoiseAndNothingInIrregularTurns) {
     return 50 * std::sin(th) + (r % 2 ? 8.0 : -8.0) * std::cos(7 * th) + 0.8 * noise(gen);
   }), n);
   EXPECT_EQ(two.period, 2u);
-  EXPECT_LT(two.ratio, 0.2);
-  EXPECT_NEAR(two.neighbours, std::sqrt(2.0), 0.05);
-  EXPECT_EQ(two.by_lag[0], two.neighbours);
+  EXPECT_LT(two.ratio(), 0.2);
+  EXPECT_NEAR(two.neighbours(), std::sqrt(2.0), 0.05);
+  EXPECT_EQ(two.by_lag[0], two.neighbours());
   EXPECT_NEAR(two.by_lag[2], std::sqrt(2.0), 0.05);  // odd lags differ, even ones repeat
   EXPECT_LT(two.by_lag[3], 0.2);
   // Period 3: three patterns in turn.
@@ -120,7 +120,7 @@ TEST(TurnRepeat, FindsAPeriodicMotionUnderNoiseAndNothingInIrregularTurns) {
     return 5 * std::sin(6 * th + phases[r]) + 0.3 * noise(gen);
   }), n);
   EXPECT_EQ(irregular.period, 0u);
-  EXPECT_NEAR(irregular.ratio, 1.0, 0.25);
+  EXPECT_NEAR(irregular.ratio(), 1.0, 0.25);
   // Every turn alike but noise: no period (the spread is the noise's).
   EXPECT_EQ(turn_repeat(turns_of(turns, n, [&](std::size_t, double th) { return 50 * std::sin(th) + noise(gen); }), n).period, 0u);
   // A slow drift: every lag small, neighbours too: no period.
