@@ -120,12 +120,20 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
 
 namespace {
 
+json turns_repeat_json(const TurnRepeat& r, std::size_t turns) {
+  json lags = json::array();
+  for (double v : r.by_lag) lags.push_back(v);
+  return {{"turns", turns}, {"period_turns", r.period}, {"ratio", r.ratio()}, {"neighbours", r.neighbours()}, {"by_lag", lags}};
+}
+
 /// The relative standard error of a (scatter) = model / measured turn-to-turn
 /// scatter of α3 (α4): the delete-block jackknife errors of the measured and
 /// the model spread (fit/response_statistics.hpp: √ mean over θ of the
 /// variance over turns, blocks of consecutive turns) in quadrature, as
 /// magnification.scatter_relative_error. Left out with fewer than 4 turns on
-/// either side.
+/// either side. Beside it, turns_repeat: whether the measured and the model's
+/// turns repeat every few turns (fit/response_statistics.hpp turn_repeat; the
+/// verdict says when the measured scatter is a periodic motion).
 void add_scatter_errors(json& r, const RecordingAnalysis& a, const MatchedTheory& t) {
   const std::array<std::pair<const std::optional<LinkResult>*, LinkQuantity>, 2> links{
       {{&a.coupler, LinkQuantity::alpha3}, {&a.rocker, LinkQuantity::alpha4}}};
@@ -139,6 +147,9 @@ void add_scatter_errors(json& r, const RecordingAnalysis& a, const MatchedTheory
     if (n == 0 || turns.size() % n != 0 || s.clearance_revolutions.size() % n != 0 || turns.size() / n < 4 ||
         s.clearance_revolutions.size() / n < 4)
       continue;
+    r["metrics"][key]["turns_repeat"] = {
+        {"measured", turns_repeat_json(turn_repeat(turns, n), turns.size() / n)},
+        {"model", turns_repeat_json(turn_repeat(s.clearance_revolutions, n), s.clearance_revolutions.size() / n)}};
     const StatisticValues measured = response_statistics(turns, s.nominal);
     const StatisticValues model = response_statistics(s.clearance_revolutions, s.nominal);
     if (!(measured.value[spread] > 0) || !(model.value[spread] > 0)) continue;

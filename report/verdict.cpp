@@ -7,6 +7,7 @@
 
 #include "analyze/setup_finding.hpp"
 #include "common/format.hpp"
+#include "fit/response_statistics.hpp"
 
 namespace fourbar {
 
@@ -209,6 +210,27 @@ std::string scatter_error_clause(double a, double se, std::size_t turns) {
   return s + ".";
 }
 
+/// The agreement sentence's clause when the measured turns repeat every few
+/// turns; `differs` is set when the model's turns do not repeat at that lag.
+std::string repeat_clause(const VerdictInputs& in, bool chaotic, bool& differs) {
+  differs = false;
+  if (!in.repeat) return {};
+  const VerdictInputs::Repeat& r = *in.repeat;
+  std::string s = " The measured turns repeat every " + std::to_string(r.period) + " turns (turn i against turn i + " +
+                  std::to_string(r.period) + ": " + num(r.ratio, 2) + " of what irregular turns give, against " +
+                  num(r.neighbours, 2) + " for neighbouring turns), a periodic motion of the mechanism";
+  if (!r.model_ratio)
+    return s + "; the model's " + std::to_string(r.model_turns) + " turns are too few to tell whether it repeats (at least " +
+           std::to_string(2 * r.period + 4) + "): set [theory] averaged_revolutions in session.toml.";
+  if (*r.model_ratio < kTurnRepeatRatio) return s + "; the model's turns repeat at that lag too (" + num(*r.model_ratio, 2) + ").";
+  differs = true;
+  return s + "; the model's turns do not (" + num(*r.model_ratio, 2) + "): " +
+         (chaotic ? "a (scatter) compares a periodic motion with an irregular one" : "a compares the averages of two different motions") +
+         ", so its value, agreeing or not, says little about the contact parameters. A model can have such a motion beside an "
+         "irregular one and not reach it from its start; the recording's own start decides which one the rig takes "
+         "(docs/fit.md \"A periodic recording\").";
+}
+
 VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, std::optional<double>& a_se,
                            std::string& a_from) {
   const bool spectral = in.a_spectral && !in.orders_used.empty();
@@ -267,6 +289,12 @@ VerdictPart agreement_part(const VerdictInputs& in, std::optional<double>& a, st
            std::max(*in.a_time / *in.a_spectral, *in.a_spectral / *in.a_time) > kTimeSpectralApart)
     p.sentence += " a (time) = " + num(*in.a_time, 3) + " differs: it counts every order, also the nominal band (1 … " +
                   std::to_string(in.nominal_band_orders) + ") and mains hum, which the clearance model cannot hold.";
+  bool differs = false;
+  p.sentence += repeat_clause(in, chaotic, differs);
+  if (differs) {
+    p.level = worst(p.level, VerdictLevel::attention);
+    p.words += ", turns repeat every " + std::to_string(in.repeat->period);
+  }
   p.sentence += fit_sentence(in);
   return p;
 }
@@ -359,6 +387,19 @@ VerdictInputs verdict_inputs(const json& r, const json* fit, const std::string& 
   const json& contact = path(r, {"theory", "settings", "contact"});
   in.contact = contact.is_string() ? contact.get<std::string>() : "";
   in.family = verdict_family(r);
+  const json& measured_repeat = path(m, {"turns_repeat", "measured"});
+  if (const auto period = static_cast<std::size_t>(num_or(path(measured_repeat, {"period_turns"}), 0)); period >= 2) {
+    VerdictInputs::Repeat rep;
+    rep.period = period;
+    rep.ratio = num_or(path(measured_repeat, {"ratio"}), 1);
+    rep.neighbours = num_or(path(measured_repeat, {"neighbours"}), 1);
+    const json& model = path(m, {"turns_repeat", "model"});
+    rep.model_turns = static_cast<std::size_t>(num_or(path(model, {"turns"}), 0));
+    const json& lags = path(model, {"by_lag"});
+    if (rep.model_turns >= 2 * period + 4 && lags.is_array() && lags.size() >= period && lags[period - 1].is_number())
+      rep.model_ratio = lags[period - 1].get<double>();
+    in.repeat = rep;
+  }
   if (fit && fit->is_object() && path(*fit, {"parameters", "restitution", "value"}).is_number()) {
     VerdictFit f;
     f.file = fit_file;

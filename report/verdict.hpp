@@ -114,6 +114,18 @@ struct VerdictInputs {
   std::string contact;
   std::optional<VerdictFit> fit;
   std::optional<VerdictFamily> family;  ///< the record's model-family check (absent in older records)
+  /// The measured α3 turns repeat every `period` turns (record
+  /// metrics.alpha3_rad_s2.turns_repeat, fit/response_statistics.hpp
+  /// turn_repeat): ratio at the period and at lag 1, and the model's ratio at
+  /// the same lag when its turns are enough to tell (≥ 2·period + 4). Absent
+  /// when the measured turns do not repeat, or in older records.
+  struct Repeat {
+    std::size_t period = 0;
+    double ratio = 1, neighbours = 1;
+    std::optional<double> model_ratio;
+    std::size_t model_turns = 0;
+  };
+  std::optional<Repeat> repeat;
 };
 
 struct VerdictPart {

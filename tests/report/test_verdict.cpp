@@ -279,6 +279,58 @@ TEST(Verdict, ScatterNeedsTheModelsTurns) {
   EXPECT_EQ(verdict_of(in).a_from, "spectral");
 }
 
+// The e = 0.8 virtual-rig session's 250 rpm recording (docs/fit.md "A
+// periodic recording"): its turns alternate between two patterns, the
+// model's at the same settings are irregular. a (scatter) may then agree by
+// chance: the verdict says so and does not read "good".
+TEST(Verdict, APeriodicMeasuredMotionIsNamedAndWeighed) {
+  VerdictInputs in = clean();
+  in.effect_to_floor = 1.3, in.spread_rms = 80, in.model_spread_rms = 82;  // chaotic, a (scatter) 1.03
+  in.scatter_relative_error = 0.06;
+  in.model_revolutions = 20;
+  Verdict v = verdict_of(in);
+  ASSERT_EQ(v.a_from, "scatter");
+  EXPECT_EQ(v.agreement.level, VerdictLevel::good);
+  EXPECT_EQ(v.agreement.sentence.find("repeat"), std::string::npos) << v.agreement.sentence;
+
+  in.repeat = VerdictInputs::Repeat{2, 0.14, 1.41, 0.98, 20};
+  v = verdict_of(in);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::attention) << v.agreement.sentence;
+  EXPECT_NE(v.agreement.words.find("(scatter), turns repeat every 2"), std::string::npos) << v.agreement.words;
+  EXPECT_NE(v.agreement.sentence.find("The measured turns repeat every 2 turns (turn i against turn i + 2: 0.14 of what "
+                                      "irregular turns give, against 1.4 for neighbouring turns)"),
+            std::string::npos)
+      << v.agreement.sentence;
+  EXPECT_NE(v.agreement.sentence.find("the model's turns do not (0.98): a (scatter) compares a periodic motion with an "
+                                      "irregular one"),
+            std::string::npos)
+      << v.agreement.sentence;
+  EXPECT_EQ(v.overall, VerdictLevel::attention);
+
+  // The model repeats at that lag too: the same kind of motion, judged as before.
+  in.repeat->model_ratio = 0.12;
+  v = verdict_of(in);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::good) << v.agreement.sentence;
+  EXPECT_NE(v.agreement.sentence.find("the model's turns repeat at that lag too (0.12)"), std::string::npos) << v.agreement.sentence;
+
+  // Too few model turns to tell: said, with the setting; the level is left alone.
+  in.repeat->model_ratio.reset();
+  in.repeat->model_turns = 6;
+  v = verdict_of(in);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::good);
+  EXPECT_NE(v.agreement.sentence.find("the model's 6 turns are too few to tell whether it repeats (at least 8)"), std::string::npos)
+      << v.agreement.sentence;
+
+  // Not chaotic (a from the order lines): the averages then hold two different motions.
+  in = clean();
+  in.repeat = VerdictInputs::Repeat{3, 0.2, 1.2, 0.9, 20};
+  v = verdict_of(in);
+  EXPECT_EQ(v.a_from, "spectral");
+  EXPECT_EQ(v.agreement.level, VerdictLevel::attention);
+  EXPECT_NE(v.agreement.sentence.find("repeat every 3 turns"), std::string::npos) << v.agreement.sentence;
+  EXPECT_NE(v.agreement.sentence.find("a compares the averages of two different motions"), std::string::npos) << v.agreement.sentence;
+}
+
 TEST(Verdict, FitParametersAreNamed) {
   VerdictInputs in = clean();
   in.a_spectral = 1.6;
@@ -311,6 +363,31 @@ json record() {
                     {"effect_to_floor", 7.0},
                     {"model_effect_to_floor", 8.0},
                     {"scatter_relative_error", 0.12}}}}}}}};
+}
+
+TEST(VerdictInputs, TurnsRepeatReadFromTheRecord) {
+  json r = record();
+  EXPECT_FALSE(verdict_inputs(r).repeat) << "older records have no turns_repeat";
+  auto repeat = [](std::size_t turns, std::size_t period, double ratio, std::vector<double> lags) {
+    return json{{"turns", turns}, {"period_turns", period}, {"ratio", ratio}, {"neighbours", lags[0]}, {"by_lag", lags}};
+  };
+  r["metrics"]["alpha3_rad_s2"]["turns_repeat"] = {{"measured", repeat(25, 0, 1.0, {0.98, 1.0, 1.02, 0.97})},
+                                                   {"model", repeat(20, 0, 1.0, {1.0, 1.0, 1.0, 1.0})}};
+  EXPECT_FALSE(verdict_inputs(r).repeat) << "no period measured";
+  r["metrics"]["alpha3_rad_s2"]["turns_repeat"]["measured"] = repeat(25, 2, 0.14, {1.41, 0.14, 1.39, 0.15});
+  VerdictInputs in = verdict_inputs(r);
+  ASSERT_TRUE(in.repeat);
+  EXPECT_EQ(in.repeat->period, 2u);
+  EXPECT_DOUBLE_EQ(in.repeat->ratio, 0.14);
+  EXPECT_DOUBLE_EQ(in.repeat->neighbours, 1.41);
+  ASSERT_TRUE(in.repeat->model_ratio);
+  EXPECT_DOUBLE_EQ(*in.repeat->model_ratio, 1.0);
+  // The model's turns too few for lag 2 (2·2 + 4 = 8): no ratio read.
+  r["metrics"]["alpha3_rad_s2"]["turns_repeat"]["model"]["turns"] = 7;
+  in = verdict_inputs(r);
+  ASSERT_TRUE(in.repeat);
+  EXPECT_FALSE(in.repeat->model_ratio);
+  EXPECT_EQ(in.repeat->model_turns, 7u);
 }
 
 TEST(VerdictInputs, ReadFromTheRecordAndTheFit) {
