@@ -85,6 +85,8 @@ void ChunkedAnalysis::make_averagers() {
   omega_avg_.assign(links, SynchronousAverager(N));
   normal_avg_.assign(links, SynchronousAverager(N));
   omega_sq_avg_.assign(links, SynchronousAverager(N));
+  alpha_repeat_.assign(links, TurnRepeatAccumulator(N));
+  last_averaged_.reset();
   omega_carry_.assign(links, std::nullopt);
 }
 

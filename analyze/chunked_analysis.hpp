@@ -194,6 +194,8 @@ class ChunkedAnalysis final : public AcquisitionSink {
   std::deque<std::unique_ptr<Pending>> guard_queue_;
   std::unique_ptr<SynchronousAverager> speed_avg_;
   std::vector<SynchronousAverager> alpha_avg_, omega_avg_, normal_avg_, omega_sq_avg_;
+  std::vector<TurnRepeatAccumulator> alpha_repeat_;  // per link, over the averaged turns
+  std::optional<std::size_t> last_averaged_;          // number of the last averaged revolution
   std::vector<std::unique_ptr<SpectrumAverager>> spectra_;
 
   // Chunks on worker threads (chunk_dispatch.cpp). Declared last: the

@@ -37,6 +37,7 @@
 #include "analyze/analysis_defaults.hpp"
 #include "analyze/averaging.hpp"
 #include "analyze/filter_design.hpp"
+#include "analyze/turn_repeat.hpp"
 #include "analyze/sensor_mount.hpp"
 #include "analyze/setup_check.hpp"
 #include "analyze/unseen_speed_change.hpp"
@@ -140,6 +141,7 @@ struct LinkResult {
   double alpha_std_rms_rad_s2 = 0, omega_std_rms_rad_s = 0;  ///< RMS over the grid of the spread
   std::vector<double> alpha_grid, omega_grid;  ///< revolutions × N, row-major (keep_revolutions)
   std::vector<double> alpha_amplitude;      ///< amplitude spectrum of the converted α before the filter (rad/s²)
+  TurnRepeat alpha_repeat;                  ///< whether the averaged turns of α repeat every few turns (turn_repeat.hpp)
   std::optional<NormalCheck> normal;
 };
 

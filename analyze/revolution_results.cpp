@@ -31,6 +31,8 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
   out.number = rev.number;
   out.averaged = averaged;
   out.crank_speed_rad_s = rev.speed;
+  // A turn left out between two averaged ones breaks the lags' pairs.
+  const bool follows = averaged && last_averaged_ && *last_averaged_ + 1 == rev.number;
   if (averaged) speed_avg_->add(rev.speed);
   if (result_.options.keep_revolutions) result_.revolution_numbers.push_back(rev.number);
   for (std::size_t j = 0; j < channels_.links.size(); ++j) {
@@ -44,6 +46,8 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
     }
     if (!averaged) continue;
     alpha_avg_[j].add(rev.alpha[j]);
+    if (!follows) alpha_repeat_[j].gap();
+    alpha_repeat_[j].add(rev.alpha[j]);
     omega_avg_[j].add(rev.omega[j]);
     if (!rev.omega_sq[j].empty()) {
       normal_avg_[j].add(rev.omega_sq[j]);
@@ -52,6 +56,7 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
       omega_sq_avg_[j].add(sq);
     }
   }
+  if (averaged) last_averaged_ = rev.number;
   if (observer_) observer_->on_revolution(out);
 }
 
@@ -83,6 +88,7 @@ void ChunkedAnalysis::finish() {
     lr.alpha_std_rms_rad_s2 = rms(lr.alpha_rad_s2.std);
     lr.omega_std_rms_rad_s = rms(lr.omega_rad_s.std);
     lr.alpha_amplitude = spectra_[j]->amplitude();
+    lr.alpha_repeat = alpha_repeat_[j].result();
     if (lr.normal) {
       lr.normal->omega_sq_rad2_s2 = normal_avg_[j].result();
       for (double w2 : lr.normal->omega_sq_rad2_s2.mean) lr.normal->omega_abs_rad_s.push_back(std::sqrt(std::max(0.0, w2)));

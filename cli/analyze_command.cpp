@@ -162,6 +162,11 @@ nlohmann::json link_json(const LinkResult& l) {
                       {"omega_rms_rad_s", l.omega_rms_rad_s},
                       {"omega_peak_rad_s", peak(l.omega_rad_s.mean)},
                       {"omega_std_rms_rad_s", l.omega_std_rms_rad_s}};
+  const TurnRepeat& r = l.alpha_repeat;
+  j["alpha_turns_repeat"] = {{"period_turns", r.period},
+                             {"ratio", r.ratio()},
+                             {"neighbours", r.neighbours()},
+                             {"by_lag", std::vector<double>(r.by_lag.begin(), r.by_lag.end())}};
   if (l.normal)
     j["normal_check"] = {{"channel", l.normal->channel},
                          {"ac_coupled", l.normal->ac_coupled},
@@ -380,6 +385,14 @@ int run_analyze(const Invocation& inv) {
   std::cout << "analysed " << a.revolutions << " revolutions (" << units::rad_s_to_rpm(std::abs(a.mean_crank_speed_rad_s))
             << " rpm mean, " << N << " crank angles each) of " << recording << " into " << out_dir << ": alpha3 RMS "
             << a.coupler->alpha_rms_rad_s2 << " rad/s^2, omega3 RMS " << a.coupler->omega_rms_rad_s << " rad/s\n";
+  // A periodic motion is worth a line: averages and scatter then describe
+  // alternating patterns, not one repeated turn or irregular ones.
+  for (const LinkResult* l : {a.coupler ? &*a.coupler : nullptr, a.rocker ? &*a.rocker : nullptr})
+    if (l && l->alpha_repeat.period >= 2)
+      std::cout << (l->link == SensedLink::coupler ? "alpha3" : "alpha4") << "'s turns repeat every " << l->alpha_repeat.period
+                << " turns (turn i against turn i + " << l->alpha_repeat.period << ": " << format_number(l->alpha_repeat.ratio(), 2)
+                << " of what irregular turns give, " << format_number(l->alpha_repeat.neighbours(), 2)
+                << " for neighbouring turns): a periodic motion of the mechanism\n";
   return 0;
 }
 

@@ -86,7 +86,7 @@ json fit_to_json(const FitResult& f, const std::vector<RecordingTarget>& targets
         stats[std::string(name_of(l))] = sj;
       }
       rj["measured_statistics"] = stats;
-      // A periodic motion in the measured turns (response_statistics.hpp turn_repeat).
+      // A periodic motion in the measured turns (analyze/turn_repeat.hpp).
       json repeat = json::object();
       for (FitLink l : kFitLinks)
         if (const TurnRepeat& tr = tg.repeat[static_cast<std::size_t>(l)]; tg.measured[static_cast<std::size_t>(l)])

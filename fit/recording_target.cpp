@@ -78,7 +78,7 @@ RecordingTarget make_recording_target(const RecordingAnalysis& a, const Recordin
     if (link->alpha_grid.size() != a.revolutions * a.grid_points_per_rev)
       throw RunError(name + ": the analysis did not keep every turn (keep_revolutions)");
     t.measured[i] = response_statistics(link->alpha_grid, t.nominal[i]);
-    t.repeat[i] = turn_repeat(link->alpha_grid, t.grid.grid_points_per_rev);
+    t.repeat[i] = link->alpha_repeat;  // over the same turns, streamed by the analysis
   }
   if (band && band->grid_points_per_rev % t.grid.grid_points_per_rev == 0 && band->revolutions >= kMinTurns) {
     t.band_filter = band->filter;

@@ -176,31 +176,4 @@ BandEnergy band_energy(std::span<const double> x, std::size_t n, std::size_t blo
   return out;
 }
 
-TurnRepeat turn_repeat(std::span<const double> x, std::size_t n) {
-  if (n == 0 || x.size() % n != 0) throw RunError("turn repeat: turns are not whole grid rows");
-  const std::size_t turns = x.size() / n;
-  TurnRepeat out;
-  if (turns < 2) return out;
-  std::vector<double> mean(n, 0.0);
-  for (std::size_t r = 0; r < turns; ++r)
-    for (std::size_t k = 0; k < n; ++k) mean[k] += x[r * n + k] / static_cast<double>(turns);
-  double dev = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) dev += (x[i] - mean[i % n]) * (x[i] - mean[i % n]);
-  dev /= static_cast<double>(x.size());
-  if (!(dev > 0)) return out;
-  auto ratio = [&](std::size_t p) {
-    double s = 0;
-    for (std::size_t i = 0; i + p * n < x.size(); ++i) s += (x[i + p * n] - x[i]) * (x[i + p * n] - x[i]);
-    return std::sqrt(s / static_cast<double>(x.size() - p * n) / (2.0 * dev));
-  };
-  for (std::size_t p = 1; p <= kMaxTurnRepeatPeriod && p < turns; ++p) out.by_lag[p - 1] = ratio(p);
-  if (out.neighbours() < 1 - kTurnRepeatRatio) return out;
-  for (std::size_t p = 2; p <= kMaxTurnRepeatPeriod && turns >= 2 * p + 4; ++p)
-    if (out.by_lag[p - 1] < kTurnRepeatRatio) {
-      out.period = p;
-      break;
-    }
-  return out;
-}
-
 }  // namespace fourbar

@@ -22,10 +22,11 @@
 
 #include <array>
 #include <cstddef>
-#include <array>
 #include <span>
 #include <string_view>
 #include <vector>
+
+#include "analyze/turn_repeat.hpp"
 
 namespace fourbar {
 
@@ -70,28 +71,6 @@ struct BandEnergy {
 };
 BandEnergy band_energy(std::span<const double> turns, std::size_t grid_points_per_rev, std::size_t blocks = 8);
 
-/// Whether a link's turns repeat with a period of several turns (a periodic
-/// motion of the mechanism, e.g. period 2: impacts alternating between two
-/// patterns). With x_r the turns' deviations from their mean curve,
-///   ratio_p = RMS over r of (x_{r+p} − x_r) / (√2 · RMS of x_r),
-/// about 1 for irregular turns or noise at every p, about 0 at the period of
-/// a periodic motion and √2 at p = 1 for period 2. `period` is the shortest
-/// p in 2 … kMaxTurnRepeatPeriod with ratio_p < kTurnRepeatRatio while
-/// ratio_1 ≥ 1 − kTurnRepeatRatio (turns that differ from their neighbours),
-/// with at least 2p + 4 turns; 0 when none. A period-1 motion (every turn
-/// alike) gives no period: its spread is the noise's, as the model's.
-/// On the e = 0.8 virtual-rig session (docs/fit.md): 250 rpm, 0.254 mm gives
-/// ratio_2 = 0.14, ratio_1 = 1.41; its three other recordings 0.98–1.05 at
-/// every p.
-inline constexpr std::size_t kMaxTurnRepeatPeriod = 4;
-struct TurnRepeat {
-  std::size_t period = 0;
-  /// ratio_p for p = 1 … kMaxTurnRepeatPeriod (1 where there are too few turns).
-  std::array<double, kMaxTurnRepeatPeriod> by_lag{1, 1, 1, 1};
-  double ratio() const { return by_lag[period >= 2 ? period - 1 : 1]; }  ///< at the period (ratio_2 when none)
-  double neighbours() const { return by_lag[0]; }                      ///< ratio_1
-};
-inline constexpr double kTurnRepeatRatio = 0.3;
-TurnRepeat turn_repeat(std::span<const double> turns, std::size_t grid_points_per_rev);
+/// Whether the turns repeat every few turns: analyze/turn_repeat.hpp (TurnRepeat, turn_repeat).
 
 }  // namespace fourbar

@@ -131,9 +131,10 @@ json turns_repeat_json(const TurnRepeat& r, std::size_t turns) {
 /// the model spread (fit/response_statistics.hpp: √ mean over θ of the
 /// variance over turns, blocks of consecutive turns) in quadrature, as
 /// magnification.scatter_relative_error. Left out with fewer than 4 turns on
-/// either side. Beside it, turns_repeat: whether the measured and the model's
-/// turns repeat every few turns (fit/response_statistics.hpp turn_repeat; the
-/// verdict says when the measured scatter is a periodic motion).
+/// either side. Beside it, turns_repeat: whether the measured (the analysis'
+/// averaged turns) and the model's turns repeat every few turns
+/// (analyze/turn_repeat.hpp; the verdict says when the measured motion is
+/// periodic).
 void add_scatter_errors(json& r, const RecordingAnalysis& a, const MatchedTheory& t) {
   const std::array<std::pair<const std::optional<LinkResult>*, LinkQuantity>, 2> links{
       {{&a.coupler, LinkQuantity::alpha3}, {&a.rocker, LinkQuantity::alpha4}}};
@@ -148,7 +149,7 @@ void add_scatter_errors(json& r, const RecordingAnalysis& a, const MatchedTheory
         s.clearance_revolutions.size() / n < 4)
       continue;
     r["metrics"][key]["turns_repeat"] = {
-        {"measured", turns_repeat_json(turn_repeat(turns, n), turns.size() / n)},
+        {"measured", turns_repeat_json((**link).alpha_repeat, (**link).alpha_rad_s2.revolutions)},
         {"model", turns_repeat_json(turn_repeat(s.clearance_revolutions, n), s.clearance_revolutions.size() / n)}};
     const StatisticValues measured = response_statistics(turns, s.nominal);
     const StatisticValues model = response_statistics(s.clearance_revolutions, s.nominal);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "analyze/turn_repeat.hpp"
 #include "support/csv_file.hpp"
 #include "support/clean_failure.hpp"
 #include "support/run_command.hpp"
@@ -101,6 +102,23 @@ TEST_F(AnalyzeCommand, ExampleSceneEndToEnd) {
   EXPECT_NEAR(j["links"]["coupler"]["alpha_rms_rad_s2"].get<double>(), 209, 5);  // thesis rig at 350 rpm
   EXPECT_LT(j["links"]["coupler"]["normal_check"]["omega_sq_rel_rms_difference"].get<double>(), 0.02);
   EXPECT_EQ(j["provenance"]["inputs"].size(), 3u);
+  // Whether the turns repeat (analyze/turn_repeat.hpp), streamed turn by turn,
+  // against the whole-grid computation on the per-revolution rows. No
+  // clearance here: the turns differ by the crank's slow speed wander (period
+  // 17.3 turns), so turns further apart differ more and neighbours least —
+  // a drift, not a periodic motion: no period is named.
+  std::vector<double> alpha3_turns;
+  for (const auto& row : per.rows)
+    if (row[2] == 1) alpha3_turns.push_back(row[4]);
+  const TurnRepeat from_rows = turn_repeat(alpha3_turns, 720);
+  const auto& streamed = j["links"]["coupler"]["alpha_turns_repeat"];
+  EXPECT_EQ(streamed["period_turns"], 0);
+  for (std::size_t p = 0; p < kMaxTurnRepeatPeriod; ++p) {
+    EXPECT_NEAR(streamed["by_lag"][p].get<double>(), from_rows.by_lag[p], 1e-6) << p;
+    if (p > 0) EXPECT_GT(from_rows.by_lag[p], from_rows.by_lag[p - 1]) << p;
+  }
+  EXPECT_LT(from_rows.neighbours(), 1 - kTurnRepeatRatio);
+  EXPECT_EQ(r.out.find("repeat every"), std::string::npos) << r.out;
 
   // The thesis method runs too, and says so.
   const auto t = run_fourbar("analyze " + rec.string() + " --thesis --out " + (dir.path() / "thesis").string());

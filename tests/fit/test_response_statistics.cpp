@@ -82,54 +82,6 @@ TEST(BandEnergy, ExcessAboveWhiteNoiseFloor) {
   EXPECT_LT(q.excess / q.floor, 1.0);
 }
 
-// Turns built from closed forms: a period-2 motion (two alternating patterns)
-// under white noise, a period 3, irregular turns, a slow drift and pure
-// noise. Seeded.
-std::vector<double> turns_of(std::size_t turns, std::size_t n, const std::function<double(std::size_t, double)>& f) {
-  std::vector<double> x;
-  for (std::size_t r = 0; r < turns; ++r)
-    for (std::size_t k = 0; k < n; ++k) x.push_back(f(r, units::kTwoPi * static_cast<double>(k) / static_cast<double>(n)));
-  return x;
-}
-
-TEST(TurnRepeat, FindsAPeriodicMotionUnderNoiseAndNothingInIrregularTurns) {
-  const std::size_t n = 360, turns = 23;
-  std::mt19937 gen(7);
-  std::normal_distribution<double> noise(0.0, 1.0);
-  auto pattern = [](std::size_t r, double th) { return 10 * std::sin(2 * th) + 6 * std::sin(5 * th + 1.3 * static_cast<double>(r)); };
-  // Period 2: the deviation alternates sign; noise at 0.1 of it.
-  const TurnRepeat two = turn_repeat(turns_of(turns, n, [&](std::size_t r, double th) {
-    return 50 * std::sin(th) + (r % 2 ? 8.0 : -8.0) * std::cos(7 * th) + 0.8 * noise(gen);
-  }), n);
-  EXPECT_EQ(two.period, 2u);
-  EXPECT_LT(two.ratio(), 0.2);
-  EXPECT_NEAR(two.neighbours(), std::sqrt(2.0), 0.05);
-  EXPECT_EQ(two.by_lag[0], two.neighbours());
-  EXPECT_NEAR(two.by_lag[2], std::sqrt(2.0), 0.05);  // odd lags differ, even ones repeat
-  EXPECT_LT(two.by_lag[3], 0.2);
-  // Period 3: three patterns in turn.
-  const TurnRepeat three = turn_repeat(turns_of(turns, n, [&](std::size_t r, double th) {
-    return pattern(r % 3, th) + 0.3 * noise(gen);
-  }), n);
-  EXPECT_EQ(three.period, 3u);
-  // Irregular: a random pattern each turn.
-  std::uniform_real_distribution<double> phase(0.0, units::kTwoPi);
-  std::vector<double> phases(turns);
-  for (double& p : phases) p = phase(gen);
-  const TurnRepeat irregular = turn_repeat(turns_of(turns, n, [&](std::size_t r, double th) {
-    return 5 * std::sin(6 * th + phases[r]) + 0.3 * noise(gen);
-  }), n);
-  EXPECT_EQ(irregular.period, 0u);
-  EXPECT_NEAR(irregular.ratio(), 1.0, 0.25);
-  // Every turn alike but noise: no period (the spread is the noise's).
-  EXPECT_EQ(turn_repeat(turns_of(turns, n, [&](std::size_t, double th) { return 50 * std::sin(th) + noise(gen); }), n).period, 0u);
-  // A slow drift: every lag small, neighbours too: no period.
-  EXPECT_EQ(turn_repeat(turns_of(turns, n, [&](std::size_t r, double th) { return 0.5 * static_cast<double>(r) * std::sin(th); }), n).period, 0u);
-  // Too few turns for period 2 (2p + 4 = 8).
-  EXPECT_EQ(turn_repeat(turns_of(7, n, [&](std::size_t r, double th) { return (r % 2 ? 1.0 : -1.0) * std::cos(th); }), n).period, 0u);
-  EXPECT_THROW(turn_repeat(std::vector<double>(10, 0.0), 3), RunError);
-}
-
 TEST(ResponseStatistics, RejectsRaggedInput) {
   std::vector<double> nominal(10), x(25);
   EXPECT_THROW(response_statistics(x, nominal), std::exception);

@@ -1,0 +1,63 @@
+#pragma once
+// Whether a link's turns repeat with a period of several turns (a periodic
+// motion of the mechanism, e.g. period 2: impacts alternating between two
+// patterns). With x_r the turns' deviations from their mean curve,
+//   ratio_p = RMS over r of (x_{r+p} − x_r) / (√2 · RMS of x_r),
+// about 1 for irregular turns or noise at every p, about 0 at the period of
+// a periodic motion and √2 at p = 1 for period 2. `period` is the shortest
+// p in 2 … kMaxTurnRepeatPeriod with ratio_p < kTurnRepeatRatio while
+// ratio_1 ≥ 1 − kTurnRepeatRatio (turns that differ from their neighbours),
+// with at least 2p + 4 turns; 0 when none. A period-1 motion (every turn
+// alike) gives no period: its spread is the noise's, as the model's.
+// The mean curve cancels in x_{r+p} − x_r, so the numerator streams with the
+// last kMaxTurnRepeatPeriod turns kept, and the denominator is the
+// synchronous average's spread (averaging.hpp): `fourbar analyze` takes it
+// turn by turn, the report and the fit from whole grids (turn_repeat).
+// On the e = 0.8 virtual-rig session (docs/fit.md "A periodic recording"):
+// 250 rpm, 0.254 mm gives ratio_2 = 0.14, ratio_1 = 1.41; its three other
+// recordings 0.98–1.05 at every p.
+
+#include <array>
+#include <cstddef>
+#include <deque>
+#include <span>
+#include <vector>
+
+#include "analyze/averaging.hpp"
+
+namespace fourbar {
+
+inline constexpr std::size_t kMaxTurnRepeatPeriod = 4;
+inline constexpr double kTurnRepeatRatio = 0.3;
+
+struct TurnRepeat {
+  std::size_t period = 0;
+  /// ratio_p for p = 1 … kMaxTurnRepeatPeriod (1 where there are too few turns).
+  std::array<double, kMaxTurnRepeatPeriod> by_lag{1, 1, 1, 1};
+  double ratio() const { return by_lag[period >= 2 ? period - 1 : 1]; }  ///< at the period (ratio_2 when none)
+  double neighbours() const { return by_lag[0]; }                      ///< ratio_1
+};
+
+/// Turns in, one at a time and in order; `gap()` where a turn is missing
+/// (a clipped or guard turn left out), so that lags pair only turns that
+/// followed each other.
+class TurnRepeatAccumulator {
+ public:
+  explicit TurnRepeatAccumulator(std::size_t grid_points_per_rev);
+  void add(std::span<const double> turn);
+  void gap() { recent_.clear(); }
+  std::size_t turns() const { return average_.revolutions(); }
+  TurnRepeat result() const;
+
+ private:
+  std::size_t n_;
+  SynchronousAverager average_;
+  std::deque<std::vector<double>> recent_;  ///< the last turns, newest last
+  std::array<double, kMaxTurnRepeatPeriod> lag_sum_{};
+  std::array<std::size_t, kMaxTurnRepeatPeriod> lag_pairs_{};
+};
+
+/// The same of `turns` consecutive rows of N values (row-major).
+TurnRepeat turn_repeat(std::span<const double> turns, std::size_t grid_points_per_rev);
+
+}  // namespace fourbar
