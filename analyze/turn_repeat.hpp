@@ -11,8 +11,10 @@
 // alike) gives no period: its spread is the noise's, as the model's.
 // The mean curve cancels in x_{r+p} − x_r, so the numerator streams with the
 // last kMaxTurnRepeatPeriod turns kept, and the denominator is the
-// synchronous average's spread (averaging.hpp): `fourbar analyze` takes it
-// turn by turn, the report and the fit from whole grids (turn_repeat).
+// synchronous average's spread (averaging.hpp). The analysis streams it
+// over its averaged turns (LinkResult::alpha_repeat: `fourbar analyze`, and
+// the measured side of the report and the fit); the model's turns, a whole
+// grid, go through turn_repeat.
 // On the e = 0.8 virtual-rig session (docs/fit.md "A periodic recording"):
 // 250 rpm, 0.254 mm gives ratio_2 = 0.14, ratio_1 = 1.41; its three other
 // recordings 0.98–1.05 at every p.
