@@ -68,6 +68,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::vector<TruthRow> truth = read_truth(argv[1]);
+  if (truth.empty()) {
+    std::fprintf(stderr, "fourbar: %s: no rows with time_s, theta3_rad, omega3_rad_s, theta4_rad, omega4_rad_s; give the "
+                 "REC.truth.csv that fourbar virtual-rig writes\n", argv[1]);
+    return 2;
+  }
   const double w = units::rpm_to_rad_s(std::atof(argv[2])), xi = std::atof(argv[3]) * 1e-3, e = std::atof(argv[4]);
   const int turns = argc > 5 ? std::atoi(argv[5]) : 40, directions = argc > 6 ? std::atoi(argv[6]) : 8;
   const Rig rig = load_rig(FOURBAR_SOURCE_DIR "/data/rigs/thesis.toml");
