@@ -83,6 +83,7 @@ void ChunkedAnalysis::end_segment() {
   // The segment's last revolutions were guard revolutions.
   for (auto& p : guard_queue_) commit(*p, false);
   guard_queue_.clear();
+  repeat_held_.clear();  // the segment's last turns: not clear of its end
   for (auto& s : spectra_) s->restart();
   for (auto& c : omega_carry_) c.reset();
   for (auto* v : {&theta_, &speed_, &accel_}) v->clear();

@@ -122,6 +122,7 @@ void ChunkedAnalysis::deliver(std::unique_ptr<ChunkOutcome> outcome) {
     };
     Pending p;
     p.number = static_cast<std::size_t>(number);
+    p.index_in_segment = revs_in_segment_;
     p.leading_guard = revs_in_segment_++ < o.guard_revolutions;
     p.speed = row(c.speed);
     for (std::size_t j = 0; j < links; ++j) {

@@ -86,7 +86,8 @@ void ChunkedAnalysis::make_averagers() {
   normal_avg_.assign(links, SynchronousAverager(N));
   omega_sq_avg_.assign(links, SynchronousAverager(N));
   alpha_repeat_.assign(links, TurnRepeatAccumulator(N));
-  last_averaged_.reset();
+  repeat_held_.clear();
+  repeat_last_added_.reset();
   omega_carry_.assign(links, std::nullopt);
 }
 

@@ -113,6 +113,7 @@ class ChunkedAnalysis final : public AcquisitionSink {
   /// One revolution of a chunk on the grid, waiting to be committed.
   struct Pending {
     std::size_t number = 0;
+    std::size_t index_in_segment = 0;  // 0 for the segment's first revolution
     bool leading_guard = false;
     std::vector<double> speed;
     std::vector<std::vector<double>> alpha, omega, omega_sq;  // per link; omega_sq empty without a normal channel
@@ -123,6 +124,8 @@ class ChunkedAnalysis final : public AcquisitionSink {
   std::unique_ptr<ChunkWorkspace> make_workspace() const;
   void make_spectra(std::size_t segment_frames);
   void make_averagers();
+  // revolution_results.cpp
+  void hold_for_repeat(const Pending& rev, bool averaged);
   void lay_out_result(std::size_t taps);
   // chunk_stitching.cpp
   void process_ready();
@@ -194,8 +197,13 @@ class ChunkedAnalysis final : public AcquisitionSink {
   std::deque<std::unique_ptr<Pending>> guard_queue_;
   std::unique_ptr<SynchronousAverager> speed_avg_;
   std::vector<SynchronousAverager> alpha_avg_, omega_avg_, normal_avg_, omega_sq_avg_;
-  std::vector<TurnRepeatAccumulator> alpha_repeat_;  // per link, over the averaged turns
-  std::optional<std::size_t> last_averaged_;          // number of the last averaged revolution
+  std::vector<TurnRepeatAccumulator> alpha_repeat_;  // per link, over the averaged turns away from the segment ends
+  struct HeldTurn {
+    std::size_t number = 0;
+    std::vector<std::vector<double>> alpha;  // per link
+  };
+  std::deque<HeldTurn> repeat_held_;                 // averaged turns not yet kTurnRepeatEdgeTurns from the segment end
+  std::optional<std::size_t> repeat_last_added_;     // number of the last turn added to alpha_repeat_
   std::vector<std::unique_ptr<SpectrumAverager>> spectra_;
 
   // Chunks on worker threads (chunk_dispatch.cpp). Declared last: the

@@ -31,8 +31,7 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
   out.number = rev.number;
   out.averaged = averaged;
   out.crank_speed_rad_s = rev.speed;
-  // A turn left out between two averaged ones breaks the lags' pairs.
-  const bool follows = averaged && last_averaged_ && *last_averaged_ + 1 == rev.number;
+  hold_for_repeat(rev, averaged);
   if (averaged) speed_avg_->add(rev.speed);
   if (result_.options.keep_revolutions) result_.revolution_numbers.push_back(rev.number);
   for (std::size_t j = 0; j < channels_.links.size(); ++j) {
@@ -46,8 +45,6 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
     }
     if (!averaged) continue;
     alpha_avg_[j].add(rev.alpha[j]);
-    if (!follows) alpha_repeat_[j].gap();
-    alpha_repeat_[j].add(rev.alpha[j]);
     omega_avg_[j].add(rev.omega[j]);
     if (!rev.omega_sq[j].empty()) {
       normal_avg_[j].add(rev.omega_sq[j]);
@@ -56,8 +53,24 @@ void ChunkedAnalysis::commit(Pending& rev, bool averaged) {
       omega_sq_avg_[j].add(sq);
     }
   }
-  if (averaged) last_averaged_ = rev.number;
   if (observer_) observer_->on_revolution(out);
+}
+
+void ChunkedAnalysis::hold_for_repeat(const Pending& rev, bool averaged) {
+  // Turns kTurnRepeatEdgeTurns revolutions before this one are clear of the
+  // segment's end: into the measure, in order; a turn missing between two
+  // (clipped, a guard) breaks the lags' pairs.
+  while (!repeat_held_.empty() && rev.number >= repeat_held_.front().number + kTurnRepeatEdgeTurns) {
+    HeldTurn& h = repeat_held_.front();
+    const bool follows = repeat_last_added_ && *repeat_last_added_ + 1 == h.number;
+    for (std::size_t j = 0; j < alpha_repeat_.size(); ++j) {
+      if (!follows) alpha_repeat_[j].gap();
+      alpha_repeat_[j].add(h.alpha[j]);
+    }
+    repeat_last_added_ = h.number;
+    repeat_held_.pop_front();
+  }
+  if (averaged && rev.index_in_segment >= kTurnRepeatEdgeTurns) repeat_held_.push_back({rev.number, rev.alpha});
 }
 
 void ChunkedAnalysis::finish() {

@@ -33,6 +33,7 @@ void TurnRepeatAccumulator::add(std::span<const double> turn) {
 TurnRepeat TurnRepeatAccumulator::result() const {
   TurnRepeat out;
   const std::size_t turns = average_.revolutions();
+  out.turns = turns;
   if (turns < 2) return out;
   // Mean square deviation from the mean curve over every value: the sample
   // variance per angle times (R − 1)/R, averaged over the angles.

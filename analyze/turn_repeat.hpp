@@ -31,11 +31,20 @@ namespace fourbar {
 
 inline constexpr std::size_t kMaxTurnRepeatPeriod = 4;
 inline constexpr double kTurnRepeatRatio = 0.3;
+/// The analysis leaves the first and last turns of each pulse-train segment
+/// out of this measure: its filter continues the signal at a segment's ends
+/// by repeating the first and last turn, right for a motion that repeats
+/// every turn and not for one of period 2 or more, and the mismatch rings
+/// into the turns next to the ends (a drive of ±5 % at a period of 2 turns,
+/// 20 turns: ratio_2 0.46 with every turn, 0.16 without the end turns, 0.054
+/// without two at each end; docs/analysis.md "Turns that repeat").
+inline constexpr std::size_t kTurnRepeatEdgeTurns = 2;
 
 struct TurnRepeat {
   std::size_t period = 0;
   /// ratio_p for p = 1 … kMaxTurnRepeatPeriod (1 where there are too few turns).
   std::array<double, kMaxTurnRepeatPeriod> by_lag{1, 1, 1, 1};
+  std::size_t turns = 0;  ///< turns measured
   double ratio() const { return by_lag[period >= 2 ? period - 1 : 1]; }  ///< at the period (ratio_2 when none)
   double neighbours() const { return by_lag[0]; }                      ///< ratio_1
 };

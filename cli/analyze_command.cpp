@@ -163,7 +163,8 @@ nlohmann::json link_json(const LinkResult& l) {
                       {"omega_peak_rad_s", peak(l.omega_rad_s.mean)},
                       {"omega_std_rms_rad_s", l.omega_std_rms_rad_s}};
   const TurnRepeat& r = l.alpha_repeat;
-  j["alpha_turns_repeat"] = {{"period_turns", r.period},
+  j["alpha_turns_repeat"] = {{"turns", r.turns},
+                             {"period_turns", r.period},
                              {"ratio", r.ratio()},
                              {"neighbours", r.neighbours()},
                              {"by_lag", std::vector<double>(r.by_lag.begin(), r.by_lag.end())}};

@@ -120,10 +120,10 @@ json recording_record(const RecordingAnalysis& a, const MeasuredResponse& measur
 
 namespace {
 
-json turns_repeat_json(const TurnRepeat& r, std::size_t turns) {
+json turns_repeat_json(const TurnRepeat& r) {
   json lags = json::array();
   for (double v : r.by_lag) lags.push_back(v);
-  return {{"turns", turns}, {"period_turns", r.period}, {"ratio", r.ratio()}, {"neighbours", r.neighbours()}, {"by_lag", lags}};
+  return {{"turns", r.turns}, {"period_turns", r.period}, {"ratio", r.ratio()}, {"neighbours", r.neighbours()}, {"by_lag", lags}};
 }
 
 /// The relative standard error of a (scatter) = model / measured turn-to-turn
@@ -149,8 +149,8 @@ void add_scatter_errors(json& r, const RecordingAnalysis& a, const MatchedTheory
         s.clearance_revolutions.size() / n < 4)
       continue;
     r["metrics"][key]["turns_repeat"] = {
-        {"measured", turns_repeat_json((**link).alpha_repeat, (**link).alpha_rad_s2.revolutions)},
-        {"model", turns_repeat_json(turn_repeat(s.clearance_revolutions, n), s.clearance_revolutions.size() / n)}};
+        {"measured", turns_repeat_json((**link).alpha_repeat)},
+        {"model", turns_repeat_json(turn_repeat(s.clearance_revolutions, n))}};
     const StatisticValues measured = response_statistics(turns, s.nominal);
     const StatisticValues model = response_statistics(s.clearance_revolutions, s.nominal);
     if (!(measured.value[spread] > 0) || !(model.value[spread] > 0)) continue;
