@@ -46,9 +46,9 @@ TurnRepeat TurnRepeatAccumulator::result() const {
     if (lag_pairs_[p - 1] > 0)
       out.by_lag[p - 1] = std::sqrt(lag_sum_[p - 1] / static_cast<double>(lag_pairs_[p - 1] * n_) / (2.0 * dev));
   if (out.neighbours() < 1 - kTurnRepeatRatio) return out;
-  for (std::size_t p = 2; p <= kMaxTurnRepeatPeriod && lag_pairs_[p - 1] + p >= 2 * p + 4; ++p)
-    if (out.by_lag[p - 1] < kTurnRepeatRatio) {
-      out.period = p;
+  for (std::size_t p = 2; p <= kMaxTurnRepeatPeriod; ++p)
+    if (lag_pairs_[p - 1] > 0 && out.by_lag[p - 1] < kTurnRepeatRatio) {
+      (lag_pairs_[p - 1] + p >= 2 * p + 4 ? out.period : out.unconfirmed_period) = p;
       break;
     }
   return out;

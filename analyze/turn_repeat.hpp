@@ -45,6 +45,9 @@ struct TurnRepeat {
   /// ratio_p for p = 1 … kMaxTurnRepeatPeriod (1 where there are too few turns).
   std::array<double, kMaxTurnRepeatPeriod> by_lag{1, 1, 1, 1};
   std::size_t turns = 0;  ///< turns measured
+  /// A p whose ratio passes (ratio_p < kTurnRepeatRatio, neighbours differ)
+  /// but with fewer than 2p + 4 turns: a period these turns cannot confirm (0: none).
+  std::size_t unconfirmed_period = 0;
   double ratio() const { return by_lag[period >= 2 ? period - 1 : 1]; }  ///< at the period (ratio_2 when none)
   double neighbours() const { return by_lag[0]; }                      ///< ratio_1
 };

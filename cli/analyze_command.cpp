@@ -58,9 +58,11 @@ Writes into DIR (default out/<recording name>/analyze):
   summary.json       provenance, recording and acquisition summary (pulses,
                      revolutions, rpm), settings (filter, kernel taps, grid,
                      conversion, integration), RMS of the averaged curves and
-                     of their spread, normal-channel check, warnings,
-                     setup_check (status "ok" or "check set-up", findings);
-                     the provenance of the CSV files
+                     of their spread, whether the turns repeat every 2-4
+                     turns (alpha_turns_repeat; a line on the terminal when
+                     they do; docs/analysis.md), normal-channel check,
+                     warnings, setup_check (status "ok" or "check set-up",
+                     findings); the provenance of the CSV files
 )";
 
 // The defaults paragraph of the details, its numbers from analyze/analysis_defaults.hpp.
@@ -165,6 +167,7 @@ nlohmann::json link_json(const LinkResult& l) {
   const TurnRepeat& r = l.alpha_repeat;
   j["alpha_turns_repeat"] = {{"turns", r.turns},
                              {"period_turns", r.period},
+                             {"unconfirmed_period_turns", r.unconfirmed_period},
                              {"ratio", r.ratio()},
                              {"neighbours", r.neighbours()},
                              {"by_lag", std::vector<double>(r.by_lag.begin(), r.by_lag.end())}};
@@ -394,6 +397,12 @@ int run_analyze(const Invocation& inv) {
                 << " turns (turn i against turn i + " << l->alpha_repeat.period << ": " << format_number(l->alpha_repeat.ratio(), 2)
                 << " of what irregular turns give, " << format_number(l->alpha_repeat.neighbours(), 2)
                 << " for neighbouring turns): a periodic motion of the mechanism\n";
+    else if (l && l->alpha_repeat.unconfirmed_period >= 2)
+      std::cout << (l->link == SensedLink::coupler ? "alpha3" : "alpha4") << "'s turns may repeat every "
+                << l->alpha_repeat.unconfirmed_period << " turns (" << format_number(l->alpha_repeat.by_lag[l->alpha_repeat.unconfirmed_period - 1], 2)
+                << " of what irregular turns give), but " << l->alpha_repeat.turns << " turns are too few to tell (at least "
+                << 2 * l->alpha_repeat.unconfirmed_period + 4 << ", the first and last " << kTurnRepeatEdgeTurns
+                << " of each pulse-train segment not counted): record more turns\n";
   return 0;
 }
 

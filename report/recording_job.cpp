@@ -123,7 +123,8 @@ namespace {
 json turns_repeat_json(const TurnRepeat& r) {
   json lags = json::array();
   for (double v : r.by_lag) lags.push_back(v);
-  return {{"turns", r.turns}, {"period_turns", r.period}, {"ratio", r.ratio()}, {"neighbours", r.neighbours()}, {"by_lag", lags}};
+  return {{"turns", r.turns},           {"period_turns", r.period}, {"unconfirmed_period_turns", r.unconfirmed_period},
+          {"ratio", r.ratio()},          {"neighbours", r.neighbours()}, {"by_lag", lags}};
 }
 
 /// The relative standard error of a (scatter) = model / measured turn-to-turn

@@ -59,8 +59,13 @@ TEST(TurnRepeat, FindsAPeriodicMotionUnderNoiseAndNothingInIrregularTurns) {
   EXPECT_EQ(turn_repeat(turns_of(turns, n, [&](std::size_t, double th) { return 50 * std::sin(th) + noise(gen); }), n).period, 0u);
   // A slow drift: every lag small, neighbours too: no period.
   EXPECT_EQ(turn_repeat(turns_of(turns, n, [&](std::size_t r, double th) { return 0.5 * static_cast<double>(r) * std::sin(th); }), n).period, 0u);
-  // Too few turns for period 2 (2p + 4 = 8).
-  EXPECT_EQ(turn_repeat(turns_of(7, n, [&](std::size_t r, double th) { return (r % 2 ? 1.0 : -1.0) * std::cos(th); }), n).period, 0u);
+  // Too few turns for period 2 (2p + 4 = 8): not named, but said to be unconfirmed.
+  const TurnRepeat few = turn_repeat(turns_of(7, n, [&](std::size_t r, double th) { return (r % 2 ? 1.0 : -1.0) * std::cos(th); }), n);
+  EXPECT_EQ(few.period, 0u);
+  EXPECT_EQ(few.unconfirmed_period, 2u);
+  EXPECT_EQ(few.turns, 7u);
+  EXPECT_EQ(two.unconfirmed_period, 0u);
+  EXPECT_EQ(irregular.unconfirmed_period, 0u);
   EXPECT_THROW(turn_repeat(std::vector<double>(10, 0.0), 3), RunError);
 }
 
