@@ -90,9 +90,11 @@ void body_terms(const ElasticLink& link, ElasticBodyData& data, const FrameState
   const ModalVector& eta = modal.eta_m;
   const ModalVector& eta_dot = modal.eta_dot_m_s;
   const Eigen::Matrix2d a = rotation(frame.angle_rad);
-  const Eigen::Vector2d s = link.first_moment_kg_m + link.shape_moment * eta;
+  // Coefficient-wise (lazy) products: for n ≤ 16 Eigen's general matrix–vector
+  // kernel costs more in dispatch than the product itself.
+  const Eigen::Vector2d s = link.first_moment_kg_m + link.shape_moment.lazyProduct(eta);
   ModalVector m_eta(n), v(n);  // fixed capacity, products written in place (noalias): no heap
-  m_eta.noalias() = link.modal_mass * eta;
+  m_eta.noalias() = link.modal_mass.lazyProduct(eta);
   const double w = frame.angular_velocity_rad_s;
 
   BodyMatrix& m = data.mass;
@@ -101,22 +103,22 @@ void body_terms(const ElasticLink& link, ElasticBodyData& data, const FrameState
   m.block<2, 1>(0, 2) = a * turn(s);
   m.block(0, 3, 2, n).noalias() = a * link.shape_moment;
   m(2, 2) = link.inertia_origin_kg_m2 + 2 * link.axial_coupling.dot(eta) + eta.dot(m_eta);
-  v.noalias() = link.gyroscopic.transpose() * eta;
+  v.noalias() = link.gyroscopic.transpose().lazyProduct(eta);
   m.block(2, 3, 1, n) = (link.bending_coupling + v).transpose();
   m.block(3, 3, n, n) = link.modal_mass;
   m.triangularView<Eigen::StrictlyLower>() = m.transpose();
 
   BodyVector& q = data.quadratic_force;
-  const Eigen::Vector2d s_dot = link.shape_moment * eta_dot;
+  const Eigen::Vector2d s_dot = link.shape_moment.lazyProduct(eta_dot);
   q.head<2>() = a * (w * w * s - 2 * w * turn(s_dot));
   q(2) = -2 * w * (link.axial_coupling.dot(eta_dot) + eta_dot.dot(m_eta));
-  v.noalias() = link.gyroscopic * eta_dot;
+  v.noalias() = link.gyroscopic.lazyProduct(eta_dot);
   q.tail(n) = w * w * (link.axial_coupling + m_eta) + 2 * w * v;
 
   data.stiffness_force.head<3>().setZero();
-  data.stiffness_force.tail(n).noalias() = -link.modal_stiffness * eta;
+  data.stiffness_force.tail(n).noalias() = -link.modal_stiffness.lazyProduct(eta);
   data.damping_force.head<3>().setZero();
-  data.damping_force.tail(n).noalias() = -link.modal_damping * eta_dot;
+  data.damping_force.tail(n).noalias() = -link.modal_damping.lazyProduct(eta_dot);
 }
 
 void point_jacobian(const ElasticLink& link, ElasticBodyData& data, double s_m, const FrameState& frame,

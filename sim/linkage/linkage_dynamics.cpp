@@ -133,7 +133,8 @@ void add_elastic_body(const LinkageModel& m, const LinkageCoordinates& c, const 
   }
   w.M.block(i0, i0, modes, modes) += mb.bottomRightCorner(modes, modes);
   w.Q.segment(i0, modes) += qb.tail(modes);
-  w.strain_energy_J += strain_energy(link, modal);
+  // ½ηᵀKη from the stiffness force just formed (−K·η), not a second product.
+  w.strain_energy_J += -0.5 * modal.eta_m.dot(data.stiffness_force.tail(modes));
   w.modal_damping_power_W += -modal.eta_dot_m_s.dot(data.damping_force.tail(modes));
 }
 

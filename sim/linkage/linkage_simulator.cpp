@@ -327,21 +327,27 @@ struct LinkageSimulator::Impl final : LinkageOde {
   std::vector<double> track_state;
 
   /// Peak force, penetration and the end of the first compression–restitution
-  /// cycle of each open contact, from the pairs at mid-step and at the step's
-  /// end (each evaluated once for every open contact).
+  /// cycle of each open contact, from the pairs at the step's end and, while
+  /// an impact's first cycle is open, at mid-step too (each evaluated once for
+  /// every open contact). A sustained contact (phase 2) is smooth on the
+  /// step's scale, so its peaks are read at the step ends only.
   void track(double ta, double tb) {
-    bool any = false;
-    for (int j : model.clearance_joints()) any = any || ep[static_cast<std::size_t>(j)].active;
+    bool any = false, impact = false;
+    for (int j : model.clearance_joints()) {
+      const Episode& e = ep[static_cast<std::size_t>(j)];
+      any = any || e.active;
+      impact = impact || (e.active && e.phase < 2);
+    }
     if (!any || !(tb > ta)) return;
     LinkageWorkspace mid_ws, end_ws;
-    const std::array<PairState, kJoints>& mid = pairs_at(0.5 * (ta + tb), mid_ws);
+    const std::array<PairState, kJoints>* mid = impact ? &pairs_at(0.5 * (ta + tb), mid_ws) : nullptr;
     const std::array<PairState, kJoints>& end = pairs_at(tb, end_ws);
     for (int j : model.clearance_joints()) {
       const auto ju = static_cast<std::size_t>(j);
       Episode& e = ep[ju];
       if (!e.active) continue;
       LinkageJointBooks& b = diag.joint[ju];
-      for (const PairState* ps : {&mid[ju], &end[ju]}) {
+      for (const PairState* ps : {mid ? &(*mid)[ju] : &end[ju], &end[ju]}) {
         e.rec.peak_force_N = std::max(e.rec.peak_force_N, ps->normal_force_N);
         e.rec.max_penetration_m = std::max(e.rec.max_penetration_m, ps->penetration_m);
         b.max_penetration_m = std::max(b.max_penetration_m, ps->penetration_m);
