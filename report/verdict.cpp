@@ -216,6 +216,13 @@ std::string repeat_clause(const VerdictInputs& in, bool chaotic, bool& differs) 
   differs = false;
   if (!in.repeat) return {};
   const VerdictInputs::Repeat& r = *in.repeat;
+  if (!r.confirmed)
+    return " The measured turns may repeat every " + std::to_string(r.period) + " turns (turn i against turn i + " +
+           std::to_string(r.period) + ": " + num(r.ratio, 2) + " of what irregular turns give, against " + num(r.neighbours, 2) +
+           " for neighbouring turns), but the " + std::to_string(r.turns) +
+           " turns it compares (each pulse-train segment's first and last two stay out) are too few to tell (at least " +
+           std::to_string(2 * r.period + 4) + "): record more turns. If they do repeat, a compares a periodic motion "
+           "with the model's and says little about the contact parameters (docs/verdict.md \"A periodic measured motion\").";
   std::string s = " The measured turns repeat every " + std::to_string(r.period) + " turns (turn i against turn i + " +
                   std::to_string(r.period) + ": " + num(r.ratio, 2) + " of what irregular turns give, against " +
                   num(r.neighbours, 2) + " for neighbouring turns), a periodic motion of the mechanism";
@@ -388,6 +395,18 @@ VerdictInputs verdict_inputs(const json& r, const json* fit, const std::string& 
   in.contact = contact.is_string() ? contact.get<std::string>() : "";
   in.family = verdict_family(r);
   const json& measured_repeat = path(m, {"turns_repeat", "measured"});
+  const auto unconfirmed = static_cast<std::size_t>(num_or(path(measured_repeat, {"unconfirmed_period_turns"}), 0));
+  const json& measured_lags = path(measured_repeat, {"by_lag"});
+  if (static_cast<std::size_t>(num_or(path(measured_repeat, {"period_turns"}), 0)) < 2 && unconfirmed >= 2 &&
+      measured_lags.is_array() && measured_lags.size() >= unconfirmed && measured_lags[unconfirmed - 1].is_number()) {
+    VerdictInputs::Repeat rep;
+    rep.period = unconfirmed;
+    rep.confirmed = false;
+    rep.ratio = measured_lags[unconfirmed - 1].get<double>();
+    rep.neighbours = num_or(path(measured_repeat, {"neighbours"}), 1);
+    rep.turns = static_cast<std::size_t>(num_or(path(measured_repeat, {"turns"}), 0));
+    in.repeat = rep;
+  }
   if (const auto period = static_cast<std::size_t>(num_or(path(measured_repeat, {"period_turns"}), 0)); period >= 2) {
     VerdictInputs::Repeat rep;
     rep.period = period;

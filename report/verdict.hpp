@@ -118,12 +118,17 @@ struct VerdictInputs {
   /// metrics.alpha3_rad_s2.turns_repeat, fit/response_statistics.hpp
   /// turn_repeat): ratio at the period and at lag 1, and the model's ratio at
   /// the same lag when its turns are enough to tell (≥ 2·period + 4). Absent
-  /// when the measured turns do not repeat, or in older records.
+  /// when the measured turns do not repeat, or in older records. With
+  /// `confirmed` false the ratio passes at `period` but the measured turns
+  /// (`turns`) are fewer than 2·period + 4 (record unconfirmed_period_turns):
+  /// said, not weighed.
   struct Repeat {
     std::size_t period = 0;
     double ratio = 1, neighbours = 1;
     std::optional<double> model_ratio;
     std::size_t model_turns = 0;
+    bool confirmed = true;
+    std::size_t turns = 0;
   };
   std::optional<Repeat> repeat;
 };

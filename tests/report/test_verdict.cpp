@@ -331,6 +331,31 @@ TEST(Verdict, APeriodicMeasuredMotionIsNamedAndWeighed) {
   EXPECT_NE(v.agreement.sentence.find("a compares the averages of two different motions"), std::string::npos) << v.agreement.sentence;
 }
 
+// A 9-turn recording of a drive of period 2 (tests/cli AnalyzeCommand
+// "may repeat"): 4 turns measured after the segment ends, ratio_2 0.17. The
+// period is said with what to do, and not weighed: the level stays.
+TEST(Verdict, AnUnconfirmedPeriodIsSaidNotWeighed) {
+  VerdictInputs in = clean();
+  in.effect_to_floor = 1.3, in.spread_rms = 80, in.model_spread_rms = 82;  // chaotic, a (scatter) 1.03
+  in.scatter_relative_error = 0.06;
+  in.model_revolutions = 20;
+  const Verdict before = verdict_of(in);
+  ASSERT_EQ(before.agreement.level, VerdictLevel::good);
+  VerdictInputs::Repeat rep;
+  rep.period = 2, rep.ratio = 0.17, rep.neighbours = 1.38, rep.confirmed = false, rep.turns = 4;
+  in.repeat = rep;
+  const Verdict v = verdict_of(in);
+  EXPECT_EQ(v.agreement.level, VerdictLevel::good) << v.agreement.sentence;
+  EXPECT_EQ(v.agreement.words, before.agreement.words);
+  EXPECT_NE(v.agreement.sentence.find("The measured turns may repeat every 2 turns (turn i against turn i + 2: 0.17 of what "
+                                      "irregular turns give, against 1.4 for neighbouring turns), but the 4 turns it compares "
+                                      "(each pulse-train segment's first and last two stay out) are too few to tell (at "
+                                      "least 8): record more turns."),
+            std::string::npos)
+      << v.agreement.sentence;
+  EXPECT_EQ(v.agreement.sentence.find("do not ("), std::string::npos) << "no model comparison for an unconfirmed period";
+}
+
 TEST(Verdict, FitParametersAreNamed) {
   VerdictInputs in = clean();
   in.a_spectral = 1.6;
@@ -388,6 +413,21 @@ TEST(VerdictInputs, TurnsRepeatReadFromTheRecord) {
   ASSERT_TRUE(in.repeat);
   EXPECT_FALSE(in.repeat->model_ratio);
   EXPECT_EQ(in.repeat->model_turns, 7u);
+  EXPECT_TRUE(in.repeat->confirmed);
+  // A period these turns cannot confirm: read as unconfirmed, its ratio from by_lag.
+  json unconfirmed = repeat(4, 0, 1.38, {1.38, 0.17, 1.0, 1.0});
+  unconfirmed["unconfirmed_period_turns"] = 2;
+  r["metrics"]["alpha3_rad_s2"]["turns_repeat"]["measured"] = unconfirmed;
+  in = verdict_inputs(r);
+  ASSERT_TRUE(in.repeat);
+  EXPECT_FALSE(in.repeat->confirmed);
+  EXPECT_EQ(in.repeat->period, 2u);
+  EXPECT_DOUBLE_EQ(in.repeat->ratio, 0.17);
+  EXPECT_DOUBLE_EQ(in.repeat->neighbours, 1.38);
+  EXPECT_EQ(in.repeat->turns, 4u);
+  unconfirmed["unconfirmed_period_turns"] = 0;
+  r["metrics"]["alpha3_rad_s2"]["turns_repeat"]["measured"] = unconfirmed;
+  EXPECT_FALSE(verdict_inputs(r).repeat) << "neither a period nor an unconfirmed one";
 }
 
 TEST(VerdictInputs, ReadFromTheRecordAndTheFit) {
