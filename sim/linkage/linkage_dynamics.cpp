@@ -44,7 +44,7 @@ BodyFrame ground_frame(int size) {
 
 /// Solves A·x = b for the symmetric positive definite leading `n` × `n` block
 /// of `a` (Cholesky, written out: Eigen's blocked LLT spent ~6000
-/// instructions on the 12 × 12 mass matrix, a fifth of a right-hand side);
+/// instructions on the speed case's 10 × 10 mass matrix, a fifth of a right-hand side);
 /// false when a pivot is not positive (or not a number). `a` is overwritten.
 bool cholesky_solve(ZMat& a, int n, ZVec& x) {
   for (int j = 0; j < n; ++j) {
