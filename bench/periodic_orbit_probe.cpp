@@ -12,7 +12,8 @@
 // perturbed by ε (in those units) in random directions: the share that still
 // ends on the period-2 motion (ratio < 1e-3), per ε. With NEWTON_STARTS,
 // Newton shooting for period-2 orbits from the model's own irregular turns
-// (docs/fit.md "Newton shooting finds it").
+// (sim/studies/periodic_orbit.hpp, the search the fit runs; docs/fit.md
+// "Newton shooting finds it").
 //
 //   bench/periodic_orbit_probe TRUTH.csv RPM CLEARANCE_MM RESTITUTION [TURNS] [DIRECTIONS] [NEWTON_STARTS]
 
@@ -31,6 +32,7 @@
 
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
+#include "sim/studies/periodic_orbit.hpp"
 #include "sim/three_mode/simulator.hpp"
 
 using namespace fourbar;
@@ -155,91 +157,40 @@ int main(int argc, char** argv) {
                 directions - refused, turns, refused);
   }
   // Newton on G(x) = P²(x) − x (P: one turn) from the turn-start states of
-  // a run of the fit's kind (nominal start at crank 0, pin on the wall), turns
-  // 20 … 20 + STARTS: does it find the period-2 orbit the recording took, or
-  // another, from the model's usual, irregular motion? Forward differences
-  // of 1e-7 in the scaled state; a full step, halved up to 10 times while
-  // |G| does not fall; converged at |G| < 1e-9.
+  // a run of the fit's kind (nominal start at crank 0), turns 21 … 20 +
+  // STARTS: does it find the period-2 orbit the recording took, or another,
+  // from the model's usual, irregular motion?
   const int starts = argc > 7 ? std::atoi(argv[7]) : 0;
   if (starts <= 0) return 0;
   if (t0 != 0.0) {
     std::fprintf(stderr, "newton: the truth's start is not at crank 0\n");
     return 1;
   }
-  auto to_state = [&](double t, const State& d) {  // scaled deviations → absolute angles and rates
-    const NominalMotion n = solve_motion(rig, crank.at(t));
-    const double th3 = std::atan2(n.pose.u3.y, n.pose.u3.x) + d[0] * ang, th4 = std::atan2(n.pose.u4.y, n.pose.u4.x) + d[1] * ang;
-    return State{th3, th4, n.omega3_rad_s + d[2] * w * ang, n.omega4_rad_s + d[3] * w * ang};
-  };
-  auto two_turns = [&](const State& d, State& out) {  // P² in scaled deviations at crank 0 (t = 0)
-    std::vector<State> xs;
-    if (!run_for(0.0, to_state(0.0, d), xs, 2)) return false;
-    out = xs[1];
-    return true;
-  };
-  std::vector<State> chaotic;
-  {
-    ClearanceSimulator sim(model, crank, s);
-    sim.start_nominal(0.0);
-    for (int k = 1; k <= 20 + starts; ++k) {
-      sim.advance_to(k * T);
-      if (k <= 20) continue;
-      const LinkMotion l = sim.current_links();
-      const NominalMotion n = solve_motion(rig, crank.at(k * T));
-      chaotic.push_back({std::atan2(cross(n.pose.u3, l.u3), dot(n.pose.u3, l.u3)) / ang,
-                         std::atan2(cross(n.pose.u4, l.u4), dot(n.pose.u4, l.u4)) / ang, (l.omega3_rad_s - n.omega3_rad_s) / (w * ang),
-                         (l.omega4_rad_s - n.omega4_rad_s) / (w * ang)});
-    }
-  }
   // The recorded orbit's two turn-start states at crank 0 (t0 = 0 above:
   // every turn start is at crank 0), in the same units.
   std::vector<State> recorded;
   run(t0, star, recorded);
   const State orbit_a = recorded[recorded.size() - 1], orbit_b = recorded[recorded.size() - 2];
-  int converged = 0, to_recorded = 0, stable = 0;
-  for (const State& x0 : chaotic) {
-    State x = x0, px{};
-    if (!two_turns(x, px)) continue;
-    auto g_of = [&](const State& a, const State& pa) {
-      State g{};
-      for (std::size_t i = 0; i < 4; ++i) g[i] = pa[i] - a[i];
-      return g;
-    };
-    auto norm = [](const State& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]); };
-    State g = g_of(x, px);
-    bool ok = true;
-    for (int it = 0; it < 30 && norm(g) > 1e-9 && ok; ++it) {
-      Eigen::Matrix4d J;
-      for (int j = 0; j < 4; ++j) {
-        State xj = x, pj{};
-        xj[static_cast<std::size_t>(j)] += 1e-7;
-        if (!two_turns(xj, pj)) { ok = false; break; }
-        const State gj = g_of(xj, pj);
-        for (int i = 0; i < 4; ++i) J(i, j) = (gj[static_cast<std::size_t>(i)] - g[static_cast<std::size_t>(i)]) / 1e-7;
-      }
-      if (!ok) break;
-      const Eigen::Vector4d step = J.fullPivLu().solve(-Eigen::Vector4d(g[0], g[1], g[2], g[3]));
-      double lambda = 1;
-      bool improved = false;
-      for (int h = 0; h < 10; ++h, lambda /= 2) {
-        State xn = x, pn{};
-        for (int i = 0; i < 4; ++i) xn[static_cast<std::size_t>(i)] += lambda * step(i);
-        if (!two_turns(xn, pn)) continue;
-        const State gn = g_of(xn, pn);
-        if (norm(gn) < norm(g)) { x = xn, g = gn, improved = true; break; }
-      }
-      if (!improved) ok = false;
-    }
-    if (!ok || norm(g) > 1e-9) continue;
-    ++converged;
+  std::printf("recorded orbit's turn starts at crank 0: (%.10g, %.10g, %.10g, %.10g) and (%.10g, %.10g, %.10g, %.10g)\n", orbit_a[0],
+              orbit_a[1], orbit_a[2], orbit_a[3], orbit_b[0], orbit_b[1], orbit_b[2], orbit_b[3]);
+  // sim/studies/periodic_orbit.hpp: the same search the fit runs.
+  const TurnMap map(rig, xi, w, s);
+  OrbitSearchSettings os;
+  os.period = 2;
+  os.starts = starts;
+  os.skip_turns = 20;
+  os.check_turns = turns;
+  const OrbitSearchResult found = find_periodic_orbits(map, os);
+  int to_recorded = 0;
+  for (const FoundOrbit& o : found.orbits) {
+    const State x{o.start(0), o.start(1), o.start(2), o.start(3)};
     const double d = std::min(dist(x, orbit_a), dist(x, orbit_b));
-    if (d < 1e-3) ++to_recorded;  // distinct orbits lie ≥ 1 apart in these units
-    std::vector<State> xs;
-    if (run(0.0, to_state(0.0, x), xs) && lag2_ratio(xs) < 1e-3) ++stable;
-    std::printf("newton from chaotic turn start: |G| %.1e, distance to the recorded orbit %.3g, period 2 over %d turns: %s\n", norm(g), d,
-                turns, lag2_ratio(xs) < 1e-3 ? "yes" : "no");
+    to_recorded += d < 1e-3;
+    std::printf("orbit: distance to the recorded orbit %.3g, repeats to %.2g over turns %d-%d: %s\n", d, o.repeat_distance,
+                turns / 2, turns, o.stable ? "stable" : "unstable");
   }
-  std::printf("newton: %d of %zu starts converged, %d to the recorded orbit, %d stay on their orbit (stable)\n", converged,
-              chaotic.size(), to_recorded, stable);
+  std::printf("newton: %d of %d starts converged onto %zu distinct period-2 orbits (%d onto shorter periods), %d of them "
+              "the recorded one; %d starts reached a stable orbit\n",
+              found.converged, found.starts, found.orbits.size(), found.shorter, to_recorded, found.stable_from);
   return 0;
 }

@@ -24,8 +24,13 @@ void check(bool ok, const std::string& key, double value, const std::string& rul
   if (!ok) throw InputError("theory setting '" + key + "' = " + std::to_string(value) + ": " + rule);
 }
 
-/// The run's settings from the theory's: the three-mode impact law, or the
-/// compliant contact with its stiffness resolved from the rig's bearing.
+
+/// The averaged turns of either clearance simulator.
+void run_model(ClearanceSimulation& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
+               MatchedTheory& out);
+
+}  // namespace
+
 ClearanceSettings clearance_settings(const Rig& rig, double clearance_m, const TheorySettings& settings) {
   ClearanceSettings cs;
   cs.radial_clearance_m = clearance_m;
@@ -48,12 +53,6 @@ ClearanceSettings clearance_settings(const Rig& rig, double clearance_m, const T
   }
   return cs;
 }
-
-/// The averaged turns of either clearance simulator.
-void run_model(ClearanceSimulation& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
-               MatchedTheory& out);
-
-}  // namespace
 
 MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double crank_speed_rad_s,
                                       const CrankGrid& grid, const TheorySettings& settings) {

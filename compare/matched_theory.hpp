@@ -96,6 +96,11 @@ struct MatchedTheory {
   double max_penetration_rel = 0;
 };
 
+/// The clearance run's settings from the theory's: the three-mode impact
+/// law, or the compliant contact with its stiffness resolved from the rig's
+/// bearing. Throws InputError for settings the rig cannot take.
+ClearanceSettings clearance_settings(const Rig& rig, double clearance_m, const TheorySettings& settings);
+
 /// Simulates nominal and clearance response. Throws InputError for bad
 /// settings (named by key as in session.toml), RunError if the model fails.
 MatchedTheory simulate_matched_theory(const Rig& rig, double clearance_m, double crank_speed_rad_s,

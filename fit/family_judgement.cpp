@@ -100,10 +100,40 @@ ModelFamilyCheck elastic_family_check_at(const RecordingTarget& t, const std::ve
   return family_check_of(t, measured_turns, theory, settings);
 }
 
+OrbitSearchResult search_periodic_orbit(const RecordingTarget& t, const ContactParameters& p, double tolerance, int period,
+                                        int starts) {
+  const TheorySettings ts = theory_settings(p, 0, 0, tolerance);
+  const TurnMap map(*t.rig, t.clearance_m, t.crank_speed_rad_s, clearance_settings(*t.rig, t.clearance_m, ts));
+  OrbitSearchSettings s;
+  s.period = period;
+  s.starts = starts;
+  s.stop_at_first_stable = true;
+  return find_periodic_orbits(map, s);
+}
+
+namespace {
+
+/// What the orbit search found, as a clause of the periodic note.
+std::string orbit_clause(const OrbitSearchResult& r, int period) {
+  const std::string p = std::to_string(period);
+  const std::string how = "; Newton shooting on the model at the best point (its turn map at the recording's mean speed, "
+                          "started from its own turn starts) ";
+  for (const FoundOrbit& o : r.orbits)
+    if (o.stable)
+      return how + "finds a stable period-" + p + " motion from start " + std::to_string(r.starts) + " (a run on it repeats to " +
+             format_number(o.repeat_distance, 2) + " of the clearance's scale): the model has the recorded kind of motion, "
+             "and its runs from the fit's start do not take it";
+  return how + "finds no stable period-" + p + " motion from " + std::to_string(r.starts) + " starts (" +
+         std::to_string(r.converged) + " converged, onto " + std::to_string(r.orbits.size()) + " unstable orbits)";
+}
+
+}  // namespace
+
 std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets,
-                                     const std::vector<std::optional<std::array<TurnRepeat, 2>>>& model) {
+                                     const std::vector<std::optional<std::array<TurnRepeat, 2>>>& model,
+                                     const std::vector<std::optional<OrbitSearchResult>>& orbits) {
   std::string which;
-  bool model_irregular = false;
+  bool model_irregular = false, stable_found = false, searched = false;
   for (std::size_t k = 0; k < targets.size(); ++k) {
     const RecordingTarget& t = targets[k];
     for (FitLink l : kFitLinks) {
@@ -120,16 +150,28 @@ std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets
         model_irregular = model_irregular || !repeats;
         which += ", the model's run at the best point " + std::string(repeats ? "repeats too" : "does not") + " (" +
                  format_number(m, 2) + ")";
+        if (!repeats && k < orbits.size() && orbits[k]) {
+          searched = true;
+          stable_found = stable_found || orbits[k]->any_stable();
+          which += orbit_clause(*orbits[k], static_cast<int>(r.period));
+        }
       }
       break;  // one link per recording
     }
   }
   if (which.empty()) return "";
-  return "the measured turns hold a periodic motion: " + which + "." +
-         (model_irregular ? " A model may have such a motion beside an irregular one and not reach it from the "
-                            "recording's start; then the rejection may come from the motion its runs took rather than "
-                            "from a wrong model (docs/fit.md \"A periodic recording\")"
-                          : " (docs/fit.md \"A periodic recording\")");
+  std::string tail = " (docs/fit.md \"A periodic recording\")";
+  if (model_irregular && stable_found)
+    tail = " So the rejection may come from the motion the runs took rather than from a wrong model" + tail;
+  else if (model_irregular && searched)
+    tail = " The search covers the best point only: a model with other parameters may hold the motion (on a test session it "
+           "was found at the true parameters and not at the best point), and the fit's runs compare the "
+           "recording with the model's usual motion either way; so the rejection may still come from the motion its "
+           "runs took rather than from a wrong model" + tail;
+  else if (model_irregular)
+    tail = " A model may have such a motion beside an irregular one and not reach it from the recording's start; then "
+           "the rejection may come from the motion its runs took rather than from a wrong model" + tail;
+  return "the measured turns hold a periodic motion: " + which + "." + tail;
 }
 
 }  // namespace fourbar

@@ -22,6 +22,7 @@
 #include "compare/model_family.hpp"
 #include "fit/fit_model.hpp"
 #include "fit/recording_target.hpp"
+#include "sim/studies/periodic_orbit.hpp"
 
 namespace fourbar {
 
@@ -45,9 +46,24 @@ void widen_for_model_error(ParameterEstimate& p, double delta, double scale, dou
 /// For a rejection's note: the recordings whose measured turns repeat every
 /// few turns (RecordingTarget::repeat), whether the model's run at the best
 /// point (`model[r]`, by link; absent when it failed) repeats at that period
-/// too, and what that means for the verdict; "" when no recording repeats.
+/// too, what Newton shooting on the model found (`orbits[r]`, absent when not
+/// run) and what that means for the verdict; "" when no recording repeats.
 std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets,
-                                     const std::vector<std::optional<std::array<TurnRepeat, 2>>>& model);
+                                     const std::vector<std::optional<std::array<TurnRepeat, 2>>>& model,
+                                     const std::vector<std::optional<OrbitSearchResult>>& orbits = {});
+
+/// Newton starts for the fit's orbit search (the model's own turn starts):
+/// on the e = 0.8 session's period-2 recording 6 of 100 reach its stable
+/// orbit, so 60 miss it with a chance of about 2 % (docs/fit.md "A periodic
+/// recording"). About 0.5 s a start at 250 rpm; the search stops at the first
+/// stable orbit.
+inline constexpr int kOrbitSearchStarts = 60;
+
+/// Newton shooting for a stable motion of the measured `period` in the
+/// three-mode model at contact parameters `p`, the recording's speed and
+/// clearance (sim/studies/periodic_orbit.hpp).
+OrbitSearchResult search_periodic_orbit(const RecordingTarget& target, const ContactParameters& p, double tolerance,
+                                        int period, int starts = kOrbitSearchStarts);
 
 /// The elastic-link reference's restitution in the fit: the fitted e, at least this.
 inline constexpr double kFitReferenceMinRestitution = 0.5;

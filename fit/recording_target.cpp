@@ -16,16 +16,6 @@ constexpr std::size_t kMinTurns = 8;
 
 LinkQuantity quantity_of(FitLink l) { return l == FitLink::coupler ? LinkQuantity::alpha3 : LinkQuantity::alpha4; }
 
-TheorySettings theory_settings(const ContactParameters& p, int warmup, int turns, double tolerance) {
-  TheorySettings s;
-  s.restitution = p.restitution;
-  s.contact = p.contact;
-  s.friction_coefficient = p.contact == ContactLaw::stick_slip ? p.friction_coefficient : 0.0;
-  s.warmup_revolutions = warmup;
-  s.averaged_revolutions = turns;
-  s.tolerance = tolerance;
-  return s;
-}
 
 }  // namespace
 
@@ -104,6 +94,17 @@ RecordingTarget make_recording_target(const RecordingAnalysis& a, const Recordin
   if (!t.measured[0] && !t.measured[1])
     throw InputError(name + ": neither a coupler nor a rocker tangential channel; the fit needs at least one");
   return t;
+}
+
+TheorySettings theory_settings(const ContactParameters& p, int warmup, int turns, double tolerance) {
+  TheorySettings s;
+  s.restitution = p.restitution;
+  s.contact = p.contact;
+  s.friction_coefficient = p.contact == ContactLaw::stick_slip ? p.friction_coefficient : 0.0;
+  s.warmup_revolutions = warmup;
+  s.averaged_revolutions = turns;
+  s.tolerance = tolerance;
+  return s;
 }
 
 SimulatedStatistics simulate_statistics(const RecordingTarget& t, const ContactParameters& p, int warmup, int turns,

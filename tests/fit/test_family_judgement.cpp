@@ -98,6 +98,31 @@ TEST(FamilyJudgement, APeriodicRecordingIsNamedInTheNote) {
   EXPECT_NE(note.find("the model's run at the best point does not (0.98)"), std::string::npos) << note;
   EXPECT_NE(note.find("not reach it from the recording's start"), std::string::npos) << note;
   EXPECT_EQ(note.find("rec_350rpm"), std::string::npos) << note;
+  // With Newton shooting on the model at the best point: a stable orbit found ...
+  OrbitSearchResult found;
+  found.starts = 7, found.converged = 2, found.stable_from = 1;
+  found.orbits = {FoundOrbit{Eigen::Vector4d(5, 1, 2, 3), false, 8.0}, FoundOrbit{Eigen::Vector4d(0.15, -0.9, 9.2, 1.4), true, 4.5e-8}};
+  const std::string with_orbit = periodic_recordings_note(targets, {irregular, std::nullopt}, {found, std::nullopt});
+  EXPECT_NE(with_orbit.find("the model's run at the best point does not (0.98); Newton shooting on the model at the best "
+                            "point (its turn map at the recording's mean speed, started from its own turn starts) finds a "
+                            "stable period-2 motion from start 7 (a run on it repeats to 4.5e-08 of the clearance's scale)"),
+            std::string::npos)
+      << with_orbit;
+  EXPECT_NE(with_orbit.find("So the rejection may come from the motion the runs took rather than from a wrong model"),
+            std::string::npos)
+      << with_orbit;
+  EXPECT_EQ(with_orbit.find("A model may have"), std::string::npos) << with_orbit;
+  // ... or none.
+  OrbitSearchResult none;
+  none.starts = 60, none.converged = 3;
+  none.orbits = {FoundOrbit{Eigen::Vector4d(5, 1, 2, 3), false, 8.0}, FoundOrbit{Eigen::Vector4d(1, 1, 2, 3), false, 6.0}};
+  const std::string without = periodic_recordings_note(targets, {irregular, std::nullopt}, {none, std::nullopt});
+  EXPECT_NE(without.find("finds no stable period-2 motion from 60 starts (3 converged, onto 2 unstable orbits)"),
+            std::string::npos)
+      << without;
+  EXPECT_NE(without.find("The search covers the best point only: a model with other parameters may hold the motion"),
+            std::string::npos)
+      << without;
   // A model that repeats at the same period: named, without the start's hint.
   std::array<TurnRepeat, 2> periodic = irregular;
   periodic[0].by_lag = {1.4, 0.05, 1.4, 0.05};
