@@ -24,7 +24,6 @@ void check(bool ok, const std::string& key, double value, const std::string& rul
   if (!ok) throw InputError("theory setting '" + key + "' = " + std::to_string(value) + ": " + rule);
 }
 
-
 /// The averaged turns of either clearance simulator.
 void run_model(ClearanceSimulation& sim, const CrankGrid& grid, const ConstantSpeedCrank& crank, const TheorySettings& settings,
                MatchedTheory& out);

@@ -16,7 +16,6 @@ constexpr std::size_t kMinTurns = 8;
 
 LinkQuantity quantity_of(FitLink l) { return l == FitLink::coupler ? LinkQuantity::alpha3 : LinkQuantity::alpha4; }
 
-
 }  // namespace
 
 std::optional<AnalyzeOptions> band_analysis_options(const RecordingAnalysis& a, AnalyzeOptions base,

@@ -111,11 +111,11 @@ struct ModellingChoices {
   bool point_samples = false;
 };
 
-/// The clearance model at the target's operating point with `p`: `warmup`
-/// turns discarded, `turns` turns through the pass band and the statistics.
 /// The three-mode theory's settings at contact parameters p (the fit's runs).
 TheorySettings theory_settings(const ContactParameters& p, int warmup, int turns, double tolerance);
 
+/// The clearance model at the target's operating point with `p`: `warmup`
+/// turns discarded, `turns` turns through the pass band and the statistics.
 SimulatedStatistics simulate_statistics(const RecordingTarget& target, const ContactParameters& p, int warmup,
                                         int turns, double tolerance = 1e-8, const ModellingChoices& choices = {});
 
