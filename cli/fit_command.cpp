@@ -149,6 +149,10 @@ int run_fit(const Invocation& inv) {
       "about 8x from 2 to 4)")(
       "contact-stiffness", po::value(&o.model.contact_stiffness_N_per_m_n),
       "with --model elastic: the compliant contact's K in N/m^1.5 (default: from the rig's bearing keys)")(
+      "orbit-scan", po::bool_switch(&o.orbit_scan),
+      "when the family is rejected and a recording's turns repeat every few turns while the model's do not: look "
+      "for a stable motion of that period in the model at every 0.05 of the box's e, not only at the best point "
+      "(about 30 s a point and recording; docs/fit.md \"A periodic recording\")")(
       "jobs,j", po::value(&jobs), "simulations (and analysis chunks) at once (default: every core; under MPI one per rank)");
   add_quiet_option(opts, quiet);
   po::positional_options_description pos;

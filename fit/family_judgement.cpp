@@ -100,17 +100,6 @@ ModelFamilyCheck elastic_family_check_at(const RecordingTarget& t, const std::ve
   return family_check_of(t, measured_turns, theory, settings);
 }
 
-OrbitSearchResult search_periodic_orbit(const RecordingTarget& t, const ContactParameters& p, double tolerance, int period,
-                                        int starts) {
-  const TheorySettings ts = theory_settings(p, 0, 0, tolerance);
-  const TurnMap map(*t.rig, t.clearance_m, t.crank_speed_rad_s, clearance_settings(*t.rig, t.clearance_m, ts));
-  OrbitSearchSettings s;
-  s.period = period;
-  s.starts = starts;
-  s.stop_at_first_stable = true;
-  return find_periodic_orbits(map, s);
-}
-
 namespace {
 
 /// What the orbit search found, as a clause of the periodic note.
@@ -118,6 +107,7 @@ std::string orbit_clause(const OrbitSearchResult& r, int period) {
   const std::string p = std::to_string(period);
   const std::string how = "; Newton shooting on the model at the best point (its turn map at the recording's mean speed, "
                           "started from its own turn starts) ";
+  if (r.starts == 0) return how + "could not run: the model's own run failed there";
   for (const FoundOrbit& o : r.orbits)
     if (o.stable)
       return how + "finds a stable period-" + p + " motion from start " + std::to_string(r.starts) + " (a run on it repeats to " +
@@ -167,7 +157,8 @@ std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets
     tail = " The search covers the best point only: a model with other parameters may hold the motion (on a test session it "
            "was found at the true parameters and not at the best point), and the fit's runs compare the "
            "recording with the model's usual motion either way; so the rejection may still come from the motion its "
-           "runs took rather than from a wrong model" + tail;
+           "runs took rather than from a wrong model. `fourbar fit SESSION_DIR --orbit-scan` searches every " +
+           format_number(kOrbitScanStep, 2) + " of the box's e (about 30 s a point and recording)" + tail;
   else if (model_irregular)
     tail = " A model may have such a motion beside an irregular one and not reach it from the recording's start; then "
            "the rejection may come from the motion its runs took rather than from a wrong model" + tail;

@@ -22,7 +22,7 @@
 #include "compare/model_family.hpp"
 #include "fit/fit_model.hpp"
 #include "fit/recording_target.hpp"
-#include "sim/studies/periodic_orbit.hpp"
+#include "fit/orbit_search.hpp"
 
 namespace fourbar {
 
@@ -51,19 +51,6 @@ void widen_for_model_error(ParameterEstimate& p, double delta, double scale, dou
 std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets,
                                      const std::vector<std::optional<std::array<TurnRepeat, 2>>>& model,
                                      const std::vector<std::optional<OrbitSearchResult>>& orbits = {});
-
-/// Newton starts for the fit's orbit search (the model's own turn starts):
-/// on the e = 0.8 session's period-2 recording 6 of 100 reach its stable
-/// orbit, so 60 miss it with a chance of about 2 % (docs/fit.md "A periodic
-/// recording"). About 0.5 s a start at 250 rpm; the search stops at the first
-/// stable orbit.
-inline constexpr int kOrbitSearchStarts = 60;
-
-/// Newton shooting for a stable motion of the measured `period` in the
-/// three-mode model at contact parameters `p`, the recording's speed and
-/// clearance (sim/studies/periodic_orbit.hpp).
-OrbitSearchResult search_periodic_orbit(const RecordingTarget& target, const ContactParameters& p, double tolerance,
-                                        int period, int starts = kOrbitSearchStarts);
 
 /// The elastic-link reference's restitution in the fit: the fitted e, at least this.
 inline constexpr double kFitReferenceMinRestitution = 0.5;

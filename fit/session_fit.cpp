@@ -15,6 +15,7 @@
 #include "fit/matched_magnification.hpp"
 #include "fit/nuisance_offset.hpp"
 #include "fit/objective_surrogate.hpp"
+#include "fit/orbit_search.hpp"
 #include "fit/simulation_cache.hpp"
 
 namespace fourbar {
@@ -476,22 +477,8 @@ FitResult fit_contact_parameters(const std::vector<RecordingTarget>& targets, co
       const CachedSimulation& sim = cache.at(r, best);
       model_repeat.push_back(sim.error.empty() ? std::optional(sim.statistics.repeat) : std::nullopt);
     }
-    // Where the measured turns repeat and the model's run does not, look for
-    // a stable motion of that period in the model (three-mode fits only: the
-    // turn map is that model's; sim/studies/periodic_orbit.hpp).
-    std::vector<std::optional<OrbitSearchResult>> orbits(targets.size());
-    if (o.model.kind == FitModelKind::three_mode)
-      for (std::size_t r = 0; r < targets.size(); ++r)
-        for (FitLink l : kFitLinks) {
-          const auto i = static_cast<std::size_t>(l);
-          const std::size_t p = targets[r].repeat[i].period;
-          if (!targets[r].measured[i] || p < 2) continue;
-          if (model_repeat[r] && (*model_repeat[r])[i].by_lag[p - 1] >= kTurnRepeatRatio)
-            orbits[r] = search_periodic_orbit(targets[r], best, o.tolerance, static_cast<int>(p));
-          break;  // one link per recording, as the note
-        }
-    if (const std::string periodic = periodic_recordings_note(targets, model_repeat, orbits); !periodic.empty())
-      out.notes.push_back(periodic);
+    for (std::string& n : periodic_notes(targets, model_repeat, best, orbit_search_options(o)))
+      out.notes.push_back(std::move(n));
     reject_model_family(out,
                         "chi2/term " + format_number(out.chi2 / out.terms, 3) + " at the best parameters, above " +
                             format_number(kModelFamilyChi2PerTerm, 2) + " (the statistics' noise gives about 1)",

@@ -93,6 +93,12 @@ struct FitOptions {
   /// Turns of the runs at the fit and the prior that give the magnification
   /// factor a (0: kMagnificationTurnsPerMeasuredTurn × the most measured turns).
   int magnification_turns = 0;
+  /// When the family is rejected and a recording's turns repeat every p
+  /// turns while the model's do not: Newton shooting for a stable period-p
+  /// motion at every kOrbitScanStep of the box's e (smooth contact, and the
+  /// best point's μ when it is stick-slip), not only at the best point
+  /// (`fourbar fit --orbit-scan`; ~30 s a point and recording).
+  bool orbit_scan = false;
   /// Called after each simulation (progress for `fourbar fit`); may be empty.
   std::function<void()> on_simulation;
 };

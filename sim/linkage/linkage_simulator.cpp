@@ -327,10 +327,9 @@ struct LinkageSimulator::Impl final : LinkageOde {
   std::vector<double> track_state;
 
   /// Peak force, penetration and the end of the first compression–restitution
-  /// cycle of each open contact, from the pairs at the step's end and, while
-  /// an impact's first cycle is open, at mid-step too (each evaluated once for
-  /// every open contact). A sustained contact (phase 2) is smooth on the
-  /// step's scale, so its peaks are read at the step ends only.
+  /// cycle of each open contact, from the pairs at the step's end and, while an
+  /// impact's first cycle is open, at mid-step too (each evaluated once). A
+  /// sustained contact (phase 2) is smooth on the step's scale: step ends only.
   void track(double ta, double tb) {
     bool any = false, impact = false;
     for (int j : model.clearance_joints()) {

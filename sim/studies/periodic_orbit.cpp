@@ -106,7 +106,7 @@ OrbitSearchResult find_periodic_orbits(const TurnMap& map, const OrbitSearchSett
   OrbitSearchResult out;
   std::vector<Eigen::Vector4d> turns;
   const StateMap power = [&](const Eigen::VectorXd& x, Eigen::VectorXd& image) {
-    if (!map.run(Eigen::Vector4d(x), s.period, turns)) return false;
+    if (!(x.norm() <= s.max_state_norm) || !map.run(Eigen::Vector4d(x), s.period, turns)) return false;
     image = turns.back();
     return true;
   };

@@ -74,6 +74,11 @@ struct OrbitSearchSettings {
   /// scaled units (distinct orbits lie about 1 apart; a stable one repeats to ~1e-6).
   double repeat_distance = 1e-3;
   bool stop_at_first_stable = false;  ///< end the search at the first stable orbit (`starts` then counts the starts used)
+  /// Newton's trial states farther than this from 0 (scaled units) are
+  /// outside the map: the model's own turn starts lie within ~15, and a
+  /// near-singular Jacobian's step once sent a trial to rates of 1e8, where
+  /// one turn took minutes to integrate.
+  double max_state_norm = 100;
   ShootingSettings shooting;
 };
 
