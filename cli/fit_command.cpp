@@ -152,7 +152,7 @@ int run_fit(const Invocation& inv) {
       "orbit-scan", po::bool_switch(&o.orbit_scan),
       "when the family is rejected and a recording's turns repeat every few turns while the model's do not: look "
       "for a stable motion of that period in the model at every 0.05 of the box's e, not only at the best point "
-      "(about 30 s a point and recording; docs/fit.md \"A periodic recording\")")(
+      "(10-30 s a point and recording, 21 points a contact law with the default box; docs/fit.md \"A periodic recording\")")(
       "jobs,j", po::value(&jobs), "simulations (and analysis chunks) at once (default: every core; under MPI one per rank)");
   add_quiet_option(opts, quiet);
   po::positional_options_description pos;

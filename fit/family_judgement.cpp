@@ -158,7 +158,7 @@ std::string periodic_recordings_note(const std::vector<RecordingTarget>& targets
            "was found at the true parameters and not at the best point), and the fit's runs compare the "
            "recording with the model's usual motion either way; so the rejection may still come from the motion its "
            "runs took rather than from a wrong model. `fourbar fit SESSION_DIR --orbit-scan` searches every " +
-           format_number(kOrbitScanStep, 2) + " of the box's e (about 30 s a point and recording)" + tail;
+           format_number(kOrbitScanStep, 2) + " of the box's e (10-30 s a point and recording)" + tail;
   else if (model_irregular)
     tail = " A model may have such a motion beside an irregular one and not reach it from the recording's start; then "
            "the rejection may come from the motion its runs took rather than from a wrong model" + tail;

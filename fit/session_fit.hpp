@@ -97,7 +97,7 @@ struct FitOptions {
   /// turns while the model's do not: Newton shooting for a stable period-p
   /// motion at every kOrbitScanStep of the box's e (smooth contact, and the
   /// best point's μ when it is stick-slip), not only at the best point
-  /// (`fourbar fit --orbit-scan`; ~30 s a point and recording).
+  /// (`fourbar fit --orbit-scan`; 10–30 s a point and recording).
   bool orbit_scan = false;
   /// Called after each simulation (progress for `fourbar fit`); may be empty.
   std::function<void()> on_simulation;
