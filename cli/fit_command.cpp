@@ -180,6 +180,9 @@ int run_fit(const Invocation& inv) {
   if (!elastic && (vm.count("elastic-modes") || vm.count("contact-stiffness")))
     throw InputError(std::string("fit: --") + (vm.count("elastic-modes") ? "elastic-modes" : "contact-stiffness") +
                      " belongs to the elastic-link model; add --model elastic or leave it out");
+  if (elastic && o.orbit_scan)
+    throw InputError("fit: --orbit-scan searches the three-mode model's turn map; leave out --model elastic or "
+                     "--orbit-scan");
   if (vm.count("elastic-modes") && !(o.model.elastic_modes >= 1 && o.model.elastic_modes <= 4))
     throw InputError("fit: --elastic-modes " + std::to_string(o.model.elastic_modes) + " must be 1 to 4");
   if (vm.count("contact-stiffness") && !(o.model.contact_stiffness_N_per_m_n > 0))

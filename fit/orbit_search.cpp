@@ -38,14 +38,13 @@ std::string orbit_scan_note(const std::string& recording, int period, const std:
     std::string law = first.contact == ContactLaw::stick_slip ? "stick-slip, mu " + format_number(first.friction_coefficient, 3)
                                                                : std::string("smooth");
     std::string stable, checked;
-    int starts = 0;
     for (; i < scan.size() && scan[i].parameters.contact == first.contact &&
            scan[i].parameters.friction_coefficient == first.friction_coefficient;
          ++i) {
       const std::string e = format_number(scan[i].parameters.restitution, 3);
-      checked += (checked.empty() ? "" : ", ") + e;
+      // starts = 0: the model's own run failed there, nothing was searched.
+      checked += (checked.empty() ? "" : ", ") + e + (scan[i].starts == 0 ? " (model run failed)" : "");
       if (scan[i].stable) stable += (stable.empty() ? "" : ", ") + e;
-      starts = std::max(starts, scan[i].starts);
     }
     text += std::string(text.empty() ? "" : "; ") + "(" + law + ") " +
             (stable.empty() ? "at none of e = " + checked : "at e = " + stable + " of e = " + checked);

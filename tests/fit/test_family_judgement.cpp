@@ -137,10 +137,11 @@ TEST(FamilyJudgement, OrbitScanNoteNamesWhereTheModelHoldsTheMotion) {
   EXPECT_EQ(orbit_scan_note("r.flac", 2, {}), "");
   std::vector<OrbitScanPoint> scan;
   for (double e : {0.7, 0.75, 0.8, 0.85}) scan.push_back({ContactParameters{e, ContactLaw::smooth, 0}, e == 0.8, e == 0.8 ? 49 : 60});
-  for (double e : {0.7, 0.8}) scan.push_back({ContactParameters{e, ContactLaw::stick_slip, 0.25}, false, 60});
+  for (double e : {0.7, 0.8}) scan.push_back({ContactParameters{e, ContactLaw::stick_slip, 0.25}, false, e == 0.8 ? 0 : 60});
   const std::string note = orbit_scan_note("rec_250rpm_0254mm.flac", 2, scan);
   EXPECT_NE(note.find("orbit scan of rec_250rpm_0254mm.flac: the model holds a stable period-2 motion (smooth) at e = 0.8 of "
-                      "e = 0.7, 0.75, 0.8, 0.85; (stick-slip, mu 0.25) at none of e = 0.7, 0.8 (Newton shooting from up to 60"),
+                      "e = 0.7, 0.75, 0.8, 0.85; (stick-slip, mu 0.25) at none of e = 0.7, 0.8 (model run failed) (Newton shooting "
+                      "from up to 60"),
             std::string::npos)
       << note;
   EXPECT_NE(note.find("may still hold one with a small basin"), std::string::npos) << note;

@@ -84,6 +84,10 @@ TEST_F(FitBadInput, ElasticModelOnARigWithoutModalDataNamesTheRigKeysAndFix) {
   const auto k = testing::run_fourbar("fit " + (rigid_->path() / "session").string() + " --elastic-modes 2");
   EXPECT_EQ(k.status, 2) << k.err;
   EXPECT_TRUE(has(k.err, "add --model elastic")) << k.err;
+  // The orbit scan searches the three-mode model's turn map: refused with the elastic model, by name.
+  const auto s = testing::run_fourbar("fit " + (rigid_->path() / "session").string() + " --model elastic --orbit-scan");
+  EXPECT_EQ(s.status, 2) << s.err;
+  EXPECT_TRUE(has(s.err, "--orbit-scan")) << s.err;
 }
 
 // The elastic fit itself, kept small (1 mode per link, 2 + 8 turns per
