@@ -114,13 +114,12 @@ OrbitSearchResult find_periodic_orbits(const TurnMap& map, const OrbitSearchSett
   // are one orbit: within this of each other in the scaled units (distinct
   // orbits lie ~1 apart, docs/fit.md "Newton shooting finds it").
   constexpr double kSameOrbit = 1e-4;
-  auto known = [&](const Eigen::Vector4d& x) -> FoundOrbit* {
+  // The orbit found before whose start is x or one of x's next p − 1 turn starts.
+  auto known = [&](const Eigen::Vector4d& x, const std::vector<Eigen::Vector4d>& cycle) -> FoundOrbit* {
     for (FoundOrbit& o : out.orbits) {
-      std::vector<Eigen::Vector4d> cycle;
       if ((o.start - x).norm() < kSameOrbit) return &o;
-      if (map.run(o.start, s.period - 1, cycle))
-        for (const Eigen::Vector4d& c : cycle)
-          if ((c - x).norm() < kSameOrbit) return &o;
+      for (const Eigen::Vector4d& c : cycle)
+        if ((o.start - c).norm() < kSameOrbit) return &o;
     }
     return nullptr;
   };
@@ -129,7 +128,8 @@ OrbitSearchResult find_periodic_orbits(const TurnMap& map, const OrbitSearchSett
     const std::optional<Eigen::VectorXd> root = shoot_fixed_point(power, Eigen::VectorXd(x0), s.shooting);
     if (!root) continue;
     const Eigen::Vector4d x(*root);
-    // An orbit of a shorter period q | p is also a root; it is not the motion looked for.
+    // x's next p − 1 turn starts. An orbit of a shorter period q | p is also a
+    // root; it is not the motion looked for.
     std::vector<Eigen::Vector4d> cycle;
     bool shorter = false;
     if (s.period > 1 && map.run(x, s.period - 1, cycle))
@@ -140,7 +140,7 @@ OrbitSearchResult find_periodic_orbits(const TurnMap& map, const OrbitSearchSett
       continue;
     }
     ++out.converged;
-    FoundOrbit* o = known(x);
+    FoundOrbit* o = known(x, cycle);
     if (!o) {
       std::vector<Eigen::Vector4d> check;
       FoundOrbit f{x, false, std::numeric_limits<double>::infinity()};
