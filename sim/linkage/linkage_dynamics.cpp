@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "common/error.hpp"
+#include "sim/linkage/block_cholesky.hpp"
 
 namespace fourbar {
 
@@ -41,36 +42,6 @@ BodyFrame ground_frame(int size) {
   return g;
 }
 
-
-/// Solves A·x = b for the symmetric positive definite leading `n` × `n` block
-/// of `a` (Cholesky, written out: Eigen's blocked LLT spent ~6000
-/// instructions on the speed case's 10 × 10 mass matrix, a fifth of a right-hand side);
-/// false when a pivot is not positive (or not a number). `a` is overwritten.
-bool cholesky_solve(ZMat& a, int n, ZVec& x) {
-  for (int j = 0; j < n; ++j) {
-    double d = a(j, j);
-    for (int k = 0; k < j; ++k) d -= a(j, k) * a(j, k);
-    if (!(d > 0)) return false;
-    const double l = std::sqrt(d);
-    a(j, j) = l;
-    for (int i = j + 1; i < n; ++i) {
-      double v = a(i, j);
-      for (int k = 0; k < j; ++k) v -= a(i, k) * a(j, k);
-      a(i, j) = v / l;
-    }
-  }
-  for (int i = 0; i < n; ++i) {  // L·y = b
-    double v = x(i);
-    for (int k = 0; k < i; ++k) v -= a(i, k) * x(k);
-    x(i) = v / a(i, i);
-  }
-  for (int i = n - 1; i >= 0; --i) {  // Lᵀ·x = y
-    double v = x(i);
-    for (int k = i + 1; k < n; ++k) v -= a(k, i) * x(k);
-    x(i) = v / a(i, i);
-  }
-  return true;
-}
 
 /// The coordinates a body frame moves with: the columns where Jp or Jw is
 /// not zero (an exact zero: the Jacobians are built from unit entries and
@@ -392,18 +363,16 @@ void solve_accelerations(const LinkageModel& m, const LinkageCoordinates& c, Lin
     w.z_accel(1) = c.prescribed.alpha4_rad_s2;
     const int f = n - 2;
     const ZVec rhs = w.Q.segment(2, f) - w.M.block(2, 0, f, 2) * w.z_accel.head(2) - w.M.block(2, n, f, 1) * w.z_accel(n);
-    ZMat mff = w.M.block(2, 2, f, f);
     ZVec x = rhs;
-    if (!cholesky_solve(mff, f, x)) throw_indefinite_mass_matrix(c);
+    if (!block_cholesky_solve(w.M, 2, f, x, w.mass_profile)) throw_indefinite_mass_matrix(c);
     w.z_accel.segment(2, f) = x;
     const ZVec residual = w.M * w.z_accel - w.Q;
     w.crank_torque_Nm = residual(n) + residual(0) * c.prescribed.ratio3 + residual(1) * c.prescribed.ratio4;
     return;
   }
   const ZVec rhs = w.Q.head(n) - w.M.block(0, n, n, 1) * c.crank.accel_rad_s2;
-  ZMat mqq = w.M.topLeftCorner(n, n);
   ZVec x = rhs;
-  if (!cholesky_solve(mqq, n, x)) throw_indefinite_mass_matrix(c);
+  if (!block_cholesky_solve(w.M, 0, n, x, w.mass_profile)) throw_indefinite_mass_matrix(c);
   w.z_accel.head(n) = x;
   w.crank_torque_Nm = w.M.row(n).dot(w.z_accel) - w.Q(n);
 }

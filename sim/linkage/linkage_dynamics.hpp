@@ -19,15 +19,11 @@
 
 #include "mechanism/kinematics.hpp"
 #include "sim/flex/elastic_body.hpp"
+#include "sim/linkage/block_cholesky.hpp"
+#include "sim/linkage/full_vectors.hpp"
 #include "sim/linkage/linkage_model.hpp"
 
 namespace fourbar {
-
-inline constexpr int kMaxFull = kMaxFullCoordinates;
-using ZVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxFull, 1>;
-using ZRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxFull>;
-using ZJac = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxFull>;
-using ZMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxFull, kMaxFull>;
 
 /// Positions and rates of the coordinates at one instant.
 struct LinkageCoordinates {
@@ -78,6 +74,7 @@ struct LinkageWorkspace {
   // acceleration stage
   ZMat M;
   ZVec Q, z_accel;
+  BlockProfile mass_profile;  ///< the mass matrix's blocks, kept from one solve to the next
   double crank_torque_Nm = 0;
   /// Elastic links (solve_accelerations): strain energy ½ηᵀKη and the modal
   /// damping's dissipated power η̇ᵀDη̇ (≥ 0), summed over the elastic bodies.

@@ -1,6 +1,5 @@
-// The linkage simulator: state conversion, the ODE with its quadratures and
-// witnesses, the main loop with per-joint contact onset and release, and
-// the books (samples, contacts, per-joint times, energies).
+// The linkage simulator: state conversion, the ODE with its quadratures and witnesses, the main
+// loop with per-joint contact onset and release, and the books (samples, contacts, times, energies).
 
 #include "sim/linkage/linkage_simulator.hpp"
 
@@ -49,6 +48,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
   int per_joint;
   std::size_t size;
   LinkageIntegrator integ;
+  LinkageWorkspace rhs_ws;  ///< rhs()'s, kept: the mass matrix's block profile (block_cholesky.hpp) carries over
   // scales
   double w = 1, delta = 1, energy = 1, force = 1;
   LinkageScales scales;  // and its parts below (linkage_scales.hpp)
@@ -146,7 +146,7 @@ struct LinkageSimulator::Impl final : LinkageOde {
 
   void rhs(double time, const double* y, double* dy) override {
     LinkageCoordinates c;
-    LinkageWorkspace ws;
+    LinkageWorkspace& ws = rhs_ws;
     evaluate(time, y, c, ws);
     const NominalMotion& nm = nominal_at(time);
     dy[0] = y[n] * w;
