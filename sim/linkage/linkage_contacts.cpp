@@ -17,12 +17,16 @@ std::size_t LinkageSimulator::Impl::slot(int joint) const {
   return static_cast<std::size_t>(std::find(js.begin(), js.end(), joint) - js.begin());
 }
 
-void LinkageSimulator::Impl::onset(int j, double time, std::vector<double>& y) {
+PairState LinkageSimulator::Impl::pair_of_state(int j, double time, const double* y) const {
   LinkageCoordinates c;
   LinkageWorkspace ws;
-  coordinates(time, y.data(), c);
+  coordinates(time, y, c);
   forward_kinematics(model, c, ws);
-  const PairState& ps = ws.pair[static_cast<std::size_t>(j)];
+  return ws.pair[static_cast<std::size_t>(j)];
+}
+
+void LinkageSimulator::Impl::onset(int j, double time, std::vector<double>& y) {
+  const PairState ps = pair_of_state(j, time, y.data());
   Episode& e = ep[static_cast<std::size_t>(j)];
   e.active = true;
   e.phase = 0;
@@ -43,11 +47,7 @@ void LinkageSimulator::Impl::onset(int j, double time, std::vector<double>& y) {
 }
 
 void LinkageSimulator::Impl::release(int j, double time, const std::vector<double>& y) {
-  LinkageCoordinates c;
-  LinkageWorkspace ws;
-  coordinates(time, y.data(), c);
-  forward_kinematics(model, c, ws);
-  const PairState& ps = ws.pair[static_cast<std::size_t>(j)];
+  const PairState ps = pair_of_state(j, time, y.data());
   Episode& e = ep[static_cast<std::size_t>(j)];
   LinkageContact& r = e.rec;
   const std::size_t q = quad(slot(j));

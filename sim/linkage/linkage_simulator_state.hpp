@@ -99,6 +99,8 @@ struct LinkageSimulator::Impl final : LinkageOde {
   void check_energy(double time, const std::vector<double>& y);
 
   // ---- linkage_contacts.cpp
+  /// Joint j's pair (geometry and relative velocity) at the state y.
+  PairState pair_of_state(int j, double time, const double* y) const;
   void onset(int j, double time, std::vector<double>& y);
   void release(int j, double time, const std::vector<double>& y);
   /// The clearance pairs (geometry, relative velocity, forces) at `time`.
