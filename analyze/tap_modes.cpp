@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -242,16 +244,21 @@ std::vector<std::size_t> later_strikes(std::span<const double> x, std::size_t fr
   }
   return strikes;
 }
-}  // namespace
+/// The decay a tap leaves, ready to fit.
+struct Decay {
+  Eigen::VectorXd y;      ///< the fitted samples, offset removed
+  std::size_t block = 0;  ///< the envelope's block (5 ms, at least 16 samples)
+  std::string harder;     ///< what a technician does about too little decay
+};
 
-double TapMode::frequency_uncertainty_Hz() const { return std::hypot(frequency_sigma_Hz, frequency_window_Hz); }
-double TapMode::damping_uncertainty() const { return std::hypot(damping_sigma, damping_window); }
-
-TapResult identify_tap_modes(std::span<const double> samples, double fs, const TapOptions& options) {
-  TapResult result;
+/// The decay to fit (tap_modes.hpp step 1): the tap (the largest sample),
+/// the offset and the noise from before it (else from the record's last
+/// tenth), the start after the tap, a clip and any later strike, and the end
+/// at twice the time the envelope takes to reach the noise. Fills the
+/// result's tap, clip, strike, noise and decay entries; InputError when
+/// there is no free decay.
+Decay find_decay(std::span<const double> samples, double fs, TapResult& result) {
   const std::size_t n = samples.size();
-  if (n < 64 || !(fs > 0)) throw InputError("is too short to hold a tap (" + std::to_string(n) + " samples)");
-  // 1. The tap and the decay after it.
   std::size_t tap = 0;
   for (std::size_t i = 1; i < n; ++i)
     if (std::abs(samples[i]) > std::abs(samples[tap])) tap = i;
@@ -329,13 +336,17 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
   const auto m = static_cast<Eigen::Index>(end - start);
   Eigen::VectorXd y(m);
   for (Eigen::Index i = 0; i < m; ++i) y(i) = samples[start + static_cast<std::size_t>(i)] - offset;
-  const double dt = 1 / fs;
   result.decay_start_s = static_cast<double>(start) / fs;
   result.decay_duration_s = static_cast<double>(m) / fs;
+  return {std::move(y), block, harder};
+}
 
-  // 3. Modes one at a time: the strongest peak of what the modes so far leave
-  //    unexplained, then a fit of all of them (so that two close modes that
-  //    make one hump in the spectrum come out as two).
+/// Modes one at a time (tap_modes.hpp steps 2–3): the strongest peak of what
+/// the modes so far leave unexplained, then a fit of all of them (so that two
+/// close modes that make one hump in the spectrum come out as two). Returns
+/// (σ_k, ω_k).
+Eigen::VectorXd fit_modes(const Eigen::VectorXd& y, double fs, const TapOptions& options, const std::string& harder) {
+  const double dt = 1 / fs;
   std::vector<std::pair<double, double>> peaks = spectrum_peaks(y, fs, kPeakOverMedian);
   if (peaks.empty())
     throw InputError(
@@ -365,8 +376,21 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
     fit_decay(grown, y, dt, fs);
     theta = grown;
   }
+  return theta;
+}
+
+/// Steps 4–5 (tap_modes.hpp): the modes' frequencies and damping ratios with their standard
+/// errors (the covariance of all parameters at the optimum) and the change
+/// of a fit from kLateStart_s on; steady tones set aside; the N lowest kept.
+void report_modes(const Eigen::VectorXd& theta, const Decay& d, double fs, const TapOptions& options,
+                  TapResult& result) {
+  const Eigen::VectorXd& y = d.y;
+  const std::string& harder = d.harder;
+  const std::size_t block = d.block;
+  const auto m = y.size();
+  const double dt = 1 / fs;
   const Eigen::Index k = theta.size() / 2;
-  // The same modes fitted from kLateStart_s on (step 4), when enough decay is left.
+  // The same modes fitted from kLateStart_s on, when enough decay is left.
   const auto late = static_cast<Eigen::Index>(std::llround(kLateStart_s * fs));
   Eigen::VectorXd theta_late = theta;
   const bool window_check = m - late >= 4 * static_cast<Eigen::Index>(block);
@@ -376,7 +400,7 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
   r = projected_residual(theta, y, dt, &c);
   result.residual_rms = std::sqrt(r.squaredNorm() / static_cast<double>(m));
 
-  // 4. Covariance of all parameters (a, b, σ, ω per mode) at the optimum.
+  // The covariance of all parameters (a, b, σ, ω per mode) at the optimum.
   Eigen::MatrixXd full(m, 4 * k);
   for (Eigen::Index j = 0; j < k; ++j) {
     const double sigma = theta(2 * j), omega = theta(2 * j + 1), a = c(2 * j), b = c(2 * j + 1);
@@ -436,6 +460,19 @@ TapResult identify_tap_modes(std::span<const double> samples, double fs, const T
       result.higher_modes_Hz.push_back(result.modes[j].frequency_Hz);
     result.modes.resize(static_cast<std::size_t>(options.modes));
   }
+}
+
+}  // namespace
+
+double TapMode::frequency_uncertainty_Hz() const { return std::hypot(frequency_sigma_Hz, frequency_window_Hz); }
+double TapMode::damping_uncertainty() const { return std::hypot(damping_sigma, damping_window); }
+
+TapResult identify_tap_modes(std::span<const double> samples, double fs, const TapOptions& options) {
+  TapResult result;
+  const std::size_t n = samples.size();
+  if (n < 64 || !(fs > 0)) throw InputError("is too short to hold a tap (" + std::to_string(n) + " samples)");
+  const Decay decay = find_decay(samples, fs, result);
+  report_modes(fit_modes(decay.y, fs, options, decay.harder), decay, fs, options, result);
   return result;
 }
 
