@@ -76,31 +76,19 @@ void check_spec(const ElasticLinkSpec& spec) {
     if (*m && ((*m)->rows() != n || (*m)->cols() != n)) bad(spec, "a modal matrix override has the wrong size");
 }
 
-}  // namespace
+/// The mass per length the inertia integrals use, μ(s) = μ0 + μ1·s/L, and a
+/// rotary inertia J that enters I0 alone. Without a measured rigid inertia,
+/// the uniform beam (μ1 = 0, J = m·d²/12). With one, the linear μ that has
+/// the measured mass and centre, and J the rest of the measured inertia: the
+/// modal integrals (S̄, c, M_ff, B) must come from the same distribution as
+/// m, S0 and I0, or the mass matrix is not that of any body and, once the
+/// modes can represent a rigid motion (3 or more sines), it is indefinite.
+struct MassDistribution {
+  double mu0_kg_m = 0, mu1_kg_m = 0, rotary_kg_m2 = 0;
+};
 
-ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
-  check_spec(spec);
-  ElasticLink link;
-  link.name = spec.name;
-  link.length_m = spec.length_m;
-  link.shapes = spec.shapes;
-  const int n = link.modes();
+MassDistribution mass_distribution(const ElasticLinkSpec& spec) {
   const double L = spec.length_m, mu = spec.mass_per_length_kg_m;
-
-  link.shape_moment = Eigen::Matrix2Xd::Zero(2, n);
-  link.axial_coupling = Eigen::VectorXd::Zero(n);
-  link.bending_coupling = Eigen::VectorXd::Zero(n);
-  link.modal_mass = Eigen::MatrixXd::Zero(n, n);
-  link.gyroscopic = Eigen::MatrixXd::Zero(n, n);
-  link.modal_stiffness = Eigen::MatrixXd::Zero(n, n);
-
-  // The mass per length the inertia integrals use, μ(s) = μ0 + μ1·s/L, and a
-  // rotary inertia J that enters I0 alone. Without a measured rigid inertia,
-  // the uniform beam (μ1 = 0, J = m·d²/12). With one, the linear μ that has
-  // the measured mass and centre, and J the rest of the measured inertia: the
-  // modal integrals (S̄, c, M_ff, B) must come from the same distribution as
-  // m, S0 and I0, or the mass matrix is not that of any body and, once the
-  // modes can represent a rigid motion (3 or more sines), it is indefinite.
   double mu0 = mu, mu1 = 0, rotary = mu * L * spec.depth_m * spec.depth_m / 12;
   if (spec.rigid) {
     const RigidInertia& r = *spec.rigid;
@@ -128,7 +116,20 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
                     "inertia_kg_mm2 (about the mass centre) or make the link rigid");
     rotary = std::max(rotary, 0.0);
   }
+  return {mu0, mu1, rotary};
+}
 
+/// The shapes' integrals over the link (S̄, c, b, M_ff, B, K_ff) by Gauss
+/// quadrature, and the rigid part's m, S0, I0 of the same distribution.
+void integrate_shapes(const ElasticLinkSpec& spec, const MassDistribution& d, ElasticLink& link) {
+  const int n = link.modes();
+  const double L = spec.length_m, mu0 = d.mu0_kg_m, mu1 = d.mu1_kg_m;
+  link.shape_moment = Eigen::Matrix2Xd::Zero(2, n);
+  link.axial_coupling = Eigen::VectorXd::Zero(n);
+  link.bending_coupling = Eigen::VectorXd::Zero(n);
+  link.modal_mass = Eigen::MatrixXd::Zero(n, n);
+  link.gyroscopic = Eigen::MatrixXd::Zero(n, n);
+  link.modal_stiffness = Eigen::MatrixXd::Zero(n, n);
   // Highest shape wavenumber decides the panels: 16 nodes per half-wave is
   // far beyond what a product of two sines needs for rounding accuracy.
   int highest = 1;
@@ -161,11 +162,14 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
   // ∫μ ds, ∫μ s ds, ∫μ s² ds + J of the linear μ (for a rigid inertia: the measured m, m·x_c and I0).
   link.mass_kg = L * (mu0 + mu1 / 2);
   link.first_moment_kg_m = {L * L * (mu0 / 2 + mu1 / 3), 0.0};
-  link.inertia_origin_kg_m2 = L * L * L * (mu0 / 3 + mu1 / 4) + rotary;
+  link.inertia_origin_kg_m2 = L * L * L * (mu0 / 3 + mu1 / 4) + d.rotary_kg_m2;
+}
 
-  // The mass matrix at η = 0 (elastic_body.hpp's M with A = I) must be
-  // positive definite: a modal mass override can break it as a mismatched
-  // rigid inertia did.
+/// The mass matrix at η = 0 (elastic_body.hpp's M with A = I) must be
+/// positive definite: a modal mass override can break it as a mismatched
+/// rigid inertia did.
+void check_mass_matrix(const ElasticLinkSpec& spec, const ElasticLink& link) {
+  const int n = link.modes();
   Eigen::MatrixXd m0 = Eigen::MatrixXd::Zero(3 + n, 3 + n);
   m0(0, 0) = m0(1, 1) = link.mass_kg;
   m0(1, 2) = m0(2, 1) = link.first_moment_kg_m.x();
@@ -176,7 +180,12 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
   if (Eigen::LLT<Eigen::MatrixXd>(m0.selfadjointView<Eigen::Upper>()).info() != Eigen::Success)
     bad(spec, "its mass matrix is not positive definite (the modal mass does not fit its mass and inertia); "
               "check the modal mass override against the link's mass, centre and inertia");
+}
 
+/// The modes: the stiffness from measured frequencies when given, the
+/// frequencies and shapes of K·ψ = ω²·M·ψ, and the modal damping.
+void set_modes(const ElasticLinkSpec& spec, ElasticLink& link) {
+  const int n = link.modes();
   if (!spec.measured_frequencies_Hz.empty()) {
     // Mode k is shape k made M_ff-orthogonal to the shapes below it (Gram–
     // Schmidt: Ψ = L⁻ᵀ with M_ff = L·Lᵀ) and rings at f_k: K = L·diag(ω²)·Lᵀ
@@ -202,6 +211,19 @@ ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
   const Eigen::MatrixXd mpsi = link.modal_mass * link.mode_vectors;
   link.modal_damping =
       mpsi * (2 * link.damping_ratios.cwiseProduct(link.frequencies_rad_s)).asDiagonal() * mpsi.transpose();
+}
+
+}  // namespace
+
+ElasticLink build_elastic_link(const ElasticLinkSpec& spec) {
+  check_spec(spec);
+  ElasticLink link;
+  link.name = spec.name;
+  link.length_m = spec.length_m;
+  link.shapes = spec.shapes;
+  integrate_shapes(spec, mass_distribution(spec), link);
+  check_mass_matrix(spec, link);
+  set_modes(spec, link);
   return link;
 }
 
