@@ -72,6 +72,79 @@ ClearanceRun run_clearance(const Scene& scene, bool progress, int warmup_revolut
 
 namespace {
 
+/// Steady state (cs.steady_state): one turn at a time, at most
+/// max_revolutions, until the turn-start state repeats (periodic) or the
+/// windows' means agree (statistical). Fills out's steady-state entries;
+/// returns the turns run.
+template <class TurnTime>
+int search_steady_state(const ClearanceSettings& cs, ClearanceSimulation& sim, const TurnTime& turn_time, bool progress,
+                        ClearanceRun& out) {
+  using Criterion = ClearanceSettings::SteadyCriterion;
+  const bool statistical = cs.steady_criterion != Criterion::periodic;
+  int first = 0;
+  std::vector<TurnQuantities> turns;
+  Progress bar("sim: steady-state search (at most " + std::to_string(cs.max_revolutions) + " turns)",
+               static_cast<std::uint64_t>(cs.max_revolutions), progress);
+  for (int n = 1; n <= cs.max_revolutions; ++n) {
+    sim.advance_to(turn_time(n));
+    bar.update(static_cast<std::uint64_t>(n));
+    first = n;
+    const auto& revs = sim.revolutions();
+    if (static_cast<int>(revs.size()) <= n) continue;
+    if (cs.steady_criterion != Criterion::statistical) {
+      double best = 1e300;
+      for (int k = 1; k <= cs.max_period && n - 2 * k + 1 >= 0; ++k) {
+        // Converged when each of the last k turn starts repeats the one k turns earlier.
+        double worst = 0;
+        for (int j = 0; j < k; ++j) worst = std::max(worst, state_difference(revs[n - j], revs[n - j - k]));
+        best = std::min(best, worst);
+        if (worst <= cs.steady_tolerance) {
+          out.steady_found = SteadyFound::periodic;
+          out.steady_period = k;
+          break;
+        }
+      }
+      out.steady_difference = best;
+      if (out.steady_found != SteadyFound::none) break;
+    }
+    if (statistical) {
+      const RevolutionRecord& r = revs[n - 1];  // the turn just completed
+      const double span = r.end_time_s - r.start_time_s;
+      turns.push_back({{static_cast<double>(r.impacts), r.sum_normal_impulse_Ns, r.following_time_s / span,
+                        r.alpha3_deviation_rms_rad_s2}});
+      out.statistics = compare_windows(turns, cs.statistical_window, cs.statistical_tolerance);
+      if (out.statistics.steady) {
+        out.steady_found = SteadyFound::statistical;
+        break;
+      }
+    }
+  }
+  return first;
+}
+
+/// The series table: crank_deg and the scene's outputs, the link and contact
+/// angles made continuous from row to row.
+SeriesTable clearance_series(const Scene& scene, const std::vector<ClearanceSample>& samples) {
+  SeriesTable series;
+  std::vector<const ClearanceOutputSpec*> specs;
+  for (const auto& name : scene.outputs) specs.push_back(find_clearance_output(name));
+  series.names.push_back("crank_deg");
+  for (const auto& name : scene.outputs) series.names.push_back(name);
+  series.columns.assign(series.names.size(), std::vector<double>(samples.size()));
+  double th3 = 0, th4 = 0, eta = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const ClearanceSample& s = samples[i];
+    const double a3 = std::atan2(s.links.u3.y, s.links.u3.x), a4 = std::atan2(s.links.u4.y, s.links.u4.x);
+    th3 = i ? units::unwrap_rad(a3, th3) : a3;
+    th4 = i ? units::unwrap_rad(a4, th4) : a4;
+    eta = i ? units::unwrap_rad(s.eta_rad, eta) : s.eta_rad;
+    series.columns[0][i] = units::rad_to_deg(s.crank.angle_rad);
+    for (std::size_t c = 0; c < specs.size(); ++c)
+      series.columns[c + 1][i] = clearance_column_value(*specs[c], s, th3, th4, eta);
+  }
+  return series;
+}
+
 /// The run on either clearance simulator.
 ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, ClearanceSimulation& sim, bool progress, int warmup) {
   using Criterion = ClearanceSettings::SteadyCriterion;
@@ -87,53 +160,13 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, ClearanceSim
   if (statistical || cs.write_revolutions) sim.set_revolution_statistics(kStatisticsPerTurn);
   sim.start_nominal(0.0);
 
-  // Steady state: one turn at a time until the turn-start state repeats
-  // (periodic) or the windows' means agree (statistical).
   int first = 0;
   out.statistics.worst_relative_difference = 1e300;
   if (!cs.steady_state && warmup > 0) {  // warm-up turns, not output
     sim.advance_to(turn_time(warmup));
     first = warmup;
   }
-  if (cs.steady_state) {
-    std::vector<TurnQuantities> turns;
-    Progress bar("sim: steady-state search (at most " + std::to_string(cs.max_revolutions) + " turns)",
-                 static_cast<std::uint64_t>(cs.max_revolutions), progress);
-    for (int n = 1; n <= cs.max_revolutions; ++n) {
-      sim.advance_to(turn_time(n));
-      bar.update(static_cast<std::uint64_t>(n));
-      first = n;
-      const auto& revs = sim.revolutions();
-      if (static_cast<int>(revs.size()) <= n) continue;
-      if (cs.steady_criterion != Criterion::statistical) {
-        double best = 1e300;
-        for (int k = 1; k <= cs.max_period && n - 2 * k + 1 >= 0; ++k) {
-          // Converged when each of the last k turn starts repeats the one k turns earlier.
-          double worst = 0;
-          for (int j = 0; j < k; ++j) worst = std::max(worst, state_difference(revs[n - j], revs[n - j - k]));
-          best = std::min(best, worst);
-          if (worst <= cs.steady_tolerance) {
-            out.steady_found = SteadyFound::periodic;
-            out.steady_period = k;
-            break;
-          }
-        }
-        out.steady_difference = best;
-        if (out.steady_found != SteadyFound::none) break;
-      }
-      if (statistical) {
-        const RevolutionRecord& r = revs[n - 1];  // the turn just completed
-        const double span = r.end_time_s - r.start_time_s;
-        turns.push_back({{static_cast<double>(r.impacts), r.sum_normal_impulse_Ns, r.following_time_s / span,
-                          r.alpha3_deviation_rms_rad_s2}});
-        out.statistics = compare_windows(turns, cs.statistical_window, cs.statistical_tolerance);
-        if (out.statistics.steady) {
-          out.steady_found = SteadyFound::statistical;
-          break;
-        }
-      }
-    }
-  }
+  if (cs.steady_state) first = search_steady_state(cs, sim, turn_time, progress, out);
   out.steady_state_reached = out.steady_found != SteadyFound::none;
   out.first_output_revolution = first;
 
@@ -146,24 +179,7 @@ ClearanceRun run_with(const Scene& scene, const CrankMotion& crank, ClearanceSim
   sim.advance_to(turn_time(first + scene.revolutions));
   out.revolutions_simulated = first + scene.revolutions;
 
-  // Series table.
-  std::vector<const ClearanceOutputSpec*> specs;
-  for (const auto& name : scene.outputs) specs.push_back(find_clearance_output(name));
-  out.series.names.push_back("crank_deg");
-  for (const auto& name : scene.outputs) out.series.names.push_back(name);
-  const auto& samples = sim.samples();
-  out.series.columns.assign(out.series.names.size(), std::vector<double>(samples.size()));
-  double th3 = 0, th4 = 0, eta = 0;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const ClearanceSample& s = samples[i];
-    const double a3 = std::atan2(s.links.u3.y, s.links.u3.x), a4 = std::atan2(s.links.u4.y, s.links.u4.x);
-    th3 = i ? units::unwrap_rad(a3, th3) : a3;
-    th4 = i ? units::unwrap_rad(a4, th4) : a4;
-    eta = i ? units::unwrap_rad(s.eta_rad, eta) : s.eta_rad;
-    out.series.columns[0][i] = units::rad_to_deg(s.crank.angle_rad);
-    for (std::size_t c = 0; c < specs.size(); ++c)
-      out.series.columns[c + 1][i] = clearance_column_value(*specs[c], s, th3, th4, eta);
-  }
+  out.series = clearance_series(scene, sim.samples());
   out.impacts = sim.impacts();
   out.revolutions = sim.revolutions();
   if (static_cast<int>(out.revolutions.size()) > out.revolutions_simulated)
