@@ -12,6 +12,42 @@
 
 namespace fourbar {
 
+namespace {
+
+/// The requested outputs: each must be one the model computes, none twice,
+/// crank_deg never (it is always the first column).
+std::vector<std::string> read_outputs(TomlSection& root, Model model) {
+  std::vector<std::string> outputs = root.strings("outputs");
+  if (outputs.empty()) root.fail("outputs", "is empty; name at least one output (see 'fourbar sim --help')");
+  const bool clearance = model != Model::nominal;
+  std::vector<std::string> known;
+  if (clearance)
+    for (const auto& o : clearance_outputs()) known.emplace_back(o.name);
+  else
+    for (const auto& o : nominal_outputs()) known.emplace_back(o.name);
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string& name = outputs[i];
+    if (name == "crank_deg")
+      root.fail("outputs", "names 'crank_deg', which is always the first column; remove it");
+    if (clearance && !find_clearance_output(name) && find_output(name))
+      root.fail("outputs", "names '" + name + "', which the clearance model does not compute; remove it");
+    if (!clearance && find_clearance_output(name) && !find_output(name))
+      root.fail("outputs", "names '" + name + "', which only model = \"clearance\" computes; remove it");
+    if (clearance ? !find_clearance_output(name) : !find_output(name)) {
+      std::string hint;
+      if (auto m = closest_match(name, known)) hint = " (did you mean '" + *m + "'?)";
+      root.fail("outputs", "names unknown output '" + name + "'" + hint +
+                               "; 'fourbar sim --help' lists the outputs");
+    }
+    if (std::find(outputs.begin(), outputs.begin() + static_cast<std::ptrdiff_t>(i), name) !=
+        outputs.begin() + static_cast<std::ptrdiff_t>(i))
+      root.fail("outputs", "names '" + name + "' twice");
+  }
+  return outputs;
+}
+
+}  // namespace
+
 Scene load_scene(const std::filesystem::path& file) {
   const toml::table doc = parse_toml_file(file);
   TomlSection root(doc, file);
@@ -45,32 +81,7 @@ Scene load_scene(const std::filesystem::path& file) {
   scene.revolutions = static_cast<int>(root.integer("revolutions", 1, 1'000'000, 1));
   scene.samples_per_revolution = static_cast<int>(root.integer("samples_per_revolution", 4, 10'000'000, 360));
 
-  // Requested outputs: each must be known, none twice.
-  scene.outputs = root.strings("outputs");
-  if (scene.outputs.empty()) root.fail("outputs", "is empty; name at least one output (see 'fourbar sim --help')");
-  const bool clearance = scene.model != Model::nominal;
-  std::vector<std::string> known;
-  if (clearance)
-    for (const auto& o : clearance_outputs()) known.emplace_back(o.name);
-  else
-    for (const auto& o : nominal_outputs()) known.emplace_back(o.name);
-  for (std::size_t i = 0; i < scene.outputs.size(); ++i) {
-    const std::string& name = scene.outputs[i];
-    if (name == "crank_deg")
-      root.fail("outputs", "names 'crank_deg', which is always the first column; remove it");
-    if (clearance && !find_clearance_output(name) && find_output(name))
-      root.fail("outputs", "names '" + name + "', which the clearance model does not compute; remove it");
-    if (!clearance && find_clearance_output(name) && !find_output(name))
-      root.fail("outputs", "names '" + name + "', which only model = \"clearance\" computes; remove it");
-    if (clearance ? !find_clearance_output(name) : !find_output(name)) {
-      std::string hint;
-      if (auto m = closest_match(name, known)) hint = " (did you mean '" + *m + "'?)";
-      root.fail("outputs", "names unknown output '" + name + "'" + hint +
-                               "; 'fourbar sim --help' lists the outputs");
-    }
-    if (std::find(scene.outputs.begin(), scene.outputs.begin() + i, name) != scene.outputs.begin() + i)
-      root.fail("outputs", "names '" + name + "' twice");
-  }
+  scene.outputs = read_outputs(root, scene.model);
 
   if (auto sec = root.optional_section("clearance")) {
     if (scene.model != Model::clearance)
