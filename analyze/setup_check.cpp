@@ -18,6 +18,7 @@
 #include "analyze/pipeline.hpp"
 #include "analyze/sensor_corner.hpp"
 #include "analyze/setup_finding.hpp"
+#include "analyze/setup_fit.hpp"
 #include "common/format.hpp"
 #include "common/units.hpp"
 #include "mechanism/kinematics.hpp"
@@ -26,42 +27,14 @@ namespace fourbar {
 
 namespace {
 
-/// One analysed accelerometer channel: the reading recovered on the grid,
-/// its templates for each link it may belong to, and its correlations.
-struct Channel {
-  const ChannelSpec* spec = nullptr;
-  SensedLink link = SensedLink::coupler;  // as the manifest says
-  SensorAxis axis = SensorAxis::tangential;
-  double r_m = 0, h_m = 0;
-  std::vector<double> m;                  // recovered reading (calibrated, on the grid)
-  std::vector<double> f0;                 // the part of it the manifest's model added back (not filtered)
-  std::vector<std::complex<double>> m_hat;  // G·m over the fitted orders (FFT bins 0 … N/2)
-  double energy = 0;                      // ‖G·m‖² over the fitted orders
-  struct Fit {
-    std::array<std::vector<double>, 2> t;       // f0, f1 on φj = θ0 + 2πj/N
-    double g00 = 0, g01 = 0, g11 = 0;           // Gram matrix
-    std::array<std::array<std::vector<double>, 2>, 2> c;  // [τ index][template][s]
-  };
-  std::array<std::optional<Fit>, 2> fit;  // by link (coupler, rocker)
-};
+using namespace setup_fit;
 
 /// The nominal templates' energy left above the fitted band: the band ends
 /// at the order that holds all but this share of each template's energy.
 constexpr double kTemplateTail = 1e-4;
 
-/// Unexplained share of a reading's in-band energy that the nominal model
-/// leaves even with the right set-up (see confidence()).
-constexpr double kMisfitFloor = 0.02;
-
-/// Share of a reading's energy the crank-pin and gravity term must carry
-/// (beyond what α explains) for its position to be estimated: 5 × the floor.
-constexpr double kPositionShare = 5 * kMisfitFloor;
-
 /// Gain below which the filter is taken to have removed an order.
 constexpr double kMinOrderGain = 0.5;
-
-constexpr std::size_t link_index(SensedLink l) { return l == SensedLink::coupler ? 0 : 1; }
-constexpr std::size_t tau_index(double tau) { return tau > 0 ? 0 : 1; }
 
 void remove_mean(std::vector<double>& x) {
   double s = 0;
@@ -92,44 +65,6 @@ std::array<std::vector<double>, 2> templates(const Rig& rig, SensedLink link, Se
   return t;
 }
 
-/// Share of ‖m‖² the two-term fit explains, and its coefficients.
-struct TwoTerm {
-  double r2 = 0, a = 0, b = 0;
-};
-TwoTerm two_term(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s) {
-  const double c0 = f.c[ti][0][s], c1 = f.c[ti][1][s];
-  const double det = f.g00 * f.g11 - f.g01 * f.g01;
-  TwoTerm out;
-  if (!(det > 1e-12 * f.g00 * f.g11) || ch.energy <= 0) {
-    out.a = f.g00 > 0 ? c0 / f.g00 : 0.0;
-    out.r2 = ch.energy > 0 && f.g00 > 0 ? c0 * c0 / (f.g00 * ch.energy) : 0.0;
-    return out;
-  }
-  out.a = (f.g11 * c0 - f.g01 * c1) / det;
-  out.b = (f.g00 * c1 - f.g01 * c0) / det;
-  out.r2 = (out.a * c0 + out.b * c1) / ch.energy;
-  return out;
-}
-
-/// The one-term fit k·(f0 + r·f1) with r fixed: the share explained with a
-/// given k (one_term_r2), and k fitted (one_term).
-struct OneTerm {
-  double k = 0, r2 = 0;
-};
-double one_term_r2(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s, double r, double k) {
-  const double c = f.c[ti][0][s] + r * f.c[ti][1][s];
-  const double tt = f.g00 + 2 * r * f.g01 + r * r * f.g11;
-  return ch.energy > 0 ? (2 * k * c - k * k * tt) / ch.energy : 0.0;
-}
-OneTerm one_term(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s, double r) {
-  const double c = f.c[ti][0][s] + r * f.c[ti][1][s];
-  const double tt = f.g00 + 2 * r * f.g01 + r * r * f.g11;
-  OneTerm o;
-  o.k = tt > 0 ? c / tt : 0.0;
-  o.r2 = one_term_r2(ch, f, ti, s, r, o.k);
-  return o;
-}
-
 /// The data's high-pass corner of a channel on its own link, at the joint
 /// best pulse angle and direction, the manifest's position.
 CornerFit corner_fit(const Channel& ch, const Channel::Fit& f, std::size_t ti, std::size_t s,
@@ -147,16 +82,6 @@ CornerFit corner_fit(const Channel& ch, const Channel::Fit& f, std::size_t ti, s
                               ch.spec->ac_coupled ? ch.spec->highpass_hz : 0.0, fs);
 }
 
-/// The share of the misfit with the manifest's value that the data's value
-/// removes. Both shares carry kMisfitFloor: the nominal templates are not the
-/// rig's exact motion (crank-speed wander, the filter's edges, a sensor's
-/// small misalignment), so a gain below that floor is no evidence.
-double confidence(double unexplained_data, double unexplained_manifest) {
-  const double u_data = std::max(0.0, unexplained_data) + kMisfitFloor;
-  const double u_manifest = std::max(0.0, unexplained_manifest) + kMisfitFloor;
-  return std::clamp(1.0 - u_data / u_manifest, 0.0, 1.0);
-}
-
 /// An offset within this (or a tenth of the width) of the pulse's width is its other edge.
 constexpr double kWidthMatchDeg = 1.0;
 
@@ -167,26 +92,9 @@ double wrap_deg(double d) {
   return d;
 }
 
-}  // namespace
-
-SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, const SetupCheckLimits& lim) {
-  SetupCheck out;
-  if (a.options.conversion != ConversionMethod::full) {
-    out.not_checked = "the thesis conversion leaves out terms the check needs (run without --thesis)";
-    return out;
-  }
+/// The crank state on the grid: θ2 as the manifest says, ω2 averaged, α2 = ω2·dω2/dθ2.
+std::vector<CrankState> grid_crank(const RecordingAnalysis& a, double dir_m) {
   const std::size_t N = a.grid_points_per_rev;
-  if (!a.rig || N < 8 || a.crank_deg.size() != N || a.crank_speed_rad_s.mean.size() != N) {
-    out.not_checked = "no averaged revolutions";
-    return out;
-  }
-  const Rig& rig = *a.rig;
-  const double dir_m = manifest.crank_direction;
-  const double theta0 = units::deg_to_rad(a.crank_deg[0]);
-  double w_mean = 0;
-  for (double w : a.crank_speed_rad_s.mean) w_mean += std::abs(w) / static_cast<double>(N);
-
-  // The crank state on the grid: θ2 as the manifest says, ω2 averaged, α2 = ω2·dω2/dθ2.
   std::vector<CrankState> crank(N);
   const double dtheta = dir_m * units::kTwoPi / static_cast<double>(N);
   for (std::size_t k = 0; k < N; ++k) {
@@ -194,8 +102,15 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
     const double dw = w[(k + 1) % N] - w[(k + N - 1) % N];
     crank[k] = {units::deg_to_rad(a.crank_deg[k]), w[k], w[k] * dw / (2 * dtheta)};
   }
+  return crank;
+}
 
-  // The channels: the reading recovered by running the conversion forward.
+/// The channels: the reading recovered by running the conversion forward on
+/// the analysed averages (a normal channel's consistency goes to `out`).
+std::vector<Channel> recover_channels(const RecordingAnalysis& a, const Manifest& manifest,
+                                      const std::vector<CrankState>& crank, SetupCheck& out) {
+  const Rig& rig = *a.rig;
+  const std::size_t N = a.grid_points_per_rev;
   const AnalysisChannels chosen = analysis_channels(manifest);
   auto spec_of = [&](const std::string& name) -> const ChannelSpec* {
     for (const ChannelSpec& c : manifest.channels)
@@ -234,13 +149,26 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
       if (!tangential) out.normal_consistency.emplace_back((*ac)->mount.channel, lr->normal->rel_rms_difference);
     }
   }
-  if (channels.empty()) {
-    out.not_checked = "no analysed accelerometer channel";
-    return out;
-  }
+  return channels;
+}
 
-  // Templates, the band they occupy, and their correlations with each reading.
-  RealFft fft(N);
+/// The orders the fit uses (1 … K) and the analysis filters' gains on them:
+/// the α (or ω²) was filtered, the terms added back were not, so per order
+/// the recovered reading is G·m + (1 − G)·f0_manifest. Fitted: G·m against
+/// G·template.
+struct FitBand {
+  std::size_t K = 3;
+  std::vector<double> alpha_gain, normal_gain;
+  const std::vector<double>& gain(const Channel& ch) const {
+    return ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
+  }
+};
+
+/// The templates of each link a channel may belong to; returns the band they
+/// occupy (the order holding all but kTemplateTail of each one's energy,
+/// below N/2).
+std::size_t add_templates(const Rig& rig, std::vector<Channel>& channels, double w_mean, double theta0, std::size_t N,
+                          RealFft& fft) {
   std::size_t K = 3;
   for (Channel& ch : channels) {
     for (SensedLink l : {SensedLink::coupler, SensedLink::rocker}) {
@@ -251,25 +179,15 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
       ch.fit[link_index(l)] = std::move(f);
     }
   }
-  K = std::min(K, N / 2 - 1);
-  const double fs = a.acquisition.recording.sample_rate_hz, crank_hz = w_mean / units::kTwoPi;
-  // What the analysis filter did to each order: the α (or ω²) was filtered,
-  // the terms added back above were not, so per order the recovered reading
-  // is G·m + (1 − G)·f0_manifest. Fitted: G·m against G·template.
-  const std::vector<double> alpha_gain =
-      order_gains(a.filter, a.spectra.filter_gain, a.spectra.segment_length, fs, crank_hz, K);
-  const std::vector<double> normal_gain = order_gains(a.normal_filter, {}, 0, fs, crank_hz, K);
-  std::erase_if(channels, [&](const Channel& ch) {
-    const auto& g = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
-    return std::count_if(g.begin(), g.end(), [](double v) { return v >= kMinOrderGain; }) < 2;
-  });
-  if (channels.empty()) {
-    out.not_checked = "the analysis filter passes fewer than 2 of the crank orders 1-" + std::to_string(K) +
-                      " that hold the nominal response";
-    return out;
-  }
+  return std::min(K, N / 2 - 1);
+}
+
+/// Each reading's in-band spectrum, energy and correlations with its
+/// templates at every pulse angle and both directions.
+void correlate(std::vector<Channel>& channels, const FitBand& band, std::size_t N, RealFft& fft) {
+  const std::size_t K = band.K;
   for (Channel& ch : channels) {
-    const auto& gain = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
+    const auto& gain = band.gain(ch);
     std::vector<double> ones(K + 1, 1.0), rest(K + 1, 0.0);
     ones[0] = 0;
     for (std::size_t q = 1; q <= K; ++q) rest[q] = 1 - gain[q];
@@ -289,22 +207,19 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
       }
     }
   }
-  out.band_orders = K;
-  const bool can_swap = std::count_if(channels.begin(), channels.end(),
-                                      [](const Channel& ch) { return ch.axis == SensorAxis::tangential; }) == 2;
-  auto fitted_link = [&](const Channel& ch, bool swapped) {
-    if (!swapped || ch.axis != SensorAxis::tangential) return ch.link;
-    return ch.link == SensedLink::coupler ? SensedLink::rocker : SensedLink::coupler;
-  };
+}
 
-  // Joint search: assignment × direction × pulse angle, score Σ share explained.
-  const double n_ch = static_cast<double>(channels.size());
-  struct Best {
-    double score = -std::numeric_limits<double>::infinity();
-    bool swapped = false;
-    std::size_t ti = 0, s = 0;
-  };
-  Best best, best_dir_m, best_offset_m, best_straight, best_crank_m;
+/// The link a channel is fitted as: its own, or the other one when the
+/// tangential channels are taken as swapped.
+SensedLink fitted_link(const Channel& ch, bool swapped) {
+  if (!swapped || ch.axis != SensorAxis::tangential) return ch.link;
+  return ch.link == SensedLink::coupler ? SensedLink::rocker : SensedLink::coupler;
+}
+
+JointSearch joint_search(const std::vector<Channel>& channels, bool can_swap, double dir_m, std::size_t N) {
+  JointSearch js;
+  Best &best = js.best, &best_dir_m = js.best_dir_m, &best_offset_m = js.best_offset_m,
+       &best_straight = js.best_straight, &best_crank_m = js.best_crank_m;
   for (bool swapped : {false, true}) {
     if (swapped && !can_swap) continue;
     for (std::size_t ti = 0; ti < 2; ++ti)
@@ -319,32 +234,22 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
         if (!swapped && score > best_straight.score) best_straight = here;
       }
   }
-  const double u_best = 1 - best.score / n_ch;
-  // Each sensor's high-pass corner at the manifest's crank. A wrong corner
-  // shifts the first orders' phase, which one channel's best pulse angle can
-  // partly absorb: when the corners explain the readings at the manifest's
-  // crank as well as the data's crank does, the crank is not judged.
-  std::vector<CornerFit> corners;
-  double corner_score = 0;
-  for (const Channel& ch : channels) {
-    const Channel::Fit& fm = *ch.fit[link_index(ch.link)];
-    const auto& gain = ch.axis == SensorAxis::tangential ? alpha_gain : normal_gain;
-    corners.push_back(corner_fit(ch, fm, tau_index(dir_m), 0, gain, crank_hz, fs, fft));
-    corner_score += std::max(two_term(ch, fm, tau_index(dir_m), 0).r2, 1 - corners.back().unexplained);
-  }
-  const bool crank_judged = corner_score < best.score;
-  const double tau = best.ti == 0 ? 1.0 : -1.0;
-  out.checked = true;
-  out.crank_direction = tau;
-  out.crank_offset_deg = wrap_deg(a.crank_deg[0] + 360.0 * static_cast<double>(best.s) / static_cast<double>(N));
-  out.swapped = best.swapped;
-  out.fit = best.score / n_ch;
+  return js;
+}
 
-  // The crank: direction and pulse angle. Each alone is judged against the
-  // best fit that keeps the manifest's value of it. With few channels the
-  // response can look nearly the same mirrored (other direction) at another
-  // pulse angle; then neither alone is sure, but the manifest's pair still
-  // fits far worse than the data's: one finding names both keys.
+/// The crank's findings and the channels' swap, from the joint search (out's
+/// crank entries already set). Direction and pulse angle are each judged
+/// against the best fit that keeps the manifest's value of it. With few
+/// channels the response can look nearly the same mirrored (other direction)
+/// at another pulse angle; then neither alone is sure, but the manifest's
+/// pair still fits far worse than the data's: one finding names both keys.
+void judge_crank(const RecordingAnalysis& a, const Manifest& manifest, const SetupCheckLimits& lim,
+                 const std::vector<Channel>& channels, const JointSearch& js, bool crank_judged, SetupCheck& out) {
+  const std::size_t N = a.grid_points_per_rev;
+  const double dir_m = manifest.crank_direction, n_ch = static_cast<double>(channels.size());
+  const Best &best = js.best, &best_dir_m = js.best_dir_m, &best_offset_m = js.best_offset_m,
+             &best_straight = js.best_straight, &best_crank_m = js.best_crank_m;
+  const double u_best = 1 - best.score / n_ch, tau = out.crank_direction;
   const ChannelSpec& pulse = manifest.pulse_channel();
   const std::string offset_key = channel_key(pulse.name, "crank_offset_deg");
   auto direction_name = [](double d) { return std::string(d > 0 ? "\"ccw\"" : "\"cw\""); };
@@ -395,7 +300,15 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
                   "'" + coupler_t + "' reads the rocker, '" + rocker_t + "' the coupler", conf);
   }
 
-  // Per channel at the joint best: sign and scale (manifest position), position.
+}
+
+/// Per channel at the joint best: sign and scale (manifest position),
+/// position, the high-pass corner; then the scales across channels.
+void judge_channels(const RecordingAnalysis& a, const Manifest& manifest, const SetupCheckLimits& lim,
+                    const std::vector<Channel>& channels, const std::vector<CornerFit>& corners, const Best& best,
+                    double crank_hz, SetupCheck& out) {
+  const double dir_m = manifest.crank_direction, n_ch = static_cast<double>(channels.size());
+  const double fs = a.acquisition.recording.sample_rate_hz;
   double fit_manifest = 0;
   std::vector<double> judged_scales;  // channels on their own link, within the scale tolerance
   std::vector<std::pair<const ChannelSpec*, double>> channel_scales;  // the same, by channel
@@ -459,6 +372,73 @@ SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, con
   if (!best.swapped)
     add_rig_file_finding(out, all_scales, lim.channel_scale_tolerance, manifest.rig_file.string(),
                          manifest.rig ? manifest.rig->name : std::string());
+}
+
+}  // namespace
+
+SetupCheck check_setup(const RecordingAnalysis& a, const Manifest& manifest, const SetupCheckLimits& lim) {
+  SetupCheck out;
+  if (a.options.conversion != ConversionMethod::full) {
+    out.not_checked = "the thesis conversion leaves out terms the check needs (run without --thesis)";
+    return out;
+  }
+  const std::size_t N = a.grid_points_per_rev;
+  if (!a.rig || N < 8 || a.crank_deg.size() != N || a.crank_speed_rad_s.mean.size() != N) {
+    out.not_checked = "no averaged revolutions";
+    return out;
+  }
+  const double dir_m = manifest.crank_direction;
+  const double theta0 = units::deg_to_rad(a.crank_deg[0]);
+  double w_mean = 0;
+  for (double w : a.crank_speed_rad_s.mean) w_mean += std::abs(w) / static_cast<double>(N);
+  std::vector<Channel> channels = recover_channels(a, manifest, grid_crank(a, dir_m), out);
+  if (channels.empty()) {
+    out.not_checked = "no analysed accelerometer channel";
+    return out;
+  }
+
+  RealFft fft(N);
+  FitBand band;
+  band.K = add_templates(*a.rig, channels, w_mean, theta0, N, fft);
+  const std::size_t K = band.K;
+  const double fs = a.acquisition.recording.sample_rate_hz, crank_hz = w_mean / units::kTwoPi;
+  band.alpha_gain = order_gains(a.filter, a.spectra.filter_gain, a.spectra.segment_length, fs, crank_hz, K);
+  band.normal_gain = order_gains(a.normal_filter, {}, 0, fs, crank_hz, K);
+  std::erase_if(channels, [&](const Channel& ch) {
+    const auto& g = band.gain(ch);
+    return std::count_if(g.begin(), g.end(), [](double v) { return v >= kMinOrderGain; }) < 2;
+  });
+  if (channels.empty()) {
+    out.not_checked = "the analysis filter passes fewer than 2 of the crank orders 1-" + std::to_string(K) +
+                      " that hold the nominal response";
+    return out;
+  }
+  correlate(channels, band, N, fft);
+  out.band_orders = K;
+  const bool can_swap = std::count_if(channels.begin(), channels.end(),
+                                      [](const Channel& ch) { return ch.axis == SensorAxis::tangential; }) == 2;
+  const JointSearch js = joint_search(channels, can_swap, dir_m, N);
+  const Best& best = js.best;
+  const double n_ch = static_cast<double>(channels.size());
+  // Each sensor's high-pass corner at the manifest's crank. A wrong corner
+  // shifts the first orders' phase, which one channel's best pulse angle can
+  // partly absorb: when the corners explain the readings at the manifest's
+  // crank as well as the data's crank does, the crank is not judged.
+  std::vector<CornerFit> corners;
+  double corner_score = 0;
+  for (const Channel& ch : channels) {
+    const Channel::Fit& fm = *ch.fit[link_index(ch.link)];
+    corners.push_back(corner_fit(ch, fm, tau_index(dir_m), 0, band.gain(ch), crank_hz, fs, fft));
+    corner_score += std::max(two_term(ch, fm, tau_index(dir_m), 0).r2, 1 - corners.back().unexplained);
+  }
+  const bool crank_judged = corner_score < best.score;
+  out.checked = true;
+  out.crank_direction = best.ti == 0 ? 1.0 : -1.0;
+  out.crank_offset_deg = wrap_deg(a.crank_deg[0] + 360.0 * static_cast<double>(best.s) / static_cast<double>(N));
+  out.swapped = best.swapped;
+  out.fit = best.score / n_ch;
+  judge_crank(a, manifest, lim, channels, js, crank_judged, out);
+  judge_channels(a, manifest, lim, channels, corners, best, crank_hz, out);
   return out;
 }
 
