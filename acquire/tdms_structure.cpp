@@ -188,6 +188,170 @@ struct PreviousIndex {
   std::uint64_t count = 0, bytes = 0;
 };
 
+/// A segment's lead-in (28 bytes at `pos`): tag, table of contents, version,
+/// the offsets of the next segment and of the raw data.
+struct LeadIn {
+  std::uint32_t toc = 0, version = 0;
+  std::uint64_t next = 0, raw = 0;
+};
+
+LeadIn read_lead_in(std::ifstream& in, std::uint64_t pos, const std::string& f, const std::string& seg) {
+  std::vector<unsigned char> lead(kLeadInBytes);
+  in.seekg(static_cast<std::streamoff>(pos));
+  if (!in.read(reinterpret_cast<char*>(lead.data()), kLeadInBytes)) throw InputError(seg + ": cannot read the lead-in");
+  if (std::memcmp(lead.data(), "TDSm", 4) != 0) {
+    if (std::memcmp(lead.data(), "TDSh", 4) == 0)
+      throw InputError(f + ": a TDMS index file (.tdms_index), not the data; give the .tdms file beside it");
+    throw InputError(seg + ": no segment tag 'TDSm' where the previous segment's offset points (damaged file); "
+                     "copy the file again or re-save it from the NI software");
+  }
+  const std::uint32_t toc = lead[4] | lead[5] << 8 | lead[6] << 16 | static_cast<std::uint32_t>(lead[7]) << 24;
+  const bool big = (toc & kTocBigEndian) != 0;
+  Cursor lc(lead, big, pos, seg);
+  lc.u64();  // tag and ToC, read above
+  const std::uint32_t version = lc.u32();
+  const std::uint64_t next = lc.u64(), raw = lc.u64();
+  if (version != 4712 && version != 4713)
+    throw InputError(seg + ": TDMS version " + std::to_string(version) + " (fourbar reads 4712 and 4713, TDMS 1.0 "
+                     "and 2.0); re-save the file as TDMS 2.0");
+  return {toc, version, next, raw};
+}
+
+/// What the segments so far say about the objects a raw data chunk holds.
+struct SegmentState {
+  std::vector<ActiveEntry> active;      ///< the objects in the current raw data, in order
+  std::vector<PreviousIndex> previous;  ///< per object: its last raw data index
+};
+
+/// A segment's metadata: its objects (new ones added to s), their raw data
+/// indexes (the active list) and properties. `seg` names the segment in errors.
+void read_metadata(Cursor& c, std::uint64_t file_size, const std::string& seg, TdmsStructure& s, SegmentState& st) {
+  std::vector<ActiveEntry>& active = st.active;
+  std::vector<PreviousIndex>& previous = st.previous;
+  const std::uint32_t n = c.u32();
+  for (std::uint32_t k = 0; k < n; ++k) {
+    TdmsObject probe;
+    probe.path = c.string();
+    auto it = std::find_if(s.objects.begin(), s.objects.end(), [&](const TdmsObject& o) { return o.path == probe.path; });
+    const auto oi = static_cast<std::size_t>(it - s.objects.begin());
+    if (it == s.objects.end()) {
+      split_path(probe);
+      s.objects.push_back(std::move(probe));
+      previous.emplace_back();
+    }
+    TdmsObject& o = s.objects[oi];
+    const std::string obj = seg + ": object " + o.path;
+    ActiveEntry e;
+    e.object = oi;
+    const std::uint32_t index = c.u32();
+    if (index == kDaqmxFormatChanging || index == kDaqmxDigitalLine)
+      throw InputError(obj + " holds DAQmx raw data (raw data index " + hex(index) + "), which fourbar does not "
+                       "read: its scaling to physical units needs NI's DAQmx scalers; export the channels from "
+                       "LabVIEW, DIAdem or FlexLogger as scaled data (TDMS without DAQmx raw data, or CSV)");
+    if (index == kSameAsPrevious) {
+      if (!previous[oi].known)
+        throw InputError(obj + ": its raw data index is 'same as previous' but no earlier segment gave one (damaged file)");
+      e.has_data = true, e.type = previous[oi].type, e.count = previous[oi].count, e.bytes = previous[oi].bytes;
+    } else if (index != kNoData) {
+      const std::uint64_t index_start = c.offset();
+      e.type = c.u32();
+      const std::uint32_t dims = c.u32();
+      e.count = c.u64();
+      if (dims != 1)
+        throw InputError(obj + ": raw data of dimension " + std::to_string(dims) + " (TDMS allows only 1; damaged file)");
+      if (e.type == tdms_type::kString) {
+        e.bytes = c.u64();
+        if (e.count > e.bytes / 4)  // an end offset of 4 bytes per string, at least
+          throw InputError(obj + ": " + std::to_string(e.count) + " strings in " + std::to_string(e.bytes) +
+                           " bytes (damaged file)");
+      } else {
+        const std::uint32_t size = tdms_type_size(e.type);
+        if (size == 0)
+          throw InputError(obj + ": raw data of " + tdms_type_name(e.type) + ", which fourbar does not read "
+                           "(integers, float, double, bool, string, timestamp); export this channel as double");
+        if (e.count > file_size / size)
+          throw InputError(obj + ": " + std::to_string(e.count) + " values promised, more than the file holds (damaged file)");
+        e.bytes = e.count * size;
+      }
+      if (c.offset() - index_start + 4 != index)
+        throw InputError(obj + ": raw data index of " + std::to_string(index) + " bytes, but its fields take " +
+                         std::to_string(c.offset() - index_start + 4) + " (damaged file)");
+      if (o.type != 0 && o.type != e.type)
+        throw InputError(obj + ": its data type changes from " + tdms_type_name(o.type) + " to " +
+                         tdms_type_name(e.type) + " (damaged file)");
+      e.has_data = true;
+      previous[oi] = {true, e.type, e.count, e.bytes};
+    }
+    if (e.has_data) o.type = e.type;
+    auto slot = std::find_if(active.begin(), active.end(), [&](const ActiveEntry& a) { return a.object == oi; });
+    if (slot == active.end()) active.push_back(e);
+    else *slot = e;
+    const std::uint32_t props = c.u32();
+    for (std::uint32_t p = 0; p < props; ++p) {
+      TdmsProperty prop = read_property(c, obj);
+      auto same = std::find_if(o.properties.begin(), o.properties.end(), [&](const TdmsProperty& q) { return q.name == prop.name; });
+      if (same == o.properties.end()) o.properties.push_back(std::move(prop));
+      else *same = std::move(prop);
+    }
+  }
+}
+
+/// A segment's raw data [data_start, end): each active object's pieces (where
+/// its values sit, chunk by chunk). `cut`: the segment was cut short, so an
+/// incomplete last chunk is set aside instead of refused.
+void add_raw_data(std::uint64_t data_start, std::uint64_t end, bool interleaved, bool big, bool cut,
+                  std::uint64_t file_size, const std::string& seg, const std::vector<ActiveEntry>& active,
+                  TdmsStructure& s) {
+  const std::uint64_t data_size = end - data_start;
+  std::uint64_t chunk = 0, count = 0;
+  for (const auto& e : active) {
+    if (!e.has_data || e.count == 0) continue;
+    if (interleaved && e.type == tdms_type::kString)
+      throw InputError(seg + ": object " + s.objects[e.object].path + " holds strings in interleaved raw data, "
+                       "which TDMS does not allow (damaged file)");
+    if (interleaved && count != 0 && e.count != count)
+      throw InputError(seg + ": interleaved channels of different lengths (" + std::to_string(count) + " and " +
+                       std::to_string(e.count) + " values; damaged file)");
+    count = e.count;
+    if (e.bytes > file_size || chunk + e.bytes > file_size)
+      throw InputError(seg + ": its raw data index promises more bytes than the file holds (damaged file)");
+    chunk += e.bytes;
+  }
+  if (chunk > 0) {
+    std::uint64_t chunks = data_size / chunk;
+    if (data_size % chunk != 0) {
+      if (!cut)
+        throw InputError(seg + ": " + std::to_string(data_size) + " bytes of raw data are not a whole number of "
+                         "chunks of " + std::to_string(chunk) + " bytes (damaged file)");
+      s.notes.push_back("segment " + std::to_string(s.segments) + ": " + std::to_string(data_size % chunk) +
+                        " bytes of a last, incomplete chunk set aside");
+    }
+    s.interleaved = s.interleaved || interleaved;
+    std::uint64_t offset = 0;
+    std::uint32_t stride = 0;
+    if (interleaved)
+      for (const auto& e : active)
+        if (e.has_data && e.count > 0) stride += tdms_type_size(e.type);
+    for (const auto& e : active) {
+      if (!e.has_data || e.count == 0 || chunks == 0) continue;
+      TdmsObject& o = s.objects[e.object];
+      const std::uint32_t size = tdms_type_size(e.type);
+      o.values += e.count * chunks;
+      if (e.type != tdms_type::kString) {
+        TdmsPiece piece;
+        piece.offset = data_start + offset;
+        piece.values_per_chunk = e.count;
+        piece.chunks = chunks;
+        piece.chunk_bytes = chunk;
+        piece.stride = interleaved ? stride : size;
+        piece.big_endian = big;
+        o.pieces.push_back(piece);
+      }
+      offset += interleaved ? size : e.bytes;
+    }
+  }
+}
+
 }  // namespace
 
 std::uint32_t tdms_type_size(std::uint32_t type) {
@@ -244,8 +408,7 @@ TdmsStructure read_tdms_structure(const std::filesystem::path& file) {
   in.seekg(0);
 
   TdmsStructure s;
-  std::vector<ActiveEntry> active;
-  std::vector<PreviousIndex> previous;  // per object
+  SegmentState st;
   std::uint64_t pos = 0;
   while (pos < file_size) {
     const std::string seg = f + ": TDMS segment " + std::to_string(s.segments + 1) + " at byte " + std::to_string(pos);
@@ -254,24 +417,10 @@ TdmsStructure read_tdms_structure(const std::filesystem::path& file) {
       s.notes.push_back(std::to_string(file_size - pos) + " bytes after the last segment set aside (a lead-in cut short)");
       break;
     }
-    std::vector<unsigned char> lead(kLeadInBytes);
-    in.seekg(static_cast<std::streamoff>(pos));
-    if (!in.read(reinterpret_cast<char*>(lead.data()), kLeadInBytes)) throw InputError(seg + ": cannot read the lead-in");
-    if (std::memcmp(lead.data(), "TDSm", 4) != 0) {
-      if (std::memcmp(lead.data(), "TDSh", 4) == 0)
-        throw InputError(f + ": a TDMS index file (.tdms_index), not the data; give the .tdms file beside it");
-      throw InputError(seg + ": no segment tag 'TDSm' where the previous segment's offset points (damaged file); "
-                       "copy the file again or re-save it from the NI software");
-    }
-    const std::uint32_t toc = lead[4] | lead[5] << 8 | lead[6] << 16 | static_cast<std::uint32_t>(lead[7]) << 24;
+    const LeadIn lead = read_lead_in(in, pos, f, seg);
+    const std::uint32_t toc = lead.toc, version = lead.version;
+    const std::uint64_t next = lead.next, raw = lead.raw;
     const bool big = (toc & kTocBigEndian) != 0;
-    Cursor lc(lead, big, pos, seg);
-    lc.u64();  // tag and ToC, read above
-    const std::uint32_t version = lc.u32();
-    const std::uint64_t next = lc.u64(), raw = lc.u64();
-    if (version != 4712 && version != 4713)
-      throw InputError(seg + ": TDMS version " + std::to_string(version) + " (fourbar reads 4712 and 4713, TDMS 1.0 "
-                       "and 2.0); re-save the file as TDMS 2.0");
     if (s.segments == 0) s.version = version;
     ++s.segments;
     s.big_endian = s.big_endian || big;
@@ -298,126 +447,12 @@ TdmsStructure read_tdms_structure(const std::filesystem::path& file) {
       if (raw > 0 && !in.read(reinterpret_cast<char*>(meta.data()), static_cast<std::streamsize>(raw)))
         throw InputError(seg + ": cannot read its metadata");
       Cursor c(meta, big, start, seg);
-      if (toc & kTocNewObjList) active.clear();
-      const std::uint32_t n = c.u32();
-      for (std::uint32_t k = 0; k < n; ++k) {
-        TdmsObject probe;
-        probe.path = c.string();
-        auto it = std::find_if(s.objects.begin(), s.objects.end(), [&](const TdmsObject& o) { return o.path == probe.path; });
-        const auto oi = static_cast<std::size_t>(it - s.objects.begin());
-        if (it == s.objects.end()) {
-          split_path(probe);
-          s.objects.push_back(std::move(probe));
-          previous.emplace_back();
-        }
-        TdmsObject& o = s.objects[oi];
-        const std::string obj = seg + ": object " + o.path;
-        ActiveEntry e;
-        e.object = oi;
-        const std::uint32_t index = c.u32();
-        if (index == kDaqmxFormatChanging || index == kDaqmxDigitalLine)
-          throw InputError(obj + " holds DAQmx raw data (raw data index " + hex(index) + "), which fourbar does not "
-                           "read: its scaling to physical units needs NI's DAQmx scalers; export the channels from "
-                           "LabVIEW, DIAdem or FlexLogger as scaled data (TDMS without DAQmx raw data, or CSV)");
-        if (index == kSameAsPrevious) {
-          if (!previous[oi].known)
-            throw InputError(obj + ": its raw data index is 'same as previous' but no earlier segment gave one (damaged file)");
-          e.has_data = true, e.type = previous[oi].type, e.count = previous[oi].count, e.bytes = previous[oi].bytes;
-        } else if (index != kNoData) {
-          const std::uint64_t index_start = c.offset();
-          e.type = c.u32();
-          const std::uint32_t dims = c.u32();
-          e.count = c.u64();
-          if (dims != 1)
-            throw InputError(obj + ": raw data of dimension " + std::to_string(dims) + " (TDMS allows only 1; damaged file)");
-          if (e.type == tdms_type::kString) {
-            e.bytes = c.u64();
-            if (e.count > e.bytes / 4)  // an end offset of 4 bytes per string, at least
-              throw InputError(obj + ": " + std::to_string(e.count) + " strings in " + std::to_string(e.bytes) +
-                               " bytes (damaged file)");
-          } else {
-            const std::uint32_t size = tdms_type_size(e.type);
-            if (size == 0)
-              throw InputError(obj + ": raw data of " + tdms_type_name(e.type) + ", which fourbar does not read "
-                               "(integers, float, double, bool, string, timestamp); export this channel as double");
-            if (e.count > file_size / size)
-              throw InputError(obj + ": " + std::to_string(e.count) + " values promised, more than the file holds (damaged file)");
-            e.bytes = e.count * size;
-          }
-          if (c.offset() - index_start + 4 != index)
-            throw InputError(obj + ": raw data index of " + std::to_string(index) + " bytes, but its fields take " +
-                             std::to_string(c.offset() - index_start + 4) + " (damaged file)");
-          if (o.type != 0 && o.type != e.type)
-            throw InputError(obj + ": its data type changes from " + tdms_type_name(o.type) + " to " +
-                             tdms_type_name(e.type) + " (damaged file)");
-          e.has_data = true;
-          previous[oi] = {true, e.type, e.count, e.bytes};
-        }
-        if (e.has_data) o.type = e.type;
-        auto slot = std::find_if(active.begin(), active.end(), [&](const ActiveEntry& a) { return a.object == oi; });
-        if (slot == active.end()) active.push_back(e);
-        else *slot = e;
-        const std::uint32_t props = c.u32();
-        for (std::uint32_t p = 0; p < props; ++p) {
-          TdmsProperty prop = read_property(c, obj);
-          auto same = std::find_if(o.properties.begin(), o.properties.end(), [&](const TdmsProperty& q) { return q.name == prop.name; });
-          if (same == o.properties.end()) o.properties.push_back(std::move(prop));
-          else *same = std::move(prop);
-        }
-      }
+      if (toc & kTocNewObjList) st.active.clear();
+      read_metadata(c, file_size, seg, s, st);
     }
 
-    if ((toc & kTocRawData) && end - start > raw) {
-      const std::uint64_t data_start = start + raw, data_size = end - data_start;
-      const bool interleaved = (toc & kTocInterleavedData) != 0;
-      std::uint64_t chunk = 0, count = 0;
-      for (const auto& e : active) {
-        if (!e.has_data || e.count == 0) continue;
-        if (interleaved && e.type == tdms_type::kString)
-          throw InputError(seg + ": object " + s.objects[e.object].path + " holds strings in interleaved raw data, "
-                           "which TDMS does not allow (damaged file)");
-        if (interleaved && count != 0 && e.count != count)
-          throw InputError(seg + ": interleaved channels of different lengths (" + std::to_string(count) + " and " +
-                           std::to_string(e.count) + " values; damaged file)");
-        count = e.count;
-        if (e.bytes > file_size || chunk + e.bytes > file_size)
-          throw InputError(seg + ": its raw data index promises more bytes than the file holds (damaged file)");
-        chunk += e.bytes;
-      }
-      if (chunk > 0) {
-        std::uint64_t chunks = data_size / chunk;
-        if (data_size % chunk != 0) {
-          if (!cut)
-            throw InputError(seg + ": " + std::to_string(data_size) + " bytes of raw data are not a whole number of "
-                             "chunks of " + std::to_string(chunk) + " bytes (damaged file)");
-          s.notes.push_back("segment " + std::to_string(s.segments) + ": " + std::to_string(data_size % chunk) +
-                            " bytes of a last, incomplete chunk set aside");
-        }
-        s.interleaved = s.interleaved || interleaved;
-        std::uint64_t offset = 0;
-        std::uint32_t stride = 0;
-        if (interleaved)
-          for (const auto& e : active)
-            if (e.has_data && e.count > 0) stride += tdms_type_size(e.type);
-        for (const auto& e : active) {
-          if (!e.has_data || e.count == 0 || chunks == 0) continue;
-          TdmsObject& o = s.objects[e.object];
-          const std::uint32_t size = tdms_type_size(e.type);
-          o.values += e.count * chunks;
-          if (e.type != tdms_type::kString) {
-            TdmsPiece piece;
-            piece.offset = data_start + offset;
-            piece.values_per_chunk = e.count;
-            piece.chunks = chunks;
-            piece.chunk_bytes = chunk;
-            piece.stride = interleaved ? stride : size;
-            piece.big_endian = big;
-            o.pieces.push_back(piece);
-          }
-          offset += interleaved ? size : e.bytes;
-        }
-      }
-    }
+    if ((toc & kTocRawData) && end - start > raw)
+      add_raw_data(start + raw, end, (toc & kTocInterleavedData) != 0, big, cut, file_size, seg, st.active, s);
     pos = end;
   }
   return s;
