@@ -91,20 +91,22 @@ json summary_of(const json& session) {
   return s;
 }
 
-ReportOutcome run_session_report(const ReportOptions& o) {
-  const SessionSettings settings = load_session_settings(o.session_dir);
-  const SessionFiles files = find_session_files(o.session_dir);
-  if (files.recordings.empty())
-    throw InputError(o.session_dir.string() +
-                     ": no recordings (.wav .w64 .rf64 .flac .caf .aiff .aif .mat .csv .tsv .txt) in this folder");
-  // Nothing in the folder is passed over in silence.
+namespace {
+
+/// Nothing in the folder is passed over in silence: a manifest without its
+/// recording and a file that is neither are named.
+void warn_left_out(const SessionFiles& files) {
   for (const auto& m : files.orphan_manifests)
     std::cerr << "fourbar: warning: report: " << m.filename().string() << " has no recording beside it (no "
               << m.stem().string() << ".wav, .flac, .mat, .csv, ...); left out: add the recording or remove the manifest\n";
   for (const auto& f : files.other_files)
     std::cerr << "fourbar: warning: report: " << f.filename().string()
               << " is not a recording (.wav .w64 .rf64 .flac .caf .aiff .aif .mat .csv .tsv .txt) nor a manifest; left out\n";
-  // The fit: given, or the one `fourbar fit` wrote into the session folder.
+}
+
+/// The fit the report shows: --fit, else the one `fourbar fit` wrote into the
+/// session folder (fit/fit.json), else none; its warnings said.
+std::optional<ReportFit> find_fit(const ReportOptions& o, const SessionFiles& files) {
   std::optional<ReportFit> fit;
   if (o.use_fit) {
     const std::filesystem::path found = o.session_dir / "fit" / "fit.json";
@@ -113,6 +115,104 @@ ReportOutcome run_session_report(const ReportOptions& o) {
     if (fit)
       for (const std::string& w : fit->warnings) std::cerr << "fourbar: warning: report: " << fit->file.string() << ": " << w << "\n";
   }
+
+  return fit;
+}
+
+/// Runs step(i) for i in [0, n) on `jobs` workers (this thread one of them),
+/// a progress line when `show`; the first exception stops every worker and
+/// is rethrown.
+template <class Step>
+void in_parallel(std::size_t n, std::size_t jobs, bool show, const Step& step) {
+  std::atomic<std::size_t> next{0}, done{0};
+  Progress bar("report", n, show);
+  std::mutex io;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < n;) {
+      try {
+        step(i);
+      } catch (...) {  // an output that cannot be written: stop every worker, rethrow below
+        const std::lock_guard lock(io);
+        if (!failure) failure = std::current_exception();
+        next = n;
+      }
+      {
+        const std::lock_guard lock(io);
+        bar.set_label("report: " + std::to_string(done.fetch_add(1) + 1) + "/" + std::to_string(n) + " recordings");
+        bar.update(done.load());
+      }
+    }
+  };
+  std::vector<std::jthread> pool;
+  for (std::size_t t = 1; t < jobs; ++t) pool.emplace_back(worker);
+  worker();
+  pool.clear();  // joins
+  if (failure) std::rethrow_exception(failure);
+}
+
+/// The records in the folder's order, counted into `out` (recordings, from
+/// the cache, failed, with set-up findings); a failed recording, a set-up
+/// finding and energy the model lacks said on stderr.
+json tally_records(std::vector<json>& computed, ReportOutcome& out) {
+  json records = json::array();
+  for (json& r : computed) {
+    ++out.recordings;
+    out.from_cache += r["from_cache"].get<bool>();
+    if (!is_analysed(r)) {
+      ++out.failed;
+      std::cerr << "fourbar: report: " << r["name"].get<std::string>() << ": " << r["error"].get<std::string>() << "\n";
+    }
+    if (r.contains("setup_check") && !r["setup_check"]["findings"].empty()) {
+      ++out.check_setup;
+      for (const std::string& line : setup_check_lines(r["setup_check"]))
+        std::cerr << "fourbar: warning: report: " << r["name"].get<std::string>() << ": " << line << "\n";
+    }
+    if (const auto f = verdict_family(r); f && !f->unmodelled.empty())
+      std::cerr << "fourbar: warning: report: " << r["name"].get<std::string>() << ": energy the model lacks: "
+                << unmodelled_text(f->unmodelled.front()) << "; model agreement judged below "
+                << format_number(f->judged_below_hz.value_or(f->unmodelled.front().low_hz), 4) << " Hz only\n";
+    records.push_back(std::move(r));
+  }
+
+  return records;
+}
+
+/// summary.json's session record (the light records, without the fit).
+json session_record(const ReportOptions& o, const SessionSettings& settings, const json& settings_json,
+                    const SessionFiles& files, json records, int failed) {
+  json orphans = json::array();
+  for (const auto& m : files.orphan_manifests) orphans.push_back(m.filename().string());
+  json others = json::array();
+  for (const auto& f : files.other_files) others.push_back(f.filename().string());
+  return {{"tool", "fourbar"},
+          {"version", kVersion},
+          {"command", o.command_line},
+          {"session_dir", o.session_dir.string()},
+          {"title", settings.title},
+          {"notes", settings.notes},
+          {"metadata",
+           {{"date", settings.date}, {"operator", settings.operator_name}, {"rig_id", settings.rig_id}, {"bearing", settings.bearing}}},
+          {"settings", settings_json},
+          {"settings_file", settings.file.empty() ? json(nullptr) : file_entry("session", settings.file, o.session_dir)},
+          {"recordings", records},
+          {"recordings_failed", failed},
+          {"orphan_manifests", orphans},
+          {"other_files", others},
+          {"severity", severity_record(records)}};
+}
+
+}  // namespace
+
+ReportOutcome run_session_report(const ReportOptions& o) {
+  const SessionSettings settings = load_session_settings(o.session_dir);
+  const SessionFiles files = find_session_files(o.session_dir);
+  if (files.recordings.empty())
+    throw InputError(o.session_dir.string() +
+                     ": no recordings (.wav .w64 .rf64 .flac .caf .aiff .aif .mat .csv .tsv .txt) in this folder");
+  warn_left_out(files);
+  // The fit: given, or the one `fourbar fit` wrote into the session folder.
+  const std::optional<ReportFit> fit = find_fit(o, files);
 
   const std::filesystem::path out_dir = o.out_html.has_parent_path() ? o.out_html.parent_path() : ".";
   ensure_output_dir(out_dir);
@@ -186,77 +286,14 @@ ReportOutcome run_session_report(const ReportOptions& o) {
   // (report/family_across_speeds.hpp), each record's series, verdict and
   // page. Between the two every record is held whole (its series included).
   std::vector<json> full(n);
-  auto in_parallel = [&](const auto& step, bool show) {
-    std::atomic<std::size_t> next{0}, done{0};
-    Progress bar("report", n, o.progress && show);
-    std::mutex io;
-    std::exception_ptr failure;
-    auto worker = [&] {
-      for (std::size_t i; (i = next.fetch_add(1)) < n;) {
-        try {
-          step(i);
-        } catch (...) {  // an output that cannot be written: stop every worker, rethrow below
-          const std::lock_guard lock(io);
-          if (!failure) failure = std::current_exception();
-          next = n;
-        }
-        {
-          const std::lock_guard lock(io);
-          bar.set_label("report: " + std::to_string(done.fetch_add(1) + 1) + "/" + std::to_string(n) + " recordings");
-          bar.update(done.load());
-        }
-      }
-    };
-    std::vector<std::jthread> pool;
-    for (std::size_t t = 1; t < jobs; ++t) pool.emplace_back(worker);
-    worker();
-    pool.clear();  // joins
-    if (failure) std::rethrow_exception(failure);
-  };
-  in_parallel([&](std::size_t i) { full[i] = record_of(i); }, true);
+  in_parallel(n, jobs, o.progress, [&](std::size_t i) { full[i] = record_of(i); });
   set_aside_findings_that_move_with_speed(full);
-  in_parallel([&](std::size_t i) { finish(i, std::exchange(full[i], json())); }, false);
+  in_parallel(n, jobs, false, [&](std::size_t i) { finish(i, std::exchange(full[i], json())); });
 
   ReportOutcome out;
-  json records = json::array();
-  for (json& r : computed) {
-    ++out.recordings;
-    out.from_cache += r["from_cache"].get<bool>();
-    if (!is_analysed(r)) {
-      ++out.failed;
-      std::cerr << "fourbar: report: " << r["name"].get<std::string>() << ": " << r["error"].get<std::string>() << "\n";
-    }
-    if (r.contains("setup_check") && !r["setup_check"]["findings"].empty()) {
-      ++out.check_setup;
-      for (const std::string& line : setup_check_lines(r["setup_check"]))
-        std::cerr << "fourbar: warning: report: " << r["name"].get<std::string>() << ": " << line << "\n";
-    }
-    if (const auto f = verdict_family(r); f && !f->unmodelled.empty())
-      std::cerr << "fourbar: warning: report: " << r["name"].get<std::string>() << ": energy the model lacks: "
-                << unmodelled_text(f->unmodelled.front()) << "; model agreement judged below "
-                << format_number(f->judged_below_hz.value_or(f->unmodelled.front().low_hz), 4) << " Hz only\n";
-    records.push_back(std::move(r));
-  }
+  json records = tally_records(computed, out);
 
-  json orphans = json::array();
-  for (const auto& m : files.orphan_manifests) orphans.push_back(m.filename().string());
-  json others = json::array();
-  for (const auto& f : files.other_files) others.push_back(f.filename().string());
-  json session = {{"tool", "fourbar"},
-                  {"version", kVersion},
-                  {"command", o.command_line},
-                  {"session_dir", o.session_dir.string()},
-                  {"title", settings.title},
-                  {"notes", settings.notes},
-                  {"metadata",
-                   {{"date", settings.date}, {"operator", settings.operator_name}, {"rig_id", settings.rig_id}, {"bearing", settings.bearing}}},
-                  {"settings", settings_json},
-                  {"settings_file", settings.file.empty() ? json(nullptr) : file_entry("session", settings.file, o.session_dir)},
-                  {"recordings", records},
-                  {"recordings_failed", out.failed},
-                  {"orphan_manifests", orphans},
-                  {"other_files", others},
-                  {"severity", severity_record(records)}};
+  json session = session_record(o, settings, settings_json, files, std::move(records), out.failed);
   if (fit) {
     std::vector<json> rows;
     for (auto& row : fit_rows)
