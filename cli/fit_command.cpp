@@ -105,6 +105,139 @@ std::string operating_points(const std::vector<RecordingTarget>& targets) {
   return text;
 }
 
+/// The session's recordings as fit targets: each analysed (and, for the
+/// band, analysed again up to --band-top-hz); one that cannot be analysed is
+/// said and left out; a --band-top-hz above a recording's Nyquist frequency
+/// and a rig that cannot carry the elastic model are bad input.
+struct FitTargets {
+  std::vector<RecordingTarget> targets;
+  std::vector<std::vector<double>> measured_turns;  ///< α3 (else α4) per target: the model-family check
+  std::size_t max_turns = 0;
+};
+
+FitTargets analyse_for_fit(const SessionFiles& files, const SessionSettings& settings, const AnalyzeOptions& analysis,
+                           double band_top_hz, bool band_top_given, const FitOptions& o, bool leader, bool quiet) {
+  const bool elastic = o.model.kind == FitModelKind::elastic;
+  FitTargets ft;
+  Progress bar("fit: analysing", files.recordings.size(), !quiet);
+  for (const auto& rec : files.recordings) {
+    auto manifest = rec;
+    manifest.replace_extension(".toml");
+    bar.set_label("fit: analysing " + rec.filename().string());
+    bar.update(static_cast<std::uint64_t>(&rec - files.recordings.data()));
+    double sample_rate_hz = 0;
+    std::optional<RecordingTarget> target;
+    try {
+      const RecordingAnalysis a = analyze_recording(rec, manifest, analysis);
+      sample_rate_hz = a.acquisition.recording.sample_rate_hz;
+      if (!(band_top_given && band_top_hz > 0.5 * sample_rate_hz)) {  // else bad input, said below
+        std::optional<RecordingAnalysis> band;
+        if (const auto bo = band_analysis_options(a, analysis, band_top_hz)) band = analyze_recording(rec, manifest, *bo);
+        target = make_recording_target(a, band ? &*band : nullptr, rec.filename().string());
+        ft.measured_turns.push_back(a.coupler ? a.coupler->alpha_grid : a.rocker ? a.rocker->alpha_grid : std::vector<double>{});
+      }
+    } catch (const std::exception& e) {
+      if (leader) std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
+    }
+    check_band_limit(settings, rec.filename().string(), sample_rate_hz);
+    if (band_top_given && sample_rate_hz > 0 && band_top_hz > 0.5 * sample_rate_hz)
+      throw InputError("fit: --band-top-hz " + format_number(band_top_hz, 6) + " is above the Nyquist frequency of " +
+                       rec.string() + " (sample rate " + format_number(sample_rate_hz, 6) + " Hz, Nyquist " +
+                       format_number(0.5 * sample_rate_hz, 6) +
+                       " Hz): the recording holds nothing there. Give --band-top-hz at most " +
+                       format_number(0.5 * sample_rate_hz, 6) + " (the band stops at 0.3x the sample rate, " +
+                       format_number(kBandTopPerSampleRate * sample_rate_hz, 6) +
+                       " Hz, anyway), or leave it out (default 3840)");
+    if (!target) continue;
+    if (elastic)  // the rig cannot carry the elastic model: bad input, the whole fit stops
+      check_elastic_fit_rig(*target->rig, o.model, target->clearance_m);
+    // The elastic model, and the link-vibration check of a rig with modes, read the recording's sensors.
+    if (elastic || target->rig->coupler_elastic || target->rig->rocker_elastic) attach_sensors(*target, manifest);
+    ft.targets.push_back(std::move(*target));
+    ft.max_turns = std::max(ft.max_turns, ft.targets.back().turns);
+  }
+  bar.finish();
+  return ft;
+}
+
+/// The model-family check at the fitted parameters (compare/model_family.hpp)
+/// on the recordings `which`: a recording with energy the model lacks rejects
+/// the family.
+void check_fit_family(FitResult& f, const std::vector<std::size_t>& which, const std::vector<RecordingTarget>& targets,
+                      const std::vector<std::vector<double>>& measured_turns, const FitOptions& o,
+                      const ModelFamilySettings& family) {
+  const bool elastic = o.model.kind == FitModelKind::elastic;
+  std::string vibration_not_checked;
+  for (std::size_t r : which) {
+    if (measured_turns[r].empty()) continue;
+    const int kept = std::max(20, static_cast<int>(targets[r].turns));
+    // Against the model fitted: with --model elastic its ringing links are in the theory.
+    const ModelFamilyCheck c =
+        elastic ? elastic_family_check_at(targets[r], measured_turns[r], f.best, o.warmup_turns, kept, o.tolerance,
+                                          o.model, family)
+                : family_check_at(targets[r], measured_turns[r], f.best, o.warmup_turns, kept, family,
+                                  &vibration_not_checked);
+    if (c.checked) {
+      f.model_family.spectral_model = std::string(name_of(o.model.kind));
+      ++f.model_family.spectral_recordings;
+    }
+    if (!c.unmodelled.empty())
+      reject_model_family(f, targets[r].name + " holds energy the model lacks: " + unmodelled_text(c.unmodelled.front()), o);
+  }
+  // The rig gives the links' modes but their vibration could not be checked:
+  // the resonance test alone does not see an elastic link's broad ringing.
+  if (!vibration_not_checked.empty())
+    f.notes.push_back("the links' vibration was not checked against the rig file's modal data (the spectral check "
+                      "finds narrow resonances, not an elastic link's broad ringing): " + vibration_not_checked);
+}
+
+/// The fit's summary on stdout: the model family's verdict, the parameters
+/// with their intervals, χ² against the prior's, the magnifications, notes.
+void print_fit(const std::string& label, const FitResult& f) {
+  if (f.model_family.rejected) {
+    std::cout << "model family rejected: " << f.model_family.reasons.front()
+              << (f.model_family.reasons.size() > 1 ? " (and " + std::to_string(f.model_family.reasons.size() - 1) + " more reasons in fit.json)" : std::string())
+              << "; no parameter is identifiable, the values are effective ones and the intervals are widened by the model error ("
+              << format_number(f.model_family.error_scale, 3) << "x)\n";
+  }
+  std::cout << label << ": ";
+  for (const ParameterEstimate& p : f.parameters)
+    std::cout << p.name << " = " << format_number(p.value, 3) << " [" << format_number(p.low, 3) << ", "
+              << format_number(p.high, 3) << "]" << (p.lower_bound_only ? " (not identifiable: only the lower bound)" : p.identifiable ? "" : " (not identifiable)") << "  ";
+  std::cout << "chi2/term " << format_number(f.chi2 / std::max(1, f.terms), 3) << " (prior "
+            << format_number(f.chi2_prior / std::max(1, f.terms), 3) << "), " << f.simulations << " simulations, "
+            << format_number(f.seconds, 3) << " s\n";
+  // The prior inside the fit's own noise: χ² at the prior less than Δ (the
+  // 95 % threshold that bounds the intervals) above the fit's.
+  if (f.interval_delta > 0 && f.chi2_prior - f.chi2 < f.interval_delta)
+    std::cout << "  the fitted chi2 is within noise of the prior's (prior - fit = " << format_number(f.chi2_prior - f.chi2, 3)
+              << " < " << format_number(f.interval_delta, 3)
+              << ", the 95 % threshold of the intervals): the prior fits these recordings as well; a lower or higher "
+                 "chi2 or RMS after the fit is noise, not a better or worse model\n";
+  for (const ParameterEstimate& p : f.parameters)
+    if (!p.identifiable) std::cout << "  " << parameter_advice(p) << "\n";
+  // a with its standard error: from a few dozen turns it is noise-limited.
+  for (std::size_t r = 0; r < f.recordings.size() && r < f.magnification_fitted.size(); ++r) {
+    const auto &af = f.magnification_fitted[r], &ap = f.magnification_prior[r];
+    if (!af) continue;
+    std::cout << "  " << f.recordings[r].name << ": magnification a = " << format_number(af->value, 3) << " ± "
+              << format_number(af->standard_error, 2);
+    if (ap) std::cout << " (prior " << format_number(ap->value, 3) << " ± " << format_number(ap->standard_error, 2) << ")";
+    std::cout << "\n";
+  }
+  for (const std::string& n : f.notes) std::cout << "  note: " << n << "\n";
+}
+
+/// fit.json with the model family's verdict first: whoever reads the
+/// parameter block reads first whether its values measure anything.
+void write_fit_json(const nlohmann::json& result, const std::filesystem::path& file) {
+  nlohmann::ordered_json ordered;
+  if (result.contains("model_family")) ordered["model_family"] = nlohmann::ordered_json::parse(result["model_family"].dump());
+  for (const auto& [key, value] : result.items())
+    if (key != "model_family") ordered[key] = nlohmann::ordered_json::parse(value.dump());
+  write_text_file(file, ordered.dump(2) + "\n");
+}
+
 }  // namespace
 
 int run_fit(const Invocation& inv) {
@@ -219,47 +352,10 @@ int run_fit(const Invocation& inv) {
   analysis.keep_revolutions = true;
   analysis.progress = false;
   analysis.threads = mpi.distributed() ? 1 : o.threads;  // (before the search: the cores are free)
-  std::vector<RecordingTarget> targets;
-  std::vector<std::vector<double>> measured_turns;  // α3 (else α4) per target: the model-family check
-  std::size_t max_turns = 0;
-  Progress bar("fit: analysing", files.recordings.size(), !quiet);
-  for (const auto& rec : files.recordings) {
-    auto manifest = rec;
-    manifest.replace_extension(".toml");
-    bar.set_label("fit: analysing " + rec.filename().string());
-    bar.update(static_cast<std::uint64_t>(&rec - files.recordings.data()));
-    double sample_rate_hz = 0;
-    std::optional<RecordingTarget> target;
-    try {
-      const RecordingAnalysis a = analyze_recording(rec, manifest, analysis);
-      sample_rate_hz = a.acquisition.recording.sample_rate_hz;
-      if (!(band_top_given && band_top_hz > 0.5 * sample_rate_hz)) {  // else bad input, said below
-        std::optional<RecordingAnalysis> band;
-        if (const auto bo = band_analysis_options(a, analysis, band_top_hz)) band = analyze_recording(rec, manifest, *bo);
-        target = make_recording_target(a, band ? &*band : nullptr, rec.filename().string());
-        measured_turns.push_back(a.coupler ? a.coupler->alpha_grid : a.rocker ? a.rocker->alpha_grid : std::vector<double>{});
-      }
-    } catch (const std::exception& e) {
-      if (mpi.leader()) std::cerr << "fourbar: " << rec.string() << ": " << e.what() << " (left out of the fit)\n";
-    }
-    check_band_limit(settings, rec.filename().string(), sample_rate_hz);
-    if (band_top_given && sample_rate_hz > 0 && band_top_hz > 0.5 * sample_rate_hz)
-      throw InputError("fit: --band-top-hz " + format_number(band_top_hz, 6) + " is above the Nyquist frequency of " +
-                       rec.string() + " (sample rate " + format_number(sample_rate_hz, 6) + " Hz, Nyquist " +
-                       format_number(0.5 * sample_rate_hz, 6) +
-                       " Hz): the recording holds nothing there. Give --band-top-hz at most " +
-                       format_number(0.5 * sample_rate_hz, 6) + " (the band stops at 0.3x the sample rate, " +
-                       format_number(kBandTopPerSampleRate * sample_rate_hz, 6) +
-                       " Hz, anyway), or leave it out (default 3840)");
-    if (!target) continue;
-    if (elastic)  // the rig cannot carry the elastic model: bad input, the whole fit stops
-      check_elastic_fit_rig(*target->rig, o.model, target->clearance_m);
-    // The elastic model, and the link-vibration check of a rig with modes, read the recording's sensors.
-    if (elastic || target->rig->coupler_elastic || target->rig->rocker_elastic) attach_sensors(*target, manifest);
-    targets.push_back(std::move(*target));
-    max_turns = std::max(max_turns, targets.back().turns);
-  }
-  bar.finish();
+  FitTargets ft = analyse_for_fit(files, settings, analysis, band_top_hz, band_top_given, o, mpi.leader(), quiet);
+  std::vector<RecordingTarget>& targets = ft.targets;
+  const std::vector<std::vector<double>>& measured_turns = ft.measured_turns;
+  const std::size_t max_turns = ft.max_turns;
   if (targets.empty()) throw RunError("fit: no recording of " + session.string() + " could be analysed");
   if (!mpi.same_on_every_rank(operating_points(targets)))
     throw RunError("fit: the MPI ranks analysed the recordings of " + session.string() +
@@ -294,73 +390,14 @@ int run_fit(const Invocation& inv) {
     sims.update(std::min(simulated, expected > 0 ? expected - 1 : 0));
   };
   nlohmann::json result;
-  // The model-family check at the fitted parameters (compare/model_family.hpp):
-  // a recording with energy the model lacks rejects the family.
-  auto check_family = [&](FitResult& f, const std::vector<std::size_t>& which) {
-    std::string vibration_not_checked;
-    for (std::size_t r : which) {
-      if (measured_turns[r].empty()) continue;
-      const int kept = std::max(20, static_cast<int>(targets[r].turns));
-      // Against the model fitted: with --model elastic its ringing links are in the theory.
-      const ModelFamilyCheck c =
-          elastic ? elastic_family_check_at(targets[r], measured_turns[r], f.best, o.warmup_turns, kept, o.tolerance,
-                                            o.model, settings.model_family)
-                  : family_check_at(targets[r], measured_turns[r], f.best, o.warmup_turns, kept, settings.model_family,
-                                    &vibration_not_checked);
-      if (c.checked) {
-        f.model_family.spectral_model = std::string(name_of(o.model.kind));
-        ++f.model_family.spectral_recordings;
-      }
-      if (!c.unmodelled.empty())
-        reject_model_family(f, targets[r].name + " holds energy the model lacks: " + unmodelled_text(c.unmodelled.front()), o);
-    }
-    // The rig gives the links' modes but their vibration could not be checked:
-    // the resonance test alone does not see an elastic link's broad ringing.
-    if (!vibration_not_checked.empty())
-      f.notes.push_back("the links' vibration was not checked against the rig file's modal data (the spectral check "
-                        "finds narrow resonances, not an elastic link's broad ringing): " + vibration_not_checked);
-  };
-  auto report = [&](const std::string& label, const FitResult& f) {
-    if (f.model_family.rejected) {
-      std::cout << "model family rejected: " << f.model_family.reasons.front()
-                << (f.model_family.reasons.size() > 1 ? " (and " + std::to_string(f.model_family.reasons.size() - 1) + " more reasons in fit.json)" : std::string())
-                << "; no parameter is identifiable, the values are effective ones and the intervals are widened by the model error ("
-                << format_number(f.model_family.error_scale, 3) << "x)\n";
-    }
-    std::cout << label << ": ";
-    for (const ParameterEstimate& p : f.parameters)
-      std::cout << p.name << " = " << format_number(p.value, 3) << " [" << format_number(p.low, 3) << ", "
-                << format_number(p.high, 3) << "]" << (p.lower_bound_only ? " (not identifiable: only the lower bound)" : p.identifiable ? "" : " (not identifiable)") << "  ";
-    std::cout << "chi2/term " << format_number(f.chi2 / std::max(1, f.terms), 3) << " (prior "
-              << format_number(f.chi2_prior / std::max(1, f.terms), 3) << "), " << f.simulations << " simulations, "
-              << format_number(f.seconds, 3) << " s\n";
-    // The prior inside the fit's own noise: χ² at the prior less than Δ (the
-    // 95 % threshold that bounds the intervals) above the fit's.
-    if (f.interval_delta > 0 && f.chi2_prior - f.chi2 < f.interval_delta)
-      std::cout << "  the fitted chi2 is within noise of the prior's (prior - fit = " << format_number(f.chi2_prior - f.chi2, 3)
-                << " < " << format_number(f.interval_delta, 3)
-                << ", the 95 % threshold of the intervals): the prior fits these recordings as well; a lower or higher "
-                   "chi2 or RMS after the fit is noise, not a better or worse model\n";
-    for (const ParameterEstimate& p : f.parameters)
-      if (!p.identifiable) std::cout << "  " << parameter_advice(p) << "\n";
-    // a with its standard error: from a few dozen turns it is noise-limited.
-    for (std::size_t r = 0; r < f.recordings.size() && r < f.magnification_fitted.size(); ++r) {
-      const auto &af = f.magnification_fitted[r], &ap = f.magnification_prior[r];
-      if (!af) continue;
-      std::cout << "  " << f.recordings[r].name << ": magnification a = " << format_number(af->value, 3) << " ± "
-                << format_number(af->standard_error, 2);
-      if (ap) std::cout << " (prior " << format_number(ap->value, 3) << " ± " << format_number(ap->standard_error, 2) << ")";
-      std::cout << "\n";
-    }
-    for (const std::string& n : f.notes) std::cout << "  note: " << n << "\n";
-  };
   if (per_recording) {
     result["per_recording"] = nlohmann::json::array();
     for (const RecordingTarget& tg : targets) {
       const std::vector<RecordingTarget> one{tg};
       FitResult f = fit_contact_parameters(one, prior, o);
-      check_family(f, {static_cast<std::size_t>(&tg - targets.data())});
-      report(tg.name, f);
+      check_fit_family(f, {static_cast<std::size_t>(&tg - targets.data())}, targets, measured_turns, o,
+                       settings.model_family);
+      print_fit(tg.name, f);
       nlohmann::json j = fit_to_json(f, one, prior, o);
       j["file"] = tg.name;
       if (f.model_family.rejected) {
@@ -374,8 +411,8 @@ int run_fit(const Invocation& inv) {
     sims.finish();
     std::vector<std::size_t> all(targets.size());
     for (std::size_t r = 0; r < all.size(); ++r) all[r] = r;
-    check_family(f, all);
-    report("session", f);
+    check_fit_family(f, all, targets, measured_turns, o, settings.model_family);
+    print_fit("session", f);
     result = fit_to_json(f, targets, prior, o);
   }
   sims.finish();
@@ -386,13 +423,7 @@ int run_fit(const Invocation& inv) {
   result["command_line"] = inv.command_line;
   const std::filesystem::path out_dir = out.empty() ? session / "fit" : std::filesystem::path(out);
   ensure_output_dir(out_dir);
-  // The model family's verdict first: whoever reads the parameter block
-  // reads first whether its values measure anything.
-  nlohmann::ordered_json ordered;
-  if (result.contains("model_family")) ordered["model_family"] = nlohmann::ordered_json::parse(result["model_family"].dump());
-  for (const auto& [key, value] : result.items())
-    if (key != "model_family") ordered[key] = nlohmann::ordered_json::parse(value.dump());
-  write_text_file(out_dir / "fit.json", ordered.dump(2) + "\n");
+  write_fit_json(result, out_dir / "fit.json");
   std::cout << "wrote " << (out_dir / "fit.json").string() << "\n";
   return 0;
 }
